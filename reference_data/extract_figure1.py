@@ -1,0 +1,33 @@
+"""Regenerate figure1_digitised.csv from the paper's LaTeX source.
+
+    python reference_data/extract_figure1.py [PATH_TO_TEX] [OUT_CSV]
+
+Defaults: ../shared/paper/drozdov-rabin-buckling.tex (relative to the project root) and
+reference_data/figure1_digitised.csv. See figure1_digitised.md for the provenance.
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+from spectral_rod.figure_data import parse_figure1
+from spectral_rod.io import write_with
+
+ROOT = Path(__file__).resolve().parent.parent
+DEFAULT_TEX = ROOT.parent / "shared" / "paper" / "drozdov-rabin-buckling.tex"
+DEFAULT_CSV = ROOT / "reference_data" / "figure1_digitised.csv"
+
+
+def main(argv: list[str]) -> int:
+    tex = Path(argv[1]) if len(argv) > 1 else DEFAULT_TEX
+    out = Path(argv[2]) if len(argv) > 2 else DEFAULT_CSV
+    df = parse_figure1(tex.read_text(encoding="utf-8"))
+    write_with(out, lambda p: df.to_csv(p, index=False, float_format="%.10g"))
+    counts = df.groupby("nu").size().to_dict()
+    print(f"wrote {out}: {len(df)} points, per nu {counts}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

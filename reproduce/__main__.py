@@ -1,0 +1,52 @@
+"""`python -m reproduce {all,list,SCENE...} [--out DIR]`: regenerate the paper's figures,
+tables, claims ledger and report from code."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from pathlib import Path
+
+from reproduce._runner import DEFAULT_OUT, SCENE_MODULES, load_scene, log_stderr, run_scenes
+
+
+def _parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(
+        prog="python -m reproduce",
+        description="Rebuild the outputs of the Drozdov & Rabin reproduction.",
+        epilog=f"scenes: {', '.join(SCENE_MODULES)}")
+    p.add_argument("targets", nargs="+", metavar="TARGET",
+                   help="'all', 'list', or one or more scene names")
+    p.add_argument("--out", type=Path, default=DEFAULT_OUT,
+                   help=f"output directory (default: {DEFAULT_OUT})")
+    return p
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = _parser()
+    args = parser.parse_args(argv)
+    targets: list[str] = args.targets
+    if targets == ["list"]:
+        for name in SCENE_MODULES:
+            print(f"{name:12s} {load_scene(name).SUMMARY}")
+        return 0
+    names = list(SCENE_MODULES) if targets == ["all"] else targets
+    unknown = [t for t in names if t not in SCENE_MODULES]
+    if unknown or ("all" in targets and len(targets) > 1) or "list" in targets:
+        parser.print_usage(sys.stderr)
+        print(f"python -m reproduce: error: unknown target(s) {unknown or targets}; "
+              f"choose 'all', 'list' or scenes from {', '.join(SCENE_MODULES)}", file=sys.stderr)
+        return 2
+    t0 = time.perf_counter()
+    try:
+        run_scenes(names, args.out, log_stderr)
+    except OSError as exc:
+        print(f"python -m reproduce: error: {exc}", file=sys.stderr)
+        return 2
+    log_stderr(f"all done in {time.perf_counter() - t0:.1f} s; outputs in {args.out}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,33 @@
+"""spectral_rod: a verification package for Drozdov & Rabin, *Buckling of rods with
+spontaneous twist and curvature*.
+
+Straight rod (paper's Eq. ``inst1``, hinged ends), dimensionless: s/L in [0, 1], total twist
+angle Omega(L) = omega30 L, nu = I2/I1 >= 1, p* = P_cr / (pi^2 A1 / L^2).
+
+* :func:`critical_load` -- Chebyshev collocation, automatic resolution.
+* :func:`buckling_mode` -- the critical mode (omega1, omega2, centreline) and wavenumbers.
+* :func:`characteristic_critical_load` -- the paper's characteristic equation in extended
+  precision (the independent reference).
+"""
+
+from spectral_rod.characteristic import characteristic_critical_load
+from spectral_rod.straight_rod import (
+    BucklingMode,
+    ConvergenceWarning,
+    CriticalLoad,
+    buckling_mode,
+    critical_load,
+    critical_wavenumbers,
+)
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "BucklingMode",
+    "ConvergenceWarning",
+    "CriticalLoad",
+    "buckling_mode",
+    "characteristic_critical_load",
+    "critical_load",
+    "critical_wavenumbers",
+]

@@ -1,0 +1,407 @@
+"""Linear stability of the spontaneously twisted ring, solved with a Fourier-Galerkin method.
+
+Model (section "Stability of a ring" of Drozdov & Rabin; Eqs. ``frenet``, ``constit``, ``Munder``)
+------------------------------------------------------------------------------------------------
+Ring of radius R, arc length s, inextensible and unshearable centreline, cross-section axes
+u0 = -cos(Omega) e_r + sin(Omega) e_z, v0 = sin(Omega) e_r + cos(Omega) e_z, t0 = e_phi with
+Omega(s) = N s / R, so the spontaneous torsions are w10 = cos(Omega)/R, w20 = -sin(Omega)/R,
+w30 = N/R.  Constitutive law Eq. ``constit``: M_v = A1 (w1 - w10), M_u = -A2 (w2 - w20),
+M_t = A3 (w3 - w30) with A1 = E1 I1, A2 = E1 I2, A3 = E2 (I1 + I2).  The stress-free ring carries
+under the load q the hoop force F_t = -q R (Eq. ``Munder``, third and fourth lines) and no moment.
+
+Perturbation: the frame is rotated by a small rotation vector theta(s), d_i = exp(theta x) d_i0,
+the centreline displaced by y(s) with R' = d_3 (inextensible, unshearable).  Because the base
+state is stress-free, the second variation of the elastic energy only needs the first-order
+change of the torsions, which is (derived and checked in ``derivations/ring_linearisation.py``)
+
+    dw1 = theta'.v0,   dw2 = -theta'.u0,   dw3 = theta'.t0.
+
+In cylindrical components with R = 1 (lengths in units of R) and y = y_r e_r + y_phi e_phi +
+y_z e_z, the first-order constraint y' = theta x t0 gives y_r = -y_phi' (inextensibility),
+theta_z = y_phi'' + y_phi, theta_r = y_z', and theta_phi = alpha is the extra twist.  With
+
+    k_r = theta_r' - theta_phi = y_z'' - alpha,   k_phi = alpha' + y_z',   k_z = y_phi''' + y_phi',
+
+the second variation of energy plus load potential is 1/2 (x.K x - q x.G x) with
+
+    x.K x = int [A1 (k.v0)^2 + A2 (k.u0)^2 + A3 k_phi^2] ds
+          = int [Abar (k_r^2 + k_z^2) + Delta (cos 2Omega (k_r^2 - k_z^2) - 2 sin 2Omega k_r k_z)
+                 + A3 k_phi^2] ds,    Abar = (A1 + A2)/2, Delta = (A2 - A1)/2,
+    x.G x = int (theta_r^2 + theta_z^2) ds - int y_phi theta_z ds      ("hydrostatic"),
+    x.G x = int (theta_r^2 + theta_z^2) ds - int y_phi^2 ds            ("axis").
+
+The first term of G is the work of the hoop force F_t = -q R on the second-order shortening of
+the chord (|y'|^2 = theta_r^2 + theta_z^2); the second is the second-order load potential:
+
+* ``"hydrostatic"``: force per unit length q e_z x R'(s), i.e. pressure q acting on the ring's
+  projection on the plane z = 0, horizontal and normal to the projected centreline.  It is
+  conservative with potential V = q * (projected enclosed area) = q/2 int (R x R').e_z ds, whose
+  second-order part is q/2 int (y x y').e_z ds = q/2 int y_phi theta_z ds.  This is the classical
+  ring load (3 A1/R^3 in plane, n = 2).
+* ``"axis"``: the paper's literal q = -q e_r evaluated at the displaced point: magnitude q, always
+  horizontal, pointing to the ring's axis.  Potential V = q int rho ds with rho the distance from
+  the axis; second-order part q/2 int y_phi^2 ds (4.5 A1/R^3 in plane, n = 2).
+
+Rigid-body motions are removed by six explicit linear constraints on the displacement,
+int y ds = 0 and int R0 x y ds = 0 (a rigid tilt lowers the potential of both loads).  On that
+subspace K is positive definite (x.K x = 0 only for theta' = 0, i.e. a rigid motion), which is
+the energy argument: the stress-free ring cannot be unstable at q = 0.
+
+Discretisation: y_phi, y_z, alpha are real Fourier series in s.  The coefficients of K contain
+cos 2Omega, sin 2Omega, so frequency f couples only to f +- 2N: the problem splits into N + 1
+independent families {f >= 0 : f = +-n mod 2N}, n = 0..N (N = 0: one family, nothing couples).
+Each family is assembled by exact trapezoidal quadrature and the generalised eigenproblem
+G x = mu K x is solved (K Cholesky-factorised after Jacobi scaling); q = 1/mu.  The truncation is
+a Rayleigh-Ritz subspace, so truncated critical loads decrease monotonically to the limit.
+
+All loads are returned as q R^3/(E1 I1); nu = I2/I1, e = E2/E1, so A1 = 1, A2 = nu,
+A3 = e (1 + nu) in these units.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+import scipy.linalg
+from numpy.typing import NDArray
+
+from spectral_rod.ring import check_e_ratio, check_scalar_nu, check_twist_count
+
+LOADS = ("hydrostatic", "axis")
+#: Largest twist accepted by the numerical solver (cost grows like N).
+MAX_SOLVER_TWIST = 60
+#: Fields of the unknown vector, in order.
+FIELDS = ("y_phi", "y_z", "alpha")
+#: A mode is called in-plane / out-of-plane if its in-plane share of the load work is within
+#: this distance of 1 / 0.
+KIND_TOL = 1.0e-8
+
+
+class RingConvergenceError(RuntimeError):
+    """The critical load did not converge to the requested tolerance within the allowed modes."""
+
+
+def check_load(load: object, name: str = "load") -> str:
+    """One of :data:`LOADS`."""
+    if not isinstance(load, str):
+        raise TypeError(f"{name} must be one of {LOADS}, got {type(load).__name__}")
+    if load not in LOADS:
+        raise ValueError(f"{name} must be one of {LOADS}, got {load!r}")
+    return load
+
+
+def stiffnesses(nu: float, e_ratio: float) -> tuple[float, float, float]:
+    """(A1, A2, A3) in units of E1 I1: (1, nu, e (1 + nu)) (Eq. ``constit``)."""
+    return 1.0, nu, e_ratio * (1.0 + nu)
+
+
+def frequency_families(N: int, max_frequency: int) -> list[list[int]]:
+    """Frequencies 0..max_frequency grouped into the families that the twist couples.
+
+    For N > 0 family n (0 <= n <= N) holds the f with f = n or f = -n (mod 2N); for N = 0 there
+    is no coupling and one family holds every frequency.
+    """
+    freqs = range(max_frequency + 1)
+    if N == 0:
+        return [list(freqs)]
+    period = 2 * N
+    return [[f for f in freqs if f % period in (n, (period - n) % period)] for n in range(N + 1)]
+
+
+@dataclass(frozen=True)
+class _Basis:
+    """Real Fourier basis of one family: (field, frequency, 'c'|'s') per column."""
+
+    labels: list[tuple[str, int, str]]
+
+    @property
+    def size(self) -> int:
+        return len(self.labels)
+
+
+def _family_basis(freqs: list[int]) -> _Basis:
+    labels = []
+    for fld in FIELDS:
+        for f in freqs:
+            labels.append((fld, f, "c"))
+            if f > 0:
+                labels.append((fld, f, "s"))
+    return _Basis(labels)
+
+
+def _trig_derivatives(f: int, kind: str, s: NDArray[np.float64],
+                      order: int) -> list[NDArray[np.float64]]:
+    """[phi, phi', ..., phi^(order)] for phi = cos(f s) ('c') or sin(f s) ('s')."""
+    c, sn = np.cos(f * s), np.sin(f * s)
+    # derivative k of cos(fs) = f^k cos(fs + k pi/2); of sin(fs) = f^k sin(fs + k pi/2)
+    cycle_c = [c, -sn, -c, sn]
+    cycle_s = [sn, c, -sn, -c]
+    cyc = cycle_c if kind == "c" else cycle_s
+    return [float(f) ** k * cyc[k % 4] for k in range(order + 1)]
+
+
+def _quantities(basis: _Basis, s: NDArray[np.float64]) -> dict[str, NDArray[np.float64]]:
+    """Matrices (len(s) x basis.size) mapping coefficients to k_r, k_phi, k_z, theta_r,
+    theta_z, y_phi, y_r, y_z, alpha at the points s (R = 1)."""
+    names = ("k_r", "k_phi", "k_z", "theta_r", "theta_z", "y_phi", "y_r", "y_z", "alpha")
+    out = {k: np.zeros((s.size, basis.size)) for k in names}
+    for j, (fld, f, kind) in enumerate(basis.labels):
+        d = _trig_derivatives(f, kind, s, 3)
+        if fld == "y_phi":
+            out["y_phi"][:, j] = d[0]
+            out["y_r"][:, j] = -d[1]
+            out["theta_z"][:, j] = d[2] + d[0]
+            out["k_z"][:, j] = d[3] + d[1]
+        elif fld == "y_z":
+            out["y_z"][:, j] = d[0]
+            out["theta_r"][:, j] = d[1]
+            out["k_r"][:, j] = d[2]
+            out["k_phi"][:, j] = d[1]
+        else:  # alpha = theta_phi
+            out["alpha"][:, j] = d[0]
+            out["k_r"][:, j] = -d[0]
+            out["k_phi"][:, j] = d[1]
+    return out
+
+
+def _quadrature(max_frequency: int, N: int) -> tuple[NDArray[np.float64], float]:
+    """Equispaced points on [0, 2 pi) exact for every product in K and G (frequencies up to
+    2 max_frequency + 2N); the trapezoidal weight is 2 pi / P."""
+    P = 2 * max_frequency + 2 * N + 8
+    return np.arange(P) * (2.0 * np.pi / P), 2.0 * np.pi / P
+
+
+def assemble(N: int, nu: float, e_ratio: float, load: str,
+             freqs: list[int]) -> tuple[NDArray[np.float64], NDArray[np.float64], _Basis]:
+    """Symmetric matrices K (bending/torsion) and G (load work) of one frequency family, such
+    that the second variation is 1/2 (x.K x - q x.G x); no constraints applied yet."""
+    basis = _family_basis(freqs)
+    s, w = _quadrature(max(freqs), N)
+    Q = _quantities(basis, s)
+    A1, A2, A3 = stiffnesses(nu, e_ratio)
+    om = N * s
+    cv, sv = np.sin(om), np.cos(om)  # k.v0 = sin(Om) k_r + cos(Om) k_z
+    b_v = cv[:, None] * Q["k_r"] + sv[:, None] * Q["k_z"]
+    b_u = -np.cos(om)[:, None] * Q["k_r"] + np.sin(om)[:, None] * Q["k_z"]
+    K = w * (A1 * b_v.T @ b_v + A2 * b_u.T @ b_u + A3 * Q["k_phi"].T @ Q["k_phi"])
+    G = w * (Q["theta_r"].T @ Q["theta_r"] + Q["theta_z"].T @ Q["theta_z"])
+    if load == "hydrostatic":
+        cross = Q["y_phi"].T @ Q["theta_z"]
+        G -= w * 0.5 * (cross + cross.T)
+    else:
+        G -= w * Q["y_phi"].T @ Q["y_phi"]
+    return 0.5 * (K + K.T), 0.5 * (G + G.T), basis
+
+
+def rigid_body_constraints(basis: _Basis) -> NDArray[np.float64]:
+    """6 x basis.size matrix C with C x = (int y ds, int R0 x y ds) in Cartesian components.
+
+    y = -y_phi' e_r + y_phi e_phi + y_z e_z and R0 = e_r (R = 1); exact quadrature."""
+    s = np.arange(16) * (2.0 * np.pi / 16)
+    w = 2.0 * np.pi / 16
+    Q = _quantities(basis, s)
+    er = np.stack([np.cos(s), np.sin(s), np.zeros_like(s)], axis=1)
+    ephi = np.stack([-np.sin(s), np.cos(s), np.zeros_like(s)], axis=1)
+    ez = np.tile([0.0, 0.0, 1.0], (s.size, 1))
+    rows = []
+    for comp in range(3):
+        y_c = (Q["y_r"] * er[:, comp, None] + Q["y_phi"] * ephi[:, comp, None]
+               + Q["y_z"] * ez[:, comp, None])
+        rows.append(w * y_c.sum(axis=0))
+    # R0 x y with R0 = e_r: e_r x e_phi = e_z, e_r x e_z = -e_phi, e_r x e_r = 0
+    for comp in range(3):
+        m_c = Q["y_phi"] * ez[:, comp, None] - Q["y_z"] * ephi[:, comp, None]
+        rows.append(w * m_c.sum(axis=0))
+    C = np.array(rows)
+    C[np.abs(C) < 1e-12] = 0.0
+    return C
+
+
+def _null_space(C: NDArray[np.float64], n: int) -> NDArray[np.float64]:
+    """Basis of {x : C x = 0}.  Only the columns that C touches are mixed (the others stay unit
+    vectors), so the scaling of high-frequency basis functions is not spoilt."""
+    Z = np.eye(n)
+    cols = np.flatnonzero(np.any(C != 0.0, axis=0))
+    if cols.size == 0:
+        return Z
+    sub = scipy.linalg.null_space(C[:, cols], rcond=1e-10)
+    keep = np.setdiff1d(np.arange(n), cols)
+    out = np.zeros((n, keep.size + sub.shape[1]))
+    out[keep, np.arange(keep.size)] = 1.0
+    out[np.ix_(cols, keep.size + np.arange(sub.shape[1]))] = sub
+    return out
+
+
+@dataclass(frozen=True)
+class FamilySolution:
+    """Lowest positive buckling load of one frequency family and its mode."""
+
+    load: float
+    coefficients: NDArray[np.float64]
+    basis_labels: list[tuple[str, int, str]]
+    min_mu: float  # most negative 1/q over the family (>= 0 means no load q <= 0 buckles it)
+    n_constraints: int
+
+
+def solve_family(N: int, nu: float, e_ratio: float, load: str,
+                 freqs: list[int]) -> FamilySolution:
+    """Smallest positive q of G x = (1/q) K x on the constraint subspace of one family."""
+    K, G, basis = assemble(N, nu, e_ratio, load, freqs)
+    C = rigid_body_constraints(basis)
+    Z = _null_space(C, basis.size)
+    Kz, Gz = Z.T @ K @ Z, Z.T @ G @ Z
+    d = 1.0 / np.sqrt(np.diag(Kz))
+    Kz, Gz = Kz * d[:, None] * d[None, :], Gz * d[:, None] * d[None, :]
+    try:
+        mu, vec = scipy.linalg.eigh(Gz, Kz)
+    except np.linalg.LinAlgError as exc:  # K not positive definite: energy argument violated
+        raise RuntimeError("bending/torsion stiffness is not positive definite on the "
+                           "constrained subspace") from exc
+    top = int(np.argmax(mu))
+    q = 1.0 / mu[top] if mu[top] > 0 else math.inf
+    x = Z @ (d * vec[:, top])
+    return FamilySolution(q, x, basis.labels, float(mu.min()), int(np.linalg.matrix_rank(C)))
+
+
+@dataclass(frozen=True)
+class RingBuckling:
+    """Full result of :func:`ring_buckling`.
+
+    load               converged q_cr R^3/(E1 I1) (the lowest positive buckling load)
+    kind               "in-plane", "out-of-plane" or "coupled" (in-plane share of the load work
+                       x.G x within 1e-8 of 1, of 0, or in between)
+    in_plane_fraction  share of the load work done by the in-plane displacement y_phi
+    family             n: the mode contains the frequencies f = +-n (mod 2N) (N = 0: all)
+    dominant_frequency the frequency with the largest share of the mode's bending energy
+    max_frequency      Fourier truncation (frequencies 0..max_frequency of each field)
+    n_modes            real Fourier coefficients per field (2 max_frequency + 1)
+    rel_change         |q(max_frequency) - q(previous truncation)| / q, the convergence estimate
+    converged          rel_change <= tol
+    history            [(max_frequency, q)] of the truncations tried
+    min_load_over_q    smallest 1/q over every family (>= 0: no eigenvalue at q <= 0)
+    """
+
+    N: int
+    nu: float
+    e_ratio: float
+    load_model: str
+    load: float
+    kind: str
+    in_plane_fraction: float
+    family: int
+    dominant_frequency: int
+    max_frequency: int
+    n_modes: int
+    rel_change: float
+    converged: bool
+    tol: float
+    history: list[tuple[int, float]]
+    min_load_over_q: float
+    coefficients: NDArray[np.float64] = field(repr=False)
+    basis_labels: list[tuple[str, int, str]] = field(repr=False)
+
+    def mode(self, s: NDArray[np.float64] | None = None) -> dict[str, NDArray[np.float64]]:
+        """Mode shape at s (default 256 points on [0, 2 pi R)): y_r, y_phi, y_z, alpha."""
+        s = np.linspace(0.0, 2.0 * np.pi, 256, endpoint=False) if s is None else np.asarray(s)
+        Q = _quantities(_Basis(self.basis_labels), s)
+        return {"s": s, **{k: Q[k] @ self.coefficients for k in ("y_r", "y_phi", "y_z", "alpha")}}
+
+
+def _in_plane_fraction(sol: FamilySolution, N: int, nu: float, e_ratio: float,
+                       load: str) -> float:
+    freqs = sorted({f for _, f, _ in sol.basis_labels})
+    _, G, basis = assemble(N, nu, e_ratio, load, freqs)
+    x = sol.coefficients
+    inp = np.array([fld == "y_phi" for fld, _, _ in basis.labels])
+    g_in = x[inp] @ G[np.ix_(inp, inp)] @ x[inp]
+    return float(g_in / (x @ G @ x))
+
+
+def _dominant_frequency(sol: FamilySolution, N: int, nu: float, e_ratio: float,
+                        load: str) -> int:
+    freqs = sorted({f for _, f, _ in sol.basis_labels})
+    K, _, basis = assemble(N, nu, e_ratio, load, freqs)
+    x = sol.coefficients
+    share = {}
+    for f in freqs:
+        sel = np.array([ff == f for _, ff, _ in basis.labels])
+        share[f] = x[sel] @ K[np.ix_(sel, sel)] @ x[sel]
+    return max(share, key=lambda f: share[f])
+
+
+def _truncations(N: int, max_frequency: int | None) -> list[int]:
+    """Truncations tried: frequencies up to M0, M0 + step, ... (a fixed list if given)."""
+    if max_frequency is not None:
+        return [max_frequency]
+    step = 2 * max(N, 1) * 2
+    start = 2 * N + 12
+    return [start + k * step for k in range(12)]
+
+
+def ring_buckling(N: object, nu: object, *, e_ratio: object = 1.0, load: object = "hydrostatic",
+                  tol: float = 1.0e-12, max_frequency: int | None = None,
+                  raise_on_failure: bool = True) -> RingBuckling:
+    """Critical load and buckling mode of the twisted ring (see the module docstring).
+
+    Truncations are refined (frequencies 0..M with M = 2N + 12, then in steps of 4 max(N, 1))
+    until two successive critical loads agree to ``tol`` relatively.  With ``max_frequency``
+    given, only that truncation is solved (``converged`` is then False, ``rel_change`` nan).
+    Raises :class:`RingConvergenceError` if not converged and ``raise_on_failure``.
+    """
+    n_turns = check_twist_count(N, maximum=MAX_SOLVER_TWIST)
+    v = check_scalar_nu(nu)
+    e = check_e_ratio(e_ratio)
+    ld = check_load(load)
+    if max_frequency is not None:
+        if isinstance(max_frequency, bool) or not isinstance(max_frequency, int) \
+                or not (4 <= max_frequency <= 2000):
+            raise ValueError(f"max_frequency must be an integer in [4, 2000] or None, "
+                             f"got {max_frequency!r}")
+    if not (isinstance(tol, float | int) and 1e-14 <= tol <= 1e-2):
+        raise ValueError(f"tol must be a real number in [1e-14, 1e-2], got {tol!r}")
+    history: list[tuple[int, float]] = []
+    best: tuple[FamilySolution, int] | None = None
+    rel = math.nan
+    min_mu = math.inf
+    for M in _truncations(n_turns, max_frequency):
+        sols = {n: solve_family(n_turns, v, e, ld, fam)
+                for n, fam in enumerate(frequency_families(n_turns, M)) if fam}
+        k = min(sols, key=lambda n: sols[n].load)
+        min_mu = min(sol.min_mu for sol in sols.values())
+        q = sols[k].load
+        if history:
+            rel = abs(history[-1][1] - q) / q
+        history.append((M, q))
+        best = (sols[k], k)
+        if len(history) >= 2 and rel <= tol:
+            break
+    assert best is not None
+    sol, fam = best
+    converged = bool(rel <= tol)
+    if not converged and raise_on_failure and max_frequency is None:
+        raise RingConvergenceError(
+            f"ring critical load not converged for N={n_turns}, nu={v}, e={e}, load={ld}: "
+            f"relative change {rel:.2e} > tol {tol:.1e} at max_frequency {history[-1][0]}")
+    frac = _in_plane_fraction(sol, n_turns, v, e, ld)
+    kind = ("in-plane" if frac > 1 - KIND_TOL else "out-of-plane" if frac < KIND_TOL
+            else "coupled")
+    M = history[-1][0]
+    return RingBuckling(n_turns, v, e, ld, sol.load, kind, frac, fam,
+                        _dominant_frequency(sol, n_turns, v, e, ld), M, 2 * M + 1, rel,
+                        converged, float(tol), history, min_mu, sol.coefficients,
+                        sol.basis_labels)
+
+
+def ring_critical_load(N: object, nu: object, *, e_ratio: object = 1.0,
+                       load: object = "hydrostatic", tol: float = 1.0e-12) -> float:
+    """Converged critical load q_cr R^3/(E1 I1) of the twisted ring (Omega = N s/R).
+
+    N >= 0 integer turns of the cross-section, nu = I2/I1 >= 1, e = E2/E1 > 0 (A3 = e (1+nu)
+    E1 I1), load "hydrostatic" (pressure on the ring's projection, force q e_z x R') or "axis"
+    (force -q e_r at the displaced point: horizontal, toward the ring's axis); see the module
+    docstring.  Raises :class:`RingConvergenceError` if not converged to ``tol``.  Use
+    :func:`ring_buckling` for the mode, its kind and the convergence record.
+    """
+    return ring_buckling(N, nu, e_ratio=e_ratio, load=load, tol=tol).load
