@@ -21,9 +21,9 @@ import numpy as np
 import pandas as pd
 
 from reproduce._runner import ROOT, SceneOutput
+from spectral_rod.critical import critical_load
 from spectral_rod.figure_data import CURVE_NU, load_figure1
 from spectral_rod.io import write_text, write_with
-from spectral_rod.straight_rod import critical_load
 
 NAME = "figure1"
 SUMMARY = ("straight twisted rod, Eq. inst1: collocation p*(Omega) vs the digitised Figure 1 "

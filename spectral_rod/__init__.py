@@ -11,12 +11,12 @@ angle Omega(L) = omega30 L, nu = I2/I1 >= 1, p* = P_cr / (pi^2 A1 / L^2).
 """
 
 from spectral_rod.characteristic import characteristic_critical_load
+from spectral_rod.critical import critical_load
 from spectral_rod.straight_rod import (
     BucklingMode,
     ConvergenceWarning,
     CriticalLoad,
     buckling_mode,
-    critical_load,
     critical_wavenumbers,
 )
 

@@ -234,9 +234,10 @@ def _solve_points(twist: NDArray[np.float64], nu: NDArray[np.float64], n: NDArra
     return p, fam, err
 
 
-def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None,
-                  tol: float = 1e-12, full_output: bool = False):
-    """Critical load p* = P_cr / (pi^2 A1 / L^2) of the hinged twisted rod (Eq. ``inst1``).
+def collocation_critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None,
+                              tol: float = 1e-12, full_output: bool = False):
+    """Critical load p* = P_cr / (pi^2 A1 / L^2) of the hinged twisted rod (Eq. ``inst1``)
+    by Chebyshev collocation (the public :func:`spectral_rod.critical_load` routes here).
 
     Parameters
     ----------
@@ -358,7 +359,7 @@ def buckling_mode(twist_angle: float, nu: float, *, n: int | None = None, tol: f
 
     Resolution as in :func:`critical_load`; ``points`` is the size of the output grid.
     """
-    res = critical_load(twist_angle, nu, n=n, tol=tol, full_output=True)
+    res = collocation_critical_load(twist_angle, nu, n=n, tol=tol, full_output=True)
     if isinstance(points, bool) or not isinstance(points, int) or points < 2:
         raise ValueError(f"points must be an integer >= 2, got {points!r}")
     twist = float(twist_angle)
