@@ -49,7 +49,7 @@ the energy argument: the stress-free ring cannot be unstable at q = 0.
 
 Discretisation: y_phi, y_z, alpha are real Fourier series in s.  The coefficients of K contain
 cos 2Omega, sin 2Omega, so frequency f couples only to f +- 2N: the problem splits into N + 1
-independent families {f >= 0 : f = +-n mod 2N}, n = 0..N (N = 0: one family, nothing couples).
+independent families {f >= 0 : f = +-n mod 2N}, n = 0..N (N = 0: every frequency on its own).
 Each family is assembled by exact trapezoidal quadrature and the generalised eigenproblem
 G x = mu K x is solved (K Cholesky-factorised after Jacobi scaling); q = 1/mu.  The truncation is
 a Rayleigh-Ritz subspace, so truncated critical loads decrease monotonically to the limit.
@@ -101,11 +101,11 @@ def frequency_families(N: int, max_frequency: int) -> list[list[int]]:
     """Frequencies 0..max_frequency grouped into the families that the twist couples.
 
     For N > 0 family n (0 <= n <= N) holds the f with f = n or f = -n (mod 2N); for N = 0 there
-    is no coupling and one family holds every frequency.
+    is no coupling and every frequency is a family of its own.
     """
     freqs = range(max_frequency + 1)
     if N == 0:
-        return [list(freqs)]
+        return [[f] for f in freqs]
     period = 2 * N
     return [[f for f in freqs if f % period in (n, (period - n) % period)] for n in range(N + 1)]
 
@@ -131,39 +131,38 @@ def _family_basis(freqs: list[int]) -> _Basis:
     return _Basis(labels)
 
 
-def _trig_derivatives(f: int, kind: str, s: NDArray[np.float64],
-                      order: int) -> list[NDArray[np.float64]]:
-    """[phi, phi', ..., phi^(order)] for phi = cos(f s) ('c') or sin(f s) ('s')."""
-    c, sn = np.cos(f * s), np.sin(f * s)
-    # derivative k of cos(fs) = f^k cos(fs + k pi/2); of sin(fs) = f^k sin(fs + k pi/2)
-    cycle_c = [c, -sn, -c, sn]
-    cycle_s = [sn, c, -sn, -c]
-    cyc = cycle_c if kind == "c" else cycle_s
-    return [float(f) ** k * cyc[k % 4] for k in range(order + 1)]
+def _trig_derivatives(freq: NDArray[np.float64], shift: NDArray[np.float64],
+                      s: NDArray[np.float64], order: int) -> list[NDArray[np.float64]]:
+    """[phi, phi', ..., phi^(order)] (each len(s) x len(freq)) for the basis functions
+    phi_j(s) = cos(f_j s - shift_j), shift 0 for cos and pi/2 for sin:
+    phi^(k) = f^k cos(f s - shift + k pi/2)."""
+    phase = s[:, None] * freq[None, :] - shift[None, :]
+    return [freq[None, :] ** k * np.cos(phase + k * (np.pi / 2)) for k in range(order + 1)]
 
 
 def _quantities(basis: _Basis, s: NDArray[np.float64]) -> dict[str, NDArray[np.float64]]:
     """Matrices (len(s) x basis.size) mapping coefficients to k_r, k_phi, k_z, theta_r,
     theta_z, y_phi, y_r, y_z, alpha at the points s (R = 1)."""
-    names = ("k_r", "k_phi", "k_z", "theta_r", "theta_z", "y_phi", "y_r", "y_z", "alpha")
-    out = {k: np.zeros((s.size, basis.size)) for k in names}
-    for j, (fld, f, kind) in enumerate(basis.labels):
-        d = _trig_derivatives(f, kind, s, 3)
-        if fld == "y_phi":
-            out["y_phi"][:, j] = d[0]
-            out["y_r"][:, j] = -d[1]
-            out["theta_z"][:, j] = d[2] + d[0]
-            out["k_z"][:, j] = d[3] + d[1]
-        elif fld == "y_z":
-            out["y_z"][:, j] = d[0]
-            out["theta_r"][:, j] = d[1]
-            out["k_r"][:, j] = d[2]
-            out["k_phi"][:, j] = d[1]
-        else:  # alpha = theta_phi
-            out["alpha"][:, j] = d[0]
-            out["k_r"][:, j] = -d[0]
-            out["k_phi"][:, j] = d[1]
-    return out
+    freq = np.array([f for _, f, _ in basis.labels], dtype=float)
+    shift = np.array([0.0 if kind == "c" else np.pi / 2 for _, _, kind in basis.labels])
+    d = _trig_derivatives(freq, shift, s, 3)
+    fld = np.array([name for name, _, _ in basis.labels])
+    is_p, is_z, is_a = (fld == "y_phi"), (fld == "y_z"), (fld == "alpha")
+
+    def only(mask: NDArray[np.bool_], arr: NDArray[np.float64]) -> NDArray[np.float64]:
+        return np.where(mask[None, :], arr, 0.0)
+
+    return {
+        "y_phi": only(is_p, d[0]),
+        "y_r": only(is_p, -d[1]),
+        "theta_z": only(is_p, d[2] + d[0]),
+        "k_z": only(is_p, d[3] + d[1]),
+        "y_z": only(is_z, d[0]),
+        "theta_r": only(is_z, d[1]),
+        "k_r": only(is_z, d[2]) - only(is_a, d[0]),
+        "k_phi": only(is_z, d[1]) + only(is_a, d[1]),
+        "alpha": only(is_a, d[0]),
+    }
 
 
 def _quadrature(max_frequency: int, N: int) -> tuple[NDArray[np.float64], float]:
@@ -171,6 +170,12 @@ def _quadrature(max_frequency: int, N: int) -> tuple[NDArray[np.float64], float]
     2 max_frequency + 2N); the trapezoidal weight is 2 pi / P."""
     P = 2 * max_frequency + 2 * N + 8
     return np.arange(P) * (2.0 * np.pi / P), 2.0 * np.pi / P
+
+
+def _gram(B: NDArray[np.float64], weight: float = 1.0) -> NDArray[np.float64]:
+    """weight * B^T B, computed with einsum (single-threaded: these matrices are small and a
+    threaded BLAS only adds overhead here)."""
+    return weight * np.einsum("pi,pj->ij", B, B)
 
 
 def assemble(N: int, nu: float, e_ratio: float, load: str,
@@ -185,20 +190,23 @@ def assemble(N: int, nu: float, e_ratio: float, load: str,
     cv, sv = np.sin(om), np.cos(om)  # k.v0 = sin(Om) k_r + cos(Om) k_z
     b_v = cv[:, None] * Q["k_r"] + sv[:, None] * Q["k_z"]
     b_u = -np.cos(om)[:, None] * Q["k_r"] + np.sin(om)[:, None] * Q["k_z"]
-    K = w * (A1 * b_v.T @ b_v + A2 * b_u.T @ b_u + A3 * Q["k_phi"].T @ Q["k_phi"])
-    G = w * (Q["theta_r"].T @ Q["theta_r"] + Q["theta_z"].T @ Q["theta_z"])
+    K = w * (_gram(b_v, A1) + _gram(b_u, A2) + _gram(Q["k_phi"], A3))
+    G = w * (_gram(Q["theta_r"]) + _gram(Q["theta_z"]))
     if load == "hydrostatic":
-        cross = Q["y_phi"].T @ Q["theta_z"]
+        cross = np.einsum("pi,pj->ij", Q["y_phi"], Q["theta_z"])
         G -= w * 0.5 * (cross + cross.T)
     else:
-        G -= w * Q["y_phi"].T @ Q["y_phi"]
+        G -= w * _gram(Q["y_phi"])
     return 0.5 * (K + K.T), 0.5 * (G + G.T), basis
 
 
 def rigid_body_constraints(basis: _Basis) -> NDArray[np.float64]:
     """6 x basis.size matrix C with C x = (int y ds, int R0 x y ds) in Cartesian components.
 
-    y = -y_phi' e_r + y_phi e_phi + y_z e_z and R0 = e_r (R = 1); exact quadrature."""
+    y = -y_phi' e_r + y_phi e_phi + y_z e_z and R0 = e_r (R = 1); exact quadrature.  Only
+    frequencies 0 and 1 enter, so C is zero for families without them."""
+    if not any(f <= 1 for _, f, _ in basis.labels):
+        return np.zeros((6, basis.size))
     s = np.arange(16) * (2.0 * np.pi / 16)
     w = 2.0 * np.pi / 16
     Q = _quantities(basis, s)
@@ -250,8 +258,12 @@ def solve_family(N: int, nu: float, e_ratio: float, load: str,
     """Smallest positive q of G x = (1/q) K x on the constraint subspace of one family."""
     K, G, basis = assemble(N, nu, e_ratio, load, freqs)
     C = rigid_body_constraints(basis)
-    Z = _null_space(C, basis.size)
-    Kz, Gz = Z.T @ K @ Z, Z.T @ G @ Z
+    if C.any():
+        Z = _null_space(C, basis.size)
+        Kz = np.einsum("ia,ib->ab", Z, np.einsum("ij,jb->ib", K, Z))
+        Gz = np.einsum("ia,ib->ab", Z, np.einsum("ij,jb->ib", G, Z))
+    else:  # no frequency 0 or 1 in this family: nothing to constrain
+        Z, Kz, Gz = np.eye(basis.size), K, G
     d = 1.0 / np.sqrt(np.diag(Kz))
     Kz, Gz = Kz * d[:, None] * d[None, :], Gz * d[:, None] * d[None, :]
     try:
@@ -273,7 +285,7 @@ class RingBuckling:
     kind               "in-plane", "out-of-plane" or "coupled" (in-plane share of the load work
                        x.G x within 1e-8 of 1, of 0, or in between)
     in_plane_fraction  share of the load work done by the in-plane displacement y_phi
-    family             n: the mode contains the frequencies f = +-n (mod 2N) (N = 0: all)
+    family             n: the mode contains the frequencies f = +-n (mod 2N) (N = 0: f = n)
     dominant_frequency the frequency with the largest share of the mode's bending energy
     max_frequency      Fourier truncation (frequencies 0..max_frequency of each field)
     n_modes            real Fourier coefficients per field (2 max_frequency + 1)
@@ -335,7 +347,7 @@ def _truncations(N: int, max_frequency: int | None) -> list[int]:
     """Truncations tried: frequencies up to M0, M0 + step, ... (a fixed list if given)."""
     if max_frequency is not None:
         return [max_frequency]
-    step = 2 * max(N, 1) * 2
+    step = max(4, 2 * N)
     start = 2 * N + 12
     return [start + k * step for k in range(12)]
 
@@ -345,9 +357,10 @@ def ring_buckling(N: object, nu: object, *, e_ratio: object = 1.0, load: object 
                   raise_on_failure: bool = True) -> RingBuckling:
     """Critical load and buckling mode of the twisted ring (see the module docstring).
 
-    Truncations are refined (frequencies 0..M with M = 2N + 12, then in steps of 4 max(N, 1))
-    until two successive critical loads agree to ``tol`` relatively.  With ``max_frequency``
-    given, only that truncation is solved (``converged`` is then False, ``rel_change`` nan).
+    Truncations are refined (frequencies 0..M with M = 2N + 12, then in steps of max(4, 2N), so
+    every family gains members) until two successive critical loads agree to ``tol``
+    relatively.  With ``max_frequency`` given, only that truncation is solved (``converged`` is
+    then False, ``rel_change`` nan).
     Raises :class:`RingConvergenceError` if not converged and ``raise_on_failure``.
     """
     n_turns = check_twist_count(N, maximum=MAX_SOLVER_TWIST)
