@@ -74,6 +74,9 @@ LOADS = ("hydrostatic", "axis")
 MAX_SOLVER_TWIST = 60
 #: Fields of the unknown vector, in order.
 FIELDS = ("y_phi", "y_z", "alpha")
+#: Subspaces the solver can be restricted to: all fields, the in-plane displacement y_phi only,
+#: or the out-of-plane fields y_z, alpha only.
+SUBSPACES = {"all": FIELDS, "in-plane": ("y_phi",), "out-of-plane": ("y_z", "alpha")}
 #: A mode is called in-plane / out-of-plane if its in-plane share of the load work is within
 #: this distance of 1 / 0.
 KIND_TOL = 1.0e-8
@@ -121,9 +124,9 @@ class _Basis:
         return len(self.labels)
 
 
-def _family_basis(freqs: list[int]) -> _Basis:
+def _family_basis(freqs: list[int], fields: tuple[str, ...] = FIELDS) -> _Basis:
     labels = []
-    for fld in FIELDS:
+    for fld in fields:
         for f in freqs:
             labels.append((fld, f, "c"))
             if f > 0:
@@ -178,11 +181,12 @@ def _gram(B: NDArray[np.float64], weight: float = 1.0) -> NDArray[np.float64]:
     return weight * np.einsum("pi,pj->ij", B, B)
 
 
-def assemble(N: int, nu: float, e_ratio: float, load: str,
-             freqs: list[int]) -> tuple[NDArray[np.float64], NDArray[np.float64], _Basis]:
+def assemble(N: int, nu: float, e_ratio: float, load: str, freqs: list[int],
+             fields: tuple[str, ...] = FIELDS,
+             ) -> tuple[NDArray[np.float64], NDArray[np.float64], _Basis]:
     """Symmetric matrices K (bending/torsion) and G (load work) of one frequency family, such
     that the second variation is 1/2 (x.K x - q x.G x); no constraints applied yet."""
-    basis = _family_basis(freqs)
+    basis = _family_basis(freqs, fields)
     s, w = _quadrature(max(freqs), N)
     Q = _quantities(basis, s)
     A1, A2, A3 = stiffnesses(nu, e_ratio)
@@ -249,14 +253,31 @@ class FamilySolution:
     load: float
     coefficients: NDArray[np.float64]
     basis_labels: list[tuple[str, int, str]]
-    min_mu: float  # most negative 1/q over the family (>= 0 means no load q <= 0 buckles it)
+    min_mu: float  # smallest 1/q over the family (>= 0 means no load q <= 0 buckles it)
     n_constraints: int
+    K: NDArray[np.float64]
+    G: NDArray[np.float64]
+
+    def in_plane_fraction(self) -> float:
+        """Share of the load work x.G x done by y_phi (G has no y_phi-(y_z, alpha) terms)."""
+        x = self.coefficients
+        inp = np.array([fld == "y_phi" for fld, _, _ in self.basis_labels])
+        total = x @ self.G @ x
+        return float(x[inp] @ self.G[np.ix_(inp, inp)] @ x[inp] / total) if total else math.nan
+
+    def dominant_frequency(self) -> int:
+        """Frequency carrying the largest part of the mode's bending/torsion energy."""
+        x = self.coefficients
+        freqs = np.array([f for _, f, _ in self.basis_labels])
+        share = {int(f): float(x[freqs == f] @ self.K[np.ix_(freqs == f, freqs == f)]
+                               @ x[freqs == f]) for f in np.unique(freqs)}
+        return max(share, key=lambda f: share[f])
 
 
-def solve_family(N: int, nu: float, e_ratio: float, load: str,
-                 freqs: list[int]) -> FamilySolution:
+def solve_family(N: int, nu: float, e_ratio: float, load: str, freqs: list[int],
+                 fields: tuple[str, ...] = FIELDS) -> FamilySolution:
     """Smallest positive q of G x = (1/q) K x on the constraint subspace of one family."""
-    K, G, basis = assemble(N, nu, e_ratio, load, freqs)
+    K, G, basis = assemble(N, nu, e_ratio, load, freqs, fields)
     C = rigid_body_constraints(basis)
     if C.any():
         Z = _null_space(C, basis.size)
@@ -264,6 +285,9 @@ def solve_family(N: int, nu: float, e_ratio: float, load: str,
         Gz = np.einsum("ia,ib->ab", Z, np.einsum("ij,jb->ib", G, Z))
     else:  # no frequency 0 or 1 in this family: nothing to constrain
         Z, Kz, Gz = np.eye(basis.size), K, G
+    rank = int(np.linalg.matrix_rank(C)) if C.any() else 0
+    if Z.shape[1] == 0:  # everything here is a rigid motion: no buckling mode
+        return FamilySolution(math.inf, np.zeros(basis.size), basis.labels, math.inf, rank, K, G)
     d = 1.0 / np.sqrt(np.diag(Kz))
     Kz, Gz = Kz * d[:, None] * d[None, :], Gz * d[:, None] * d[None, :]
     try:
@@ -274,7 +298,7 @@ def solve_family(N: int, nu: float, e_ratio: float, load: str,
     top = int(np.argmax(mu))
     q = 1.0 / mu[top] if mu[top] > 0 else math.inf
     x = Z @ (d * vec[:, top])
-    return FamilySolution(q, x, basis.labels, float(mu.min()), int(np.linalg.matrix_rank(C)))
+    return FamilySolution(q, x, basis.labels, float(mu.min()), rank, K, G)
 
 
 @dataclass(frozen=True)
@@ -321,28 +345,6 @@ class RingBuckling:
         return {"s": s, **{k: Q[k] @ self.coefficients for k in ("y_r", "y_phi", "y_z", "alpha")}}
 
 
-def _in_plane_fraction(sol: FamilySolution, N: int, nu: float, e_ratio: float,
-                       load: str) -> float:
-    freqs = sorted({f for _, f, _ in sol.basis_labels})
-    _, G, basis = assemble(N, nu, e_ratio, load, freqs)
-    x = sol.coefficients
-    inp = np.array([fld == "y_phi" for fld, _, _ in basis.labels])
-    g_in = x[inp] @ G[np.ix_(inp, inp)] @ x[inp]
-    return float(g_in / (x @ G @ x))
-
-
-def _dominant_frequency(sol: FamilySolution, N: int, nu: float, e_ratio: float,
-                        load: str) -> int:
-    freqs = sorted({f for _, f, _ in sol.basis_labels})
-    K, _, basis = assemble(N, nu, e_ratio, load, freqs)
-    x = sol.coefficients
-    share = {}
-    for f in freqs:
-        sel = np.array([ff == f for _, ff, _ in basis.labels])
-        share[f] = x[sel] @ K[np.ix_(sel, sel)] @ x[sel]
-    return max(share, key=lambda f: share[f])
-
-
 def _truncations(N: int, max_frequency: int | None) -> list[int]:
     """Truncations tried: frequencies up to M0, M0 + step, ... (a fixed list if given)."""
     if max_frequency is not None:
@@ -354,19 +356,25 @@ def _truncations(N: int, max_frequency: int | None) -> list[int]:
 
 def ring_buckling(N: object, nu: object, *, e_ratio: object = 1.0, load: object = "hydrostatic",
                   tol: float = 1.0e-12, max_frequency: int | None = None,
-                  raise_on_failure: bool = True) -> RingBuckling:
+                  subspace: str = "all", raise_on_failure: bool = True) -> RingBuckling:
     """Critical load and buckling mode of the twisted ring (see the module docstring).
 
     Truncations are refined (frequencies 0..M with M = 2N + 12, then in steps of max(4, 2N), so
     every family gains members) until two successive critical loads agree to ``tol``
     relatively.  With ``max_frequency`` given, only that truncation is solved (``converged`` is
-    then False, ``rel_change`` nan).
+    then False, ``rel_change`` nan).  ``subspace`` restricts the unknowns: "all" (default),
+    "in-plane" (y_phi only) or "out-of-plane" (y_z, alpha only); for N = 0 or nu = 1 the
+    problem decouples and these give the exact in-plane and out-of-plane loads, otherwise they
+    are upper bounds (Rayleigh-Ritz on a subspace).
     Raises :class:`RingConvergenceError` if not converged and ``raise_on_failure``.
     """
     n_turns = check_twist_count(N, maximum=MAX_SOLVER_TWIST)
     v = check_scalar_nu(nu)
     e = check_e_ratio(e_ratio)
     ld = check_load(load)
+    if not isinstance(subspace, str) or subspace not in SUBSPACES:
+        raise ValueError(f"subspace must be one of {tuple(SUBSPACES)}, got {subspace!r}")
+    fields = SUBSPACES[subspace]
     if max_frequency is not None:
         if isinstance(max_frequency, bool) or not isinstance(max_frequency, int) \
                 or not (4 <= max_frequency <= 2000):
@@ -379,13 +387,13 @@ def ring_buckling(N: object, nu: object, *, e_ratio: object = 1.0, load: object 
     rel = math.nan
     min_mu = math.inf
     for M in _truncations(n_turns, max_frequency):
-        sols = {n: solve_family(n_turns, v, e, ld, fam)
+        sols = {n: solve_family(n_turns, v, e, ld, fam, fields)
                 for n, fam in enumerate(frequency_families(n_turns, M)) if fam}
         k = min(sols, key=lambda n: sols[n].load)
         min_mu = min(sol.min_mu for sol in sols.values())
         q = sols[k].load
         if history:
-            rel = abs(history[-1][1] - q) / q
+            rel = 0.0 if q == history[-1][1] else abs(history[-1][1] - q) / q
         history.append((M, q))
         best = (sols[k], k)
         if len(history) >= 2 and rel <= tol:
@@ -397,12 +405,12 @@ def ring_buckling(N: object, nu: object, *, e_ratio: object = 1.0, load: object 
         raise RingConvergenceError(
             f"ring critical load not converged for N={n_turns}, nu={v}, e={e}, load={ld}: "
             f"relative change {rel:.2e} > tol {tol:.1e} at max_frequency {history[-1][0]}")
-    frac = _in_plane_fraction(sol, n_turns, v, e, ld)
+    frac = sol.in_plane_fraction()
     kind = ("in-plane" if frac > 1 - KIND_TOL else "out-of-plane" if frac < KIND_TOL
             else "coupled")
     M = history[-1][0]
     return RingBuckling(n_turns, v, e, ld, sol.load, kind, frac, fam,
-                        _dominant_frequency(sol, n_turns, v, e, ld), M, 2 * M + 1, rel,
+                        sol.dominant_frequency(), M, 2 * M + 1, rel,
                         converged, float(tol), history, min_mu, sol.coefficients,
                         sol.basis_labels)
 

@@ -1,0 +1,270 @@
+"""The numerical ring solver: operator against the sympy derivation, and every validation of
+issue 4 against closed forms (Timoshenko & Gere rings, energy bounds, homogenisation limit).
+Loads are q R^3/(E1 I1); A1 = 1, A2 = nu, A3 = e (1 + nu)."""
+
+from __future__ import annotations
+
+import importlib.util
+import itertools
+import math
+from pathlib import Path
+from types import ModuleType
+
+import numpy as np
+import pytest
+import sympy as sp
+
+from spectral_rod.ring import ring_formula_load
+from spectral_rod.ring_stability import (
+    RingConvergenceError,
+    assemble,
+    frequency_families,
+    rigid_body_constraints,
+    ring_buckling,
+    ring_critical_load,
+)
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def _load_derivation() -> ModuleType:
+    path = ROOT / "derivations" / "ring_linearisation.py"
+    spec = importlib.util.spec_from_file_location("ring_linearisation", path)
+    assert spec is not None and spec.loader is not None
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+@pytest.fixture(scope="module")
+def derivation() -> tuple[ModuleType, dict]:
+    mod = _load_derivation()
+    return mod, mod.derive()
+
+
+# ---------------------------------------------------------------- closed forms (by hand)
+
+def in_plane_closed(A: float, load: str) -> float:
+    """Untwisted ring, in-plane, min over n >= 2: hydrostatic A (n^2 - 1), axis
+    A (n^2 - 1)^2/(n^2 - 2) (hand computation with y_phi = sin(n s))."""
+    ns = np.arange(2, 40)
+    if load == "hydrostatic":
+        return float(np.min(A * (ns**2 - 1)))
+    return float(np.min(A * (ns**2 - 1) ** 2 / (ns**2 - 2)))
+
+
+def out_of_plane_closed(A: float, A3: float) -> float:
+    """Timoshenko & Gere: q = A (n^2 - 1)^2 / (n^2 + A/A3), minimised over n >= 2."""
+    ns = np.arange(2, 40)
+    return float(np.min(A * (ns**2 - 1) ** 2 / (ns**2 + A / A3)))
+
+
+def isotropic_ring(A: float, A3: float, load: str) -> float:
+    return min(in_plane_closed(A, load), out_of_plane_closed(A, A3))
+
+
+# ---------------------------------------------------------------- the operator vs sympy
+
+def _trig_poly(coeffs: dict[tuple[int, str], float]) -> sp.Expr:
+    s = sp.Symbol("s", real=True)
+    return sum((c * (sp.cos(f * s) if k == "c" else sp.sin(f * s))
+                for (f, k), c in coeffs.items()), sp.Integer(0))
+
+
+@pytest.mark.parametrize(("N", "seed"), [(0, 0), (1, 1), (2, 2), (3, 3)])
+def test_operator_matches_sympy_derivation(derivation: tuple, N: int, seed: int) -> None:
+    mod, d = derivation
+    rng = np.random.default_rng(seed)
+    nu, e = rng.uniform(1.0, 4.0), rng.uniform(0.3, 2.0)
+    A1, A2, A3 = 1.0, nu, e * (1 + nu)
+    fam = frequency_families(N, 9)[min(2, N)] if N else list(range(5))
+    for load in ("hydrostatic", "axis"):
+        K, G, basis = assemble(N, nu, e, load, fam)
+        x = rng.normal(size=basis.size)
+        fields = {name: {} for name in ("y_phi", "y_z", "alpha")}
+        for (fld, f, kind), c in zip(basis.labels, x, strict=True):
+            fields[fld][(f, kind)] = c
+        subs = {mod.y_phi: _trig_poly(fields["y_phi"]), mod.y_z: _trig_poly(fields["y_z"]),
+                mod.alpha: _trig_poly(fields["alpha"])}
+        params = {mod.R: 1, mod.A1: A1, mod.A2: A2, mod.A3: A3, mod.N: N}
+        s = sp.Symbol("s", real=True)
+        pts = np.arange(256) * (2 * np.pi / 256)
+        for dens, mat in ((d["K"], K), (d[f"G_{load}"], G)):
+            expr = dens.subs(params).subs(subs).doit()
+            f_num = sp.lambdify(s, expr, "numpy")
+            integral = float(np.sum(f_num(pts)) * (2 * np.pi / 256))
+            assert x @ mat @ x == pytest.approx(integral, rel=1e-11)
+
+
+def test_derivation_hoop_force_and_torsions(derivation: tuple) -> None:
+    mod, d = derivation
+    assert sp.simplify(d["F_t"] + mod.q * mod.R) == 0
+    assert sp.simplify(d["w30"] - mod.N / mod.R) == 0
+
+
+# ---------------------------------------------------------------- rigid motions
+
+def _rigid_motion(basis_labels: list, trans: np.ndarray, rot: np.ndarray) -> np.ndarray:
+    """Coefficients of y = a + w x R0 (R = 1) with alpha = w . e_phi, in cylindrical fields:
+    y_phi = -a_x sin + a_y cos + w_z, y_z = a_z + w_x sin - w_y cos,
+    alpha = -w_x sin + w_y cos (hand computation)."""
+    ax, ay, az = trans
+    wx, wy, wz = rot
+    target = {("y_phi", 1, "s"): -ax, ("y_phi", 1, "c"): ay, ("y_phi", 0, "c"): wz,
+              ("y_z", 0, "c"): az, ("y_z", 1, "s"): wx, ("y_z", 1, "c"): -wy,
+              ("alpha", 1, "s"): -wx, ("alpha", 1, "c"): wy}
+    return np.array([target.get(lab, 0.0) for lab in basis_labels])
+
+
+def test_rigid_motions_cost_no_energy_and_are_constrained() -> None:
+    rng = np.random.default_rng(5)
+    for N in (0, 1, 3):
+        fams = frequency_families(N, 8)
+        fam = sorted({f for fm in fams for f in fm if f in (0, 1)} | {2, 3}) if N else [0, 1, 2]
+        K, G, basis = assemble(N, 2.5, 0.7, "hydrostatic", fam)
+        C = rigid_body_constraints(basis)
+        assert np.linalg.matrix_rank(C) == 6
+        for _ in range(3):
+            x = _rigid_motion(basis.labels, rng.normal(size=3), rng.normal(size=3))
+            assert abs(x @ K @ x) < 1e-12 * (x @ x)
+            assert np.linalg.norm(C @ x) > 1e-3 * np.linalg.norm(x)
+        # a rigid tilt lowers the potential of the load (x.G x > 0 means -q x.G x < 0)
+        tilt = _rigid_motion(basis.labels, np.zeros(3), np.array([1.0, 0.0, 0.0]))
+        assert tilt @ G @ tilt > 0.1
+
+
+# ---------------------------------------------------------------- validations of issue 4
+
+@pytest.mark.parametrize(("load", "expected"), [("hydrostatic", 3.0), ("axis", 4.5)])
+def test_untwisted_in_plane(load: str, expected: float) -> None:
+    r = ring_buckling(0, 1.0, load=load, subspace="in-plane")
+    assert r.load == pytest.approx(expected, rel=1e-12)
+    assert r.kind == "in-plane" and r.dominant_frequency == 2
+    assert in_plane_closed(1.0, load) == expected  # the hand formula itself
+
+
+@pytest.mark.parametrize("e", [1.0, 1 / 2.6, 10.0, 1e3])
+@pytest.mark.parametrize("load", ["hydrostatic", "axis"])
+def test_untwisted_out_of_plane_timoshenko(e: float, load: str) -> None:
+    A3 = 2 * e
+    r = ring_buckling(0, 1.0, e_ratio=e, load=load, subspace="out-of-plane")
+    assert r.load == pytest.approx(out_of_plane_closed(1.0, A3), rel=1e-12)
+    assert r.kind == "out-of-plane"
+    # the full solver returns the lower of in-plane and out-of-plane and names it
+    full = ring_buckling(0, 1.0, e_ratio=e, load=load)
+    assert full.load == pytest.approx(isotropic_ring(1.0, A3, load), rel=1e-12)
+    assert full.kind == "out-of-plane"
+
+
+@pytest.mark.parametrize(("nu", "e", "kind"), [(4.0, 1.0, "in-plane"), (1.5, 1.0, "out-of-plane"),
+                                               (2.0, 0.1, "out-of-plane")])
+def test_untwisted_non_circular_picks_lower_mode(nu: float, e: float, kind: str) -> None:
+    A3 = e * (1 + nu)
+    for load in ("hydrostatic", "axis"):
+        r = ring_buckling(0, nu, e_ratio=e, load=load)
+        expected = min(in_plane_closed(1.0, load), out_of_plane_closed(nu, A3))
+        assert r.load == pytest.approx(expected, rel=1e-12)
+        if load == "hydrostatic":
+            assert r.kind == kind
+
+
+@pytest.mark.parametrize("load", ["hydrostatic", "axis"])
+def test_circular_section_independent_of_twist(load: str) -> None:
+    for e in (1.0, 1 / 2.6):
+        ref = isotropic_ring(1.0, 2 * e, load)
+        for N in range(0, 7):
+            assert ring_critical_load(N, 1.0, e_ratio=e, load=load) == pytest.approx(ref,
+                                                                                     rel=1e-11)
+
+
+def test_bracketed_by_isotropic_rings() -> None:
+    rng = np.random.default_rng(11)
+    for _ in range(12):
+        nu, e = rng.uniform(1.05, 6.0), rng.uniform(0.2, 3.0)
+        N = int(rng.integers(1, 9))
+        load = ("hydrostatic", "axis")[int(rng.integers(0, 2))]
+        A3 = e * (1 + nu)
+        q = ring_critical_load(N, nu, e_ratio=e, load=load)
+        assert isotropic_ring(1.0, A3, load) - 1e-12 <= q <= isotropic_ring(nu, A3, load) + 1e-12
+
+
+@pytest.mark.parametrize("nu", [1.5, 4.0])
+def test_rapid_twist_tends_to_harmonic_mean_ring(nu: float) -> None:
+    """For N -> infinity the rotating stiffness homogenises (1D: harmonic mean of the rotating
+    tensor, isotropic 2 A1 A2/(A1 + A2)); the gap must shrink as N grows."""
+    A_h = 2 * nu / (1 + nu)
+    ref = isotropic_ring(A_h, 1 + nu, "hydrostatic")
+    gaps = [abs(ring_critical_load(N, nu) - ref) for N in (5, 10, 20)]
+    assert gaps[0] > gaps[1] > gaps[2]
+    assert gaps[2] < 2e-3 * ref
+    assert gaps[1] / gaps[2] > 3.0  # at least ~1/N^2 decay
+
+
+@pytest.mark.parametrize(("N", "nu"), [(1, 4.0), (2, 2.0), (3, 4.0), (6, 1.5)])
+def test_spectral_convergence(N: int, nu: float) -> None:
+    ref = ring_buckling(N, nu, max_frequency=20 * N + 40).load
+    Ms = [2 * N + 2 * k for k in range(1, 12)]
+    errs = [ring_buckling(N, nu, max_frequency=M).load - ref for M in Ms]
+    # Rayleigh-Ritz: upper bounds, decreasing with the basis
+    assert all(err >= -1e-12 * ref for err in errs)
+    assert all(b <= a + 1e-12 * ref for a, b in itertools.pairwise(errs))
+    # ten digits with a modest number of modes (the tail of the list)
+    assert errs[-1] < 1e-10 * ref
+    r = ring_buckling(N, nu)
+    assert r.converged and r.rel_change <= 1e-12 and r.max_frequency <= 6 * N + 20
+    assert r.load == pytest.approx(ref, rel=1e-12)
+
+
+def test_no_eigenvalue_at_nonpositive_load_and_positive_where_crit2_is_negative() -> None:
+    for N in range(0, 11):
+        for nu in (1.3, 4.0):
+            for load in ("hydrostatic", "axis"):
+                r = ring_buckling(N, nu, load=load)
+                assert r.min_load_over_q >= -1e-12
+                assert 0 < r.load < math.inf
+    assert ring_formula_load(10, 4.0) < 0 < ring_critical_load(10, 4.0)
+
+
+def test_mode_kinds_and_shape() -> None:
+    r = ring_buckling(2, 2.0)
+    assert r.kind == "coupled" and 0 < r.in_plane_fraction < 1
+    m = r.mode()
+    assert set(m) == {"s", "y_r", "y_phi", "y_z", "alpha"}
+    assert np.max(np.abs(m["y_phi"])) > 0 and np.max(np.abs(m["y_z"])) > 0
+    # the rigid-body constraints hold for the mode: int y_z ds = 0 and int y_phi ds = 0
+    assert abs(np.mean(m["y_z"])) < 1e-12 and abs(np.mean(m["y_phi"])) < 1e-12
+    assert ring_buckling(0, 4.0).kind == "in-plane"
+    assert ring_buckling(0, 1.0).kind == "out-of-plane"
+
+
+def test_not_converged_is_flagged(monkeypatch: pytest.MonkeyPatch) -> None:
+    import spectral_rod.ring_stability as rs
+
+    monkeypatch.setattr(rs, "_truncations", lambda N, M: [2 * N + 2, 2 * N + 4])  # too coarse
+    with pytest.raises(RingConvergenceError, match="not converged"):
+        rs.ring_buckling(3, 4.0)
+    r = rs.ring_buckling(3, 4.0, raise_on_failure=False)
+    assert not r.converged and r.rel_change > r.tol
+
+
+@pytest.mark.parametrize(("kwargs", "exc", "word"), [
+    ({"N": -2}, ValueError, "N"),
+    ({"N": 1.5}, ValueError, "N"),
+    ({"N": None}, TypeError, "N"),
+    ({"N": 1000}, ValueError, "N"),
+    ({"nu": 0.99}, ValueError, "nu"),
+    ({"e_ratio": 0.0}, ValueError, "e_ratio"),
+    ({"load": "pressure"}, ValueError, "load"),
+    ({"load": 3}, TypeError, "load"),
+    ({"subspace": "radial"}, ValueError, "subspace"),
+    ({"tol": 0.5}, ValueError, "tol"),
+    ({"max_frequency": 2}, ValueError, "max_frequency"),
+])
+def test_solver_bad_input(kwargs: dict, exc: type[Exception], word: str) -> None:
+    args = {"N": 2, "nu": 2.0, **kwargs}
+    N, nu = args.pop("N"), args.pop("nu")
+    with pytest.raises(exc, match=word):
+        ring_buckling(N, nu, **args)
+    if set(kwargs) <= {"N", "nu", "e_ratio", "load"}:
+        with pytest.raises(exc, match=word):
+            ring_critical_load(N, nu, **args)
