@@ -18,9 +18,10 @@ def real_array(value: ArrayLike, name: str) -> NDArray[np.float64]:
         arr = np.asarray(value)
     except Exception as exc:  # pragma: no cover - numpy raises many things here
         raise TypeError(f"{name} must be a real number or array, got {value!r}") from exc
-    if arr.dtype == object or not (np.issubdtype(arr.dtype, np.number)
-                                   or np.issubdtype(arr.dtype, np.bool_)):
-        raise TypeError(f"{name} must be real-valued, got dtype {arr.dtype}")
+    if arr.dtype == object or np.issubdtype(arr.dtype, np.bool_) \
+            or not np.issubdtype(arr.dtype, np.number):
+        raise TypeError(f"{name} must be a real number or an array of real numbers, "
+                        f"got dtype {arr.dtype}")
     if np.iscomplexobj(arr):
         raise TypeError(f"{name} must be real-valued, got complex input")
     arr = arr.astype(np.float64)

@@ -1,0 +1,196 @@
+"""Scene `extremes`: accuracy of p* and of p* - 1 at the edges of the (Omega(L), nu) plane.
+
+Models: the hinged straight rod with spontaneous twist (paper, Eq. ``inst1``); p* = P_cr /
+(pi^2 A1/L^2), Omega(L) = omega30 L, nu = I2/I1.
+Compares: the public ``critical_load`` (collocation for |Omega| < 50, double-precision
+characteristic equation above) and ``critical_load_increment`` with the mpmath characteristic
+equation at 50 digits (the independent reference), over a grid reaching nu - 1 = 1e-12,
+nu = 1e4, Omega(L) = 1e-6 and 1000; and collocation at fixed degree n = 8..512 (round-off growth).
+Writes: extremes.png, extremes_grid.csv, extremes_increment.csv, extremes_resolution.csv and the
+report section. Nothing is cached across runs.
+"""
+
+from __future__ import annotations
+
+import time
+import warnings
+from collections.abc import Callable
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+import pandas as pd
+
+from reproduce._runner import SceneOutput
+from spectral_rod.characteristic import characteristic_critical_load
+from spectral_rod.critical import TWIST_ROUTE, critical_load
+from spectral_rod.increment import critical_load_increment
+from spectral_rod.io import write_with
+from spectral_rod.straight_rod import ConvergenceWarning
+
+NAME = "extremes"
+SUMMARY = ("straight rod at the extremes: p* and p*-1 errors over the (Omega, nu) plane vs the "
+           "mpmath characteristic equation, round-off vs n -> extremes.png, extremes_*.csv")
+DPS = 50
+P_TWISTS = (1e-6, 1e-3, 1.0, 5.0, 30.0, 100.0, 300.0, 1000.0)
+P_NUS = (1 + 1e-12, 1 + 1e-8, 1 + 1e-4, 1.5, 10.0, 1e4)
+INC_TWISTS = (1e-6, 1e-3, 1.0, 5.0, 30.0, 100.0)
+INC_NUS = (1 + 1e-8, 1 + 1e-4, 1.5, 10.0, 1e4)
+RES_POINTS = ((1.0, 1.5), (30.0, 1.5), (100.0, 10.0), (30.0, 1 + 1e-9))
+RES_DEGREES = (8, 12, 16, 24, 32, 48, 64, 96, 128, 192, 256, 384, 512)
+P_LIMIT, INC_LIMIT = 1e-10, 1e-9
+
+
+def reference(twist: float, nu: float) -> float:
+    """p* from the characteristic equation at DPS digits (never from the code under test)."""
+    return characteristic_critical_load(twist, nu, dps=DPS).p_star
+
+
+def p_star_grid() -> pd.DataFrame:
+    """Relative error of critical_load over P_TWISTS x P_NUS, with the route used."""
+    rows = []
+    for om in P_TWISTS:
+        res = critical_load(np.full(len(P_NUS), om), np.asarray(P_NUS), full_output=True)
+        for j, nu in enumerate(P_NUS):
+            ref = reference(om, nu)
+            p = float(res.p_star[j])
+            rows.append({"twist_angle": om, "nu": nu, "p_star": p, "p_ref": float(ref),
+                         "rel_error": float(abs((p - ref) / ref)),
+                         "method": "characteristic" if om >= TWIST_ROUTE else "collocation",
+                         "n": int(res.n[j]), "family": str(res.family[j])})
+    return pd.DataFrame(rows)
+
+
+def increment_grid() -> pd.DataFrame:
+    """Relative error of critical_load_increment over INC_TWISTS x INC_NUS."""
+    rows = []
+    for om in INC_TWISTS:
+        for nu in INC_NUS:
+            ref = reference(om, nu) - 1
+            d = critical_load_increment(om, nu)
+            rows.append({"twist_angle": om, "nu": nu, "increment": d,
+                         "increment_ref": float(ref), "rel_error": float(abs((d - ref) / ref))})
+    return pd.DataFrame(rows)
+
+
+def resolution_study() -> pd.DataFrame:
+    """Collocation at fixed n (forced, no routing): relative error against the reference."""
+    rows = []
+    for om, nu in RES_POINTS:
+        ref = reference(om, nu)
+        for n in RES_DEGREES:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", ConvergenceWarning)
+                p = critical_load(om, nu, n=n)
+            rows.append({"twist_angle": om, "nu": nu, "n": n, "p_star": p,
+                         "finite": bool(np.isfinite(p)),
+                         "rel_error": float(abs((p - ref) / ref))})
+    return pd.DataFrame(rows)
+
+
+def _heatmap(ax, table: pd.DataFrame, xs, ys, title: str, limit: float):
+    err = np.log10(np.maximum(table.pivot(index="nu", columns="twist_angle",
+                                          values="rel_error").loc[list(ys), list(xs)]
+                              .to_numpy(), 1e-17))
+    im = ax.imshow(err, origin="lower", cmap="viridis", vmin=-17, vmax=-8, aspect="auto")
+    for i in range(len(ys)):
+        for j in range(len(xs)):
+            ax.text(j, i, f"{err[i, j]:.0f}", ha="center", va="center", fontsize=7,
+                    color="w" if err[i, j] < -12 else "k")
+    ax.set_xticks(range(len(xs)), [f"{x:g}" for x in xs], rotation=45, fontsize=7)
+    ax.set_yticks(range(len(ys)), [_nu_label(y) for y in ys], fontsize=7)
+    ax.set_xlabel("Ω(L)")
+    ax.set_ylabel("ν")
+    ax.set_title(f"{title}\n(target {limit:.0e})", fontsize=9)
+    return im
+
+
+def _nu_label(nu: float) -> str:
+    return f"1+{nu - 1:.0e}" if nu - 1 < 1e-3 else f"{nu:g}"
+
+
+def draw(grid: pd.DataFrame, inc: pd.DataFrame, res: pd.DataFrame):
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4.8), layout="constrained",
+                             gridspec_kw={"width_ratios": [1.2, 1, 1.1]})
+    im = _heatmap(axes[0], grid, P_TWISTS, P_NUS,
+                  "log10 rel. error of p* (critical_load)", P_LIMIT)
+    axes[0].axvline(P_TWISTS.index(100.0) - 0.5, color="r", lw=1)
+    axes[0].text(P_TWISTS.index(100.0) - 0.45, -0.45, "char. eq. →", color="r", fontsize=7)
+    _heatmap(axes[1], inc, INC_TWISTS, INC_NUS, "log10 rel. error of p*-1 (increment)",
+             INC_LIMIT)
+    fig.colorbar(im, ax=axes[1], shrink=0.9, label="log10 relative error")
+    ax = axes[2]
+    for (om, nu), sub in res.groupby(["twist_angle", "nu"], sort=False):
+        ax.loglog(sub["n"], np.maximum(sub["rel_error"], 1e-17), "o-", ms=3,
+                  label=f"Ω={om:g}, ν={_nu_label(nu)}")
+    n = np.asarray(RES_DEGREES, dtype=float)
+    ax.loglog(n, 2.2e-16 * n, "k:", lw=1, label="ε n")
+    ax.loglog(n, 2.2e-16 * n**4 / 1e4, "k--", lw=1, label="ε n⁴/10⁴ (differentiation)")
+    ax.set_ylim(1e-17, 1e2)
+    ax.set_xlabel("Chebyshev degree n (fixed)")
+    ax.set_ylabel("relative error of p*")
+    ax.set_title("collocation at fixed n: truncation, then round-off", fontsize=9)
+    ax.legend(fontsize=7)
+    ax.grid(True, which="major", alpha=0.3)
+    return fig
+
+
+def _md(df: pd.DataFrame, cols: list[str]) -> str:
+    lines = ["| " + " | ".join(cols) + " |", "|" + "---|" * len(cols)]
+    for _, r in df[cols].iterrows():
+        lines.append("| " + " | ".join(f"{v:.3g}" if isinstance(v, float) else str(v)
+                                       for v in r) + " |")
+    return "\n".join(lines)
+
+
+def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
+    out = Path(out)
+    t0 = time.perf_counter()
+    progress("p* over the (Omega, nu) grid vs the mpmath characteristic equation")
+    grid = p_star_grid()
+    progress("p* - 1 (critical_load_increment) vs the reference")
+    inc = increment_grid()
+    progress("collocation at fixed n = 8..512")
+    res = resolution_study()
+    files = [write_with(out / "extremes_grid.csv", lambda p: grid.to_csv(p, index=False)),
+             write_with(out / "extremes_increment.csv", lambda p: inc.to_csv(p, index=False)),
+             write_with(out / "extremes_resolution.csv", lambda p: res.to_csv(p, index=False))]
+    fig = draw(grid, inc, res)
+    files.append(write_with(out / "extremes.png",
+                            lambda p: fig.savefig(p, format="png", dpi=150)))
+    plt.close(fig)
+    worst_p = grid.loc[grid["rel_error"].idxmax()]
+    worst_i = inc.loc[inc["rel_error"].idxmax()]
+    by_route = grid.groupby("method")["rel_error"].max()
+    res_floor = res[res["n"] >= 128].groupby(["twist_angle", "nu"])["rel_error"].max()
+    ok = (grid["rel_error"].max() <= P_LIMIT and inc["rel_error"].max() <= INC_LIMIT
+          and res["finite"].all())
+    report = "\n".join([
+        "## Extremes: accuracy at the edges of the (Ω(L), ν) plane", "",
+        "Reference: the paper's characteristic equation in mpmath at "
+        f"{DPS} digits. Routing: collocation for |Ω(L)| < {TWIST_ROUTE:g}, double-precision "
+        "characteristic equation above (`spectral_rod.critical`).", "",
+        f"* p*: worst relative error {worst_p['rel_error']:.1e} at Ω = "
+        f"{worst_p['twist_angle']:g}, ν = {worst_p['nu']:.12g} (target {P_LIMIT:.0e}); "
+        + ", ".join(f"{k}: {v:.1e}" for k, v in by_route.items()) + ".",
+        f"* p* − 1: worst relative error {worst_i['rel_error']:.1e} at Ω = "
+        f"{worst_i['twist_angle']:g}, ν = {worst_i['nu']:.12g} (target {INC_LIMIT:.0e}), down "
+        "to ν − 1 = 1e-8 and Ω(L) = 1e-6 (p* − 1 = "
+        f"{inc['increment_ref'].min():.3e} there).",
+        "* Fixed n = 8..512: all results finite; round-off floor for n >= 128: "
+        + ", ".join(f"(Ω={om:g}, ν={_nu_label(nu)}) {v:.0e}" for (om, nu), v in
+                    res_floor.items()) + ".",
+        f"* Status: {'PASS' if ok else 'FAIL'}; run time {time.perf_counter() - t0:.1f} s.",
+        "", "![extremes](extremes.png)", "",
+        "### p* − 1 (relative error)", "",
+        _md(inc, ["twist_angle", "nu", "increment_ref", "rel_error"]), "",
+        "### p* (relative error, route)", "",
+        _md(grid, ["twist_angle", "nu", "p_ref", "rel_error", "method", "n"]), "",
+    ])
+    return SceneOutput(files=files, report=report,
+                       details={"worst_p_star": float(grid["rel_error"].max()),
+                                "worst_increment": float(inc["rel_error"].max()),
+                                "pass": bool(ok)})
