@@ -1,0 +1,188 @@
+"""The `ring` scene: every ledger verdict recomputed from the evidence with independent logic,
+verdicts that flip when the evidence changes, and the files the scene writes."""
+
+from __future__ import annotations
+
+import copy
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+
+import reproduce.ring as scene
+from reproduce.ledger import VERDICTS
+
+
+@pytest.fixture(scope="module")
+def evidence() -> scene.RingEvidence:
+    return scene.compute_evidence()
+
+
+@pytest.fixture(scope="module")
+def claims(evidence: scene.RingEvidence) -> dict[str, object]:
+    return {c.id: c for c in scene.evaluate_claims(evidence)}
+
+
+def _hand_crit2(N: np.ndarray, nu: np.ndarray, e: np.ndarray) -> np.ndarray:
+    """Eq. crit2 in units of E1 I1/R^3, typed independently of spectral_rod.ring."""
+    I1 = 1.0
+    I2 = nu * I1
+    E2 = e
+    return E2 * (I1 + I2) / 2 * (3 - (I2 - I1) / (I2 + I1) * (N**2 + 1))
+
+
+def test_table_is_complete_and_converged(evidence: scene.RingEvidence) -> None:
+    t = evidence.table
+    assert len(t) == len(scene.TWISTS) * len(scene.NUS) * len(scene.E_RATIOS)
+    assert np.allclose(t["crit2"], _hand_crit2(t["N"].to_numpy(float), t["nu"].to_numpy(),
+                                               t["e_ratio"].to_numpy()), rtol=1e-13, atol=1e-13)
+    for load in ("hydrostatic", "axis"):
+        assert (t[f"rel_change_{load}"] <= 1e-12).all()
+        assert (t[f"q_{load}"] > 0).all()
+
+
+def test_all_verdicts_valid_and_ids_prefixed(claims: dict) -> None:
+    assert set(claims) == {"ring-crit2", "ring-circular-limit",
+                           "ring-circular-twist-independent", "ring-in-out-coincide",
+                           "ring-monotone-decrease", "ring-spontaneous-instability",
+                           "ring-destabilises"}
+    for c in claims.values():
+        assert c.verdict in VERDICTS and c.scene == "ring" and c.evidence and c.numbers
+
+
+def test_crit2_verdict(evidence: scene.RingEvidence, claims: dict) -> None:
+    t = evidence.table
+    devs = [np.max(np.abs(t["crit2"] - t[f"q_{ld}"]) / t[f"q_{ld}"]) for ld in ("hydrostatic",
+                                                                               "axis")]
+    best = min(devs)
+    expected = ("holds" if best <= 1e-9 else "holds approximately" if best <= 0.05 else "fails")
+    assert claims["ring-crit2"].verdict == expected == "fails"
+    # numbers behind the evidence string
+    assert claims["ring-crit2"].numbers["hydrostatic"]["max_rel_dev"] == pytest.approx(devs[0])
+
+
+def test_circular_limit_verdict(evidence: scene.RingEvidence, claims: dict) -> None:
+    # crit2 at nu = 1 is 3 e; the text says 3 (E1); isotropic e differs
+    e_iso = 1 / 2.6
+    assert abs(3 * e_iso - 3.0) > 1.0
+    # numerical circular ring = Timoshenko & Gere out-of-plane, n = 2: 9/(4 + 1/(2e))
+    t = evidence.table
+    for label, e in scene.E_RATIOS.items():
+        q = t[(t["nu"] == 1.0) & (t["e_label"] == label)]["q_hydrostatic"]
+        assert np.allclose(q, 9 / (4 + 1 / (2 * e)), rtol=1e-12)
+    assert claims["ring-circular-limit"].verdict == "fails"
+    assert claims["ring-circular-limit"].numbers["in_plane_vs_text"] < 1e-12
+
+
+def test_twist_independence_verdict(evidence: scene.RingEvidence, claims: dict) -> None:
+    t = evidence.table[evidence.table["nu"] == 1.0]
+    spread = max(float(np.ptp(g[f"q_{ld}"]) / g[f"q_{ld}"].min())
+                 for _, g in t.groupby("e_label") for ld in ("hydrostatic", "axis"))
+    assert claims["ring-circular-twist-independent"].verdict == (
+        "holds" if spread <= 1e-9 else "fails") == "holds"
+
+
+def test_in_out_coincide_verdict(claims: dict) -> None:
+    # closed forms: in-plane 3 (hydrostatic) and 4.5 (axis) vs out-of-plane <= 9/4
+    assert claims["ring-in-out-coincide"].verdict == "fails"
+    assert claims["ring-in-out-coincide"].numbers["sup_out_of_plane"] == pytest.approx(2.25)
+    assert claims["ring-in-out-coincide"].numbers["min_rel_gap"] == pytest.approx(0.5)
+
+
+def test_monotone_verdict(evidence: scene.RingEvidence, claims: dict) -> None:
+    t = evidence.table[evidence.table["nu"] > 1.0]
+    rising = 0
+    for _, g in t.groupby(["e_label", "nu"]):
+        g = g.sort_values("N")
+        for ld in ("hydrostatic", "axis"):
+            rising += bool(np.any(np.diff(g[f"q_{ld}"].to_numpy()) > 0))
+    assert claims["ring-monotone-decrease"].verdict == ("holds" if rising == 0 else "fails")
+    assert rising > 0
+
+
+def test_spontaneous_instability_verdict(evidence: scene.RingEvidence, claims: dict) -> None:
+    t = evidence.table
+    assert (t[["q_hydrostatic", "q_axis"]] > 0).all().all()
+    assert (t[["min_inverse_load_hydrostatic", "min_inverse_load_axis"]] > -1e-12).all().all()
+    assert claims["ring-spontaneous-instability"].verdict == "fails"
+
+
+def test_destabilises_verdict(evidence: scene.RingEvidence, claims: dict) -> None:
+    t = evidence.table[evidence.table["nu"] > 1.0]
+    exceptions = 0
+    for _, g in t.groupby(["e_label", "nu"]):
+        g = g.set_index("N")
+        for ld in ("hydrostatic", "axis"):
+            exceptions += int((g.loc[1:, f"q_{ld}"] >= g.loc[0, f"q_{ld}"]).sum())
+    assert claims["ring-destabilises"].numbers["exceptions"] == exceptions
+    assert claims["ring-destabilises"].verdict == ("holds" if exceptions == 0 else "fails")
+
+
+# ----------------------------------------------------------- verdicts follow the evidence
+
+def _with_table(ev: scene.RingEvidence, table: pd.DataFrame) -> scene.RingEvidence:
+    new = copy.copy(ev)
+    new.table = table
+    return new
+
+
+def test_verdicts_flip_when_evidence_changes(evidence: scene.RingEvidence) -> None:
+    t = evidence.table.copy()
+    # 1. if the numerical loads equalled crit2 (where positive), crit2 would hold
+    fake = t[t["crit2"] > 0].copy()
+    for ld in ("hydrostatic", "axis"):
+        fake[f"q_{ld}"] = fake["crit2"]
+        fake[f"rel_dev_{ld}"] = 0.0
+    assert scene.claim_crit2(_with_table(evidence, fake)).verdict == "holds"
+    fake[["rel_dev_hydrostatic", "rel_dev_axis"]] = 0.03
+    assert scene.claim_crit2(_with_table(evidence, fake)).verdict == "holds approximately"
+    # 2. a strictly decreasing table whose drop grows with nu makes the monotone claim hold
+    mono = t.copy()
+    for ld in ("hydrostatic", "axis"):
+        mono[f"q_{ld}"] = 10.0 - mono["N"] * mono["nu"] * 0.1
+    assert scene.claim_monotone_decrease(_with_table(evidence, mono)).verdict == "holds"
+    assert scene.claim_destabilises(_with_table(evidence, mono)).verdict == "holds"
+    # 3. a non-positive load beyond the threshold would support spontaneous instability
+    neg = t.copy()
+    neg.loc[(neg["nu"] == 2.0) & (neg["N"] == 5), "q_hydrostatic"] = -0.1
+    assert scene.claim_spontaneous_instability(_with_table(evidence, neg)).verdict == "holds"
+    # 4. a twist-dependent circular ring breaks independence
+    dep = t.copy()
+    dep.loc[(dep["nu"] == 1.0) & (dep["N"] == 3), "q_axis"] *= 1.01
+    assert scene.claim_circular_twist_independent(_with_table(evidence, dep)).verdict == "fails"
+
+
+# ----------------------------------------------------------- the scene's files
+
+def test_scene_writes_outputs(tmp_path: Path, evidence: scene.RingEvidence,
+                              monkeypatch: pytest.MonkeyPatch) -> None:
+    # keep another scene's ledger rows
+    (tmp_path / "claims.json").write_text(json.dumps([{
+        "id": "rod-x", "section": "s", "claim": "c", "test": "t", "evidence": "e",
+        "verdict": "holds", "scene": "claims", "figure": None, "numbers": {}}]))
+    monkeypatch.setattr(scene, "compute_evidence", lambda progress=None: evidence)
+    messages: list[str] = []
+    result = scene.run(tmp_path, messages.append)
+    names = {p.name for p in result.files}
+    assert {"ring_table.csv", "ring_table.md", "ring_threshold.csv", "ring_threshold.md",
+            "ring.png", "claims.json", "claims.md"} <= names
+    assert result.report.startswith("## Ring")
+    rows = json.loads((tmp_path / "claims.json").read_text())
+    assert {r["id"] for r in rows if r["scene"] == "ring"} == set(result.details["verdicts"])
+    assert any(r["id"] == "rod-x" for r in rows)
+    assert (tmp_path / "ring.png").stat().st_size > 20_000
+    table = pd.read_csv(tmp_path / "ring_table.csv")
+    assert len(table) == len(evidence.table)
+    th = pd.read_csv(tmp_path / "ring_threshold.csv")
+    assert th.loc[th["nu"] == 2.0, "N_integer"].iloc[0] == 3
+    assert math.isinf(th.loc[th["nu"] == 1.0, "N_continuous"].iloc[0])
+    assert messages
+
+
+def test_scene_metadata() -> None:
+    assert scene.NAME == "ring"
+    assert "\n" not in scene.SUMMARY
+    assert scene.__doc__ and "Writes" in scene.__doc__ and "Compares" in scene.__doc__
