@@ -200,6 +200,21 @@ def test_rapid_twist_tends_to_harmonic_mean_ring(nu: float) -> None:
     assert gaps[1] / gaps[2] > 3.0  # at least ~1/N^2 decay
 
 
+@pytest.mark.parametrize(("N", "order"), [(1, 2), (2, 1), (3, 2), (5, 2)])
+def test_small_asymmetry_perturbation_theory(N: int, order: int) -> None:
+    """nu = 1 + d: the twisted stiffness is Abar + Delta (cos 2 Omega ...), Abar = (A1 + A2)/2,
+    Delta = d/2.  The Delta term couples frequency n to 2N - n, so for the n = 2 mode it shifts
+    q at first order only at the resonance N = 2, otherwise at second order (hand analysis):
+    q - q_iso(Abar) = O(d^order)."""
+    errs = []
+    for d in (0.04, 0.02, 0.01):
+        nu = 1 + d
+        errs.append(ring_critical_load(N, nu) - isotropic_ring((1 + nu) / 2, 1 + nu,
+                                                               "hydrostatic"))
+    ratios = [errs[0] / errs[1], errs[1] / errs[2]]
+    assert all(abs(r - 2**order) < 0.15 * 2**order for r in ratios)
+
+
 @pytest.mark.parametrize(("N", "nu"), [(1, 4.0), (2, 2.0), (3, 4.0), (6, 1.5)])
 def test_spectral_convergence(N: int, nu: float) -> None:
     ref = ring_buckling(N, nu, max_frequency=20 * N + 40).load
