@@ -1,0 +1,131 @@
+"""Closed forms of spectral_rod.asymptotics against the characteristic equation (mpmath).
+
+The references are the extended-precision roots of the paper's characteristic equation, never
+the collocation solver and never the formulas under test.
+"""
+
+from __future__ import annotations
+
+import math
+
+import mpmath as mp
+import numpy as np
+import pytest
+
+from spectral_rod.asymptotics import (
+    crossing_closed_form,
+    imaginary_beta1_window,
+    large_twist_coefficients,
+    large_twist_expansion,
+    large_twist_limit,
+    large_twist_wavenumbers,
+)
+from spectral_rod.characteristic import (
+    characteristic_critical_load,
+    family_critical_load,
+    family_crossing,
+)
+
+
+@pytest.mark.parametrize("nu", [1.0, 1.1, 1.5, 3.0, 10.0, 1e3])
+def test_limit_is_harmonic_mean_within_rayleigh_bounds(nu):
+    p_inf = large_twist_limit(nu)
+    assert p_inf == pytest.approx(2 * nu / (1 + nu), rel=1e-15)
+    assert 1.0 <= p_inf <= (1 + nu) / 2 + 1e-15  # harmonic <= arithmetic mean
+    assert 1 / p_inf == pytest.approx(0.5 * (1 + 1 / nu), rel=1e-15)  # averaged compliance
+
+
+def _family_p(twist: float, nu: float, family: str) -> float:
+    return float(family_critical_load(family, twist, nu, dps=30, scan_step=1 / 256).p_star)
+
+
+@pytest.mark.parametrize("nu", [1.5, 4.0])
+@pytest.mark.parametrize("family", ["symmetric", "antisymmetric"])
+def test_expansion_error_decays_like_its_first_neglected_order(nu, family):
+    # Omega = pi/2 + 2 pi j keeps sin(Omega) = 1: the error ratios then measure the order alone
+    twists = [math.pi / 2 + 2 * math.pi * j for j in (8, 16, 32)]
+    for order, expected in ((2, 3), (4, 5)):
+        err = [abs(_family_p(om, nu, family)
+                   - large_twist_expansion(om, nu, order=order, family=family)) for om in twists]
+        slope = np.polyfit(np.log(twists), np.log(err), 1)[0]
+        assert slope == pytest.approx(-expected, abs=0.2), (order, err)
+
+
+def test_expansion_at_moderate_twist_is_accurate_to_its_stated_size():
+    om, nu = 20 * math.pi + 0.7, 1.5
+    exact = float(characteristic_critical_load(om, nu, dps=30).p_star)
+    assert abs(exact - large_twist_expansion(om, nu)) < 50 / om**5
+    assert exact < large_twist_limit(nu)  # approached from below
+    c = large_twist_coefficients(nu)
+    assert c.a2 < 0 and c.b3 > 0
+
+
+def test_p_star_expansion_takes_the_lower_family():
+    om, nu = 30.0, 2.0
+    assert large_twist_expansion(om, nu) == min(
+        large_twist_expansion(om, nu, family=f) for f in ("symmetric", "antisymmetric"))
+
+
+def test_wavenumber_expansion_error_is_fourth_order():
+    nu = 2.0
+    twists = [math.pi / 2 + 2 * math.pi * j for j in (8, 16, 32)]
+    err = []
+    for om in twists:
+        r = characteristic_critical_load(om, nu, dps=30)
+        b1, b2 = float(mp.sqrt(r.x_minus)), float(mp.sqrt(r.x_plus))
+        a1, a2 = large_twist_wavenumbers(om, nu)
+        err.append(max(abs(b1 - a1), abs(b2 - a2)))
+    assert np.polyfit(np.log(twists), np.log(err), 1)[0] < -3.7
+
+
+@pytest.mark.parametrize("nu", [1.1, 1.5, 2.0, 5.0, 10.0])
+def test_beta1_window_ends_are_where_x_minus_vanishes_on_the_critical_curve(nu):
+    w = imaginary_beta1_window(nu)
+    assert 0.5 * math.pi < w.y <= math.pi
+    assert w.omega_a < math.pi < w.omega_b
+    for om, p_closed in ((w.omega_a, w.p_a), (w.omega_b, w.p_b)):
+        r = characteristic_critical_load(om, nu, dps=30)
+        assert float(r.p_star) == pytest.approx(p_closed, abs=1e-13)
+        assert r.family == "symmetric"
+        assert abs(float(r.x_minus)) < 1e-12
+    inside = characteristic_critical_load(0.5 * (w.omega_a + w.omega_b), nu, dps=30)
+    before = characteristic_critical_load(w.omega_a - 1e-3, nu, dps=30)
+    after = characteristic_critical_load(w.omega_b + 1e-3, nu, dps=30)
+    assert inside.x_minus < 0 < before.x_minus and after.x_minus > 0
+
+
+def test_window_degenerates_to_pi_for_isotropic_section():
+    w = imaginary_beta1_window(1.0)
+    assert w.omega_a == pytest.approx(math.pi) and w.omega_b == pytest.approx(math.pi)
+
+
+@pytest.mark.parametrize(("nu", "n"), [(1.1, 2), (1.5, 2), (1.5, 3), (1.5, 12), (5.0, 4),
+                                      (10.0, 2), (10.0, 3)])
+def test_crossing_closed_form_matches_newton_on_the_determinants(nu, n):
+    closed = crossing_closed_form(n, nu)
+    newton = family_crossing(n * math.pi, nu, dps=30)  # verified lowest in both families
+    assert float(newton.twist) == pytest.approx(closed.twist, abs=1e-12)
+    assert float(newton.p_star) == pytest.approx(closed.p_star, abs=1e-12)
+    r = characteristic_critical_load(float(newton.twist), nu, dps=30)
+    assert float(mp.sqrt(r.x_minus)) == pytest.approx((n - 1) * math.pi, abs=1e-9)
+    assert float(mp.sqrt(r.x_plus)) == pytest.approx((n + 1) * math.pi, abs=1e-9)
+
+
+def test_crossing_offset_from_n_pi_shrinks_like_n_cubed():
+    ns = np.arange(10, 41, 5)
+    off = [crossing_closed_form(int(n), 1.5).twist - n * math.pi for n in ns]
+    assert all(o > 0 for o in off)
+    assert np.polyfit(np.log(ns), np.log(off), 1)[0] == pytest.approx(-3.0, abs=0.05)
+
+
+def test_input_validation():
+    with pytest.raises(ValueError):
+        large_twist_expansion(10.0, 1.5, order=1)
+    with pytest.raises(ValueError):
+        large_twist_expansion(0.0, 1.5)
+    with pytest.raises(ValueError):
+        large_twist_expansion(10.0, 1.5, family="even")
+    with pytest.raises(ValueError):
+        crossing_closed_form(1, 1.5)
+    with pytest.raises(ValueError):
+        large_twist_limit(0.5)

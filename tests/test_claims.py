@@ -1,0 +1,194 @@
+"""The claims scene: every verdict of the straight-rod ledger recomputed, with its key numbers
+checked against references that do not come from the number under test."""
+
+from __future__ import annotations
+
+import copy
+import itertools
+import json
+import math
+
+import mpmath as mp
+import pytest
+
+from reproduce import claims as sc
+from reproduce.ledger import Claim, update_ledger
+from spectral_rod.asymptotics import crossing_closed_form, large_twist_limit
+from spectral_rod.characteristic import characteristic_critical_load
+
+
+@pytest.fixture(scope="module")
+def ev():
+    return sc.compute_evidence()
+
+
+def _by_id(claims):
+    return {c.id: c for c in claims}
+
+
+def test_every_claim_has_a_verdict_and_the_expected_one(ev):
+    got = {c.id: c.verdict for c in sc.evaluate_claims(ev)}
+    assert got == {
+        "rod-zero-twist": "holds",
+        "rod-isotropic": "holds",
+        "rod-stabilising": "holds",
+        "rod-twist-raises-load": "holds approximately",
+        "rod-first-maximum": "holds approximately",
+        "rod-further-maxima": "holds approximately",
+        "rod-limit": "holds",
+        "rod-beta-real": "fails",
+        "rod-beta-difference": "holds approximately",
+        "rod-resonance": "holds",
+        "rod-three-dimensional": "holds",
+    }
+
+
+def test_two_solvers_agree_on_every_decisive_load(ev):
+    assert sc.solver_agreement(ev) < 1e-11
+
+
+def test_first_maximum_numbers(ev):
+    c = sc.claim_first_maximum(ev)
+    for nu, x in c.numbers["twist_over_pi"].items():
+        # closed form (crossing theorem) is an independent third determination
+        assert x == pytest.approx(crossing_closed_form(2, nu).twist / math.pi, abs=1e-12)
+        assert 2.0 < x < 2.0 + 2 * sc.NEAR
+        assert c.numbers["kind"][nu] == "corner maximum"
+    assert c.numbers["twist_over_pi"][1.5] == pytest.approx(2.000826747, abs=1e-9)
+    assert c.numbers["local_not_global"]
+    # the maximum is below the large-twist limit, which is itself never exceeded on the grid
+    for nu in sc.NUS:
+        assert ev.p[nu].max() < large_twist_limit(nu)
+
+
+def test_first_maximum_verdict_depends_on_the_corner_and_location(ev):
+    broken = copy.deepcopy(ev)
+    broken.maxima[0].kind = "corner"  # e.g. if the crossing were on a monotone stretch
+    assert sc.claim_first_maximum(broken).verdict == "fails"
+    moved = copy.deepcopy(ev)
+    for m in moved.maxima:
+        if m.n == 2:
+            m.twist_mp += 0.1 * math.pi
+    assert sc.claim_first_maximum(moved).verdict == "fails"
+
+
+def test_further_maxima_numbers(ev):
+    c = sc.claim_further_maxima(ev)
+    assert c.numbers["offset_exponent"] == pytest.approx(-3.0, abs=0.1)
+    assert not c.numbers["maximum_near_pi"]
+    assert c.numbers["all_corners"] and c.numbers["heights_rise"]
+    # every maximum n >= 2 lies within 1 % of n pi, above it
+    for n, x in c.numbers["twist_over_pi"].items():
+        assert 0 < x - n < 1e-2 * n
+
+
+def test_no_maximum_near_pi_by_mpmath(ev):
+    # independent of the collocation grid: p* from the characteristic equation rises through pi
+    for nu in (1.1, 10.0):
+        p = [float(characteristic_critical_load(om, nu, dps=20).p_star)
+             for om in (0.8 * math.pi, 0.95 * math.pi, math.pi, 1.05 * math.pi, 1.2 * math.pi)]
+        assert all(b > a for a, b in itertools.pairwise(p))
+
+
+def test_limit_claim_numbers(ev):
+    c = sc.claim_limit(ev)
+    lo, hi = c.numbers["observed_order_p_minus_limit"]
+    # between -3 (the |sin|/Omega^3 ripple dominates while Omega < 4/(delta p_inf), nu near 1)
+    # and -2 (the smooth Omega^-2 deficit)
+    assert -3.1 < lo <= hi < -1.8
+    lo4, hi4 = c.numbers["observed_order_expansion_error"]
+    assert -5.4 < lo4 <= hi4 < -4.6
+    for nu, p_inf in c.numbers["p_inf"].items():
+        assert p_inf == pytest.approx(2 * nu / (1 + nu))
+    # every large-twist p* lies below its limit, by the two leading terms (sin = 1 here)
+    for r in ev.limit:
+        gap = r["limit"] - r["p_mp"]
+        lead = (abs(c.numbers["a2"][r["nu"]]) / r["twist"] ** 2
+                + c.numbers["b3"][r["nu"]] / r["twist"] ** 3)
+        assert gap > 0
+        assert gap == pytest.approx(lead, rel=20 / r["twist"] ** 2)
+
+
+def test_beta_real_fails_in_the_window(ev):
+    c = sc.claim_wavenumbers_real(ev)
+    assert c.verdict == "fails"
+    assert c.numbers["max_closed_form_dev"] < 1e-12
+    # independent location of the window's upper end: X_- changes sign along the mpmath curve
+    nu = 1.5
+    w = next(r for r in c.numbers["windows"] if r["nu"] == nu)
+
+    def xm(om):
+        return characteristic_critical_load(float(om), nu, dps=30).x_minus
+
+    with mp.workdps(20):
+        end = mp.findroot(xm, (w["omega_b"] - 0.05, w["omega_b"] + 0.05), solver="anderson")
+    assert float(end) == pytest.approx(w["omega_b"], abs=1e-10)
+    flipped = copy.deepcopy(ev)
+    for r in flipped.windows:
+        r["x_minus_mid_mp"] = abs(r["x_minus_mid_mp"])
+    assert sc.claim_wavenumbers_real(flipped).verdict == "holds"
+
+
+def test_beta_difference_is_exactly_two_pi_at_the_maxima(ev):
+    c = sc.claim_beta_difference(ev)
+    assert c.numbers["corner_maxima_at_crossings"]
+    assert c.numbers["resonance_gap_at_maxima"] < 1e-20
+    assert c.numbers["gap_to_2pi_at_large_twist"] < 2e-5
+    for nu, x in c.numbers["omega_b_over_pi"].items():
+        assert x == pytest.approx(2 * math.sqrt(nu / (3 * nu + 1)), rel=1e-14)
+
+
+def test_resonance_orders(ev):
+    c = sc.claim_resonance(ev)
+    assert all(-3.2 < f < -2.8 for f in c.numbers["decay_order"])
+    assert all(f < -3.7 for f in c.numbers["decay_order_after_prediction"])
+
+
+def test_three_dimensional_mode(ev):
+    c = sc.claim_three_dimensional(ev)
+    assert c.numbers["min_non_planarity"] > 1e-3
+    assert c.numbers["solver_shape_mismatch"] < 1e-10
+    assert c.numbers["non_planarity_decay_order"] == pytest.approx(-2.0, abs=0.3)
+    planar = copy.deepcopy(ev)
+    for m in planar.modes[1:]:
+        m["planarity_mp"] = 0.0
+    assert sc.claim_three_dimensional(planar).verdict == "fails"
+
+
+def test_isotropic_and_zero_twist_and_stabilising(ev):
+    assert ev.isotropic["max_dev_coll"] < 1e-12
+    assert sc.claim_zero_twist(ev).numbers["max_det_mp"] < 1e-25
+    c = sc.claim_stabilising(ev)
+    assert c.numbers["min_excess"] > 0 and c.numbers["min_step_in_nu"] > 0
+    lowered = copy.deepcopy(ev)
+    lowered.p[10.0] = lowered.p[10.0] * 0 + 1.0  # a curve below its neighbour
+    assert sc.claim_stabilising(lowered).verdict == "fails"
+
+
+def test_twist_raises_load_is_only_a_trend(ev):
+    c = sc.claim_monotone_growth(ev)
+    assert all(d > 1e-4 for d in c.numbers["drop_after_first_max"].values())
+    assert all(0.2 < f < 0.5 for f in c.numbers["fraction_decreasing"].values())
+
+
+def test_ledger_keeps_other_scenes_rows_and_has_the_keys(tmp_path, ev):
+    ring = Claim(id="ring-x", section="s", claim="c", test="t", evidence="e", verdict="holds",
+                 scene="ring")
+    update_ledger(tmp_path, "ring", [ring])
+    update_ledger(tmp_path, "claims", sc.evaluate_claims(ev))
+    rows = json.loads((tmp_path / "claims.json").read_text())
+    assert {r["id"] for r in rows} >= {"ring-x", "rod-first-maximum"}
+    for r in rows:
+        assert {"id", "section", "claim", "test", "evidence", "verdict"} <= r.keys()
+        assert r["verdict"] in ("holds", "holds approximately", "fails")
+
+
+def test_scene_writes_ledger_figures_and_report(tmp_path, ev, monkeypatch):
+    monkeypatch.setattr(sc, "compute_evidence", lambda progress=None: ev)
+    out = sc.run(tmp_path, lambda _m: None)
+    names = {p.name for p in out.files}
+    assert {"claims.json", "claims.md", "claims_load.png", "claims_wavenumbers.png",
+            "claims_mode.png"} <= names
+    assert out.report.startswith("## Claims")
+    assert all((tmp_path / n).stat().st_size > 0 for n in names)
+    assert out.details["verdicts"]["rod-beta-real"] == "fails"

@@ -1,0 +1,130 @@
+"""Collocation (spectral_rod.critical_load) against the paper's characteristic equation (mpmath),
+and the characteristic-equation additions: per-family roots, crossings, the paper's 4x4
+determinant, the closed-form mode."""
+
+from __future__ import annotations
+
+import itertools
+import math
+
+import mpmath as mp
+import numpy as np
+import pytest
+
+from spectral_rod.characteristic import (
+    boundary_determinant_4x4,
+    characteristic_critical_load,
+    characteristic_mode,
+    determinant,
+    family_critical_load,
+    family_crossing,
+    family_slope,
+)
+from spectral_rod.critical import critical_load
+from spectral_rod.straight_rod import buckling_mode, solve_family
+
+#: Omega(L) in [0, 40] (with the special twists pi, 2 pi, 3 pi and the window around pi) and
+#: nu in [1, 10]
+TWISTS = [0.0, 0.4, 1.5, 2.7, math.pi, 3.3, 5.0, 2 * math.pi, 7.5, 3 * math.pi, 12.0, 17.3,
+          23.0, 29.9, 35.0, 40.0]
+NUS = [1.0, 1.05, 1.5, 2.0, 3.7, 6.0, 10.0]
+
+
+def test_solvers_agree_to_1e12_on_the_grid(reference):
+    p = critical_load(np.array(TWISTS)[:, None], np.array(NUS)[None, :])
+    for (i, om), (j, nu) in itertools.product(enumerate(TWISTS), enumerate(NUS)):
+        ref = reference(float(om), float(nu))
+        assert abs(p[i, j] - ref) <= 1e-12 * ref, (om, nu, p[i, j], ref)
+
+
+@pytest.mark.slow
+def test_solvers_agree_to_1e12_on_a_dense_random_grid(reference):
+    rng = np.random.default_rng(3)
+    om = rng.uniform(0, 40, 300)
+    nu = np.exp(rng.uniform(0, math.log(10), 300))
+    p = critical_load(om, nu)
+    for k in range(om.size):
+        ref = reference(float(om[k]), float(nu[k]))
+        assert abs(p[k] - ref) <= 1e-12 * ref, (om[k], nu[k])
+
+
+@pytest.mark.parametrize(("twist", "nu"), [(0.7, 1.5), (2.9, 2.0), (6.0, 10.0), (25.0, 1.3),
+                                           (3.0, 1.5)])
+def test_critical_load_is_the_lower_family_root(twist, nu):
+    both = [family_critical_load(f, twist, nu) for f in ("symmetric", "antisymmetric")]
+    low = min(both, key=lambda r: r.p_star)
+    ref = characteristic_critical_load(twist, nu)
+    assert abs(low.p_star - ref.p_star) < mp.mpf("1e-30")
+    assert low.family == ref.family
+    # each family's root is its lowest: a 16x finer scan finds the same one
+    for r in both:
+        fine = family_critical_load(r.family, twist, nu, scan_step=1 / 2048)
+        assert abs(fine.p_star - r.p_star) < mp.mpf("1e-30")
+        assert 1 <= r.p_star <= nu  # Rayleigh bounds of one family
+
+
+@pytest.mark.parametrize(("twist", "nu"), [(2.0, 1.5), (9.0, 4.0), (30.0, 1.2)])
+def test_family_roots_agree_with_collocation_families(twist, nu):
+    for fam in ("symmetric", "antisymmetric"):
+        lam, _, _ = solve_family(64, fam, np.array([twist]), np.array([nu]))
+        ref = float(family_critical_load(fam, twist, nu).p_star)
+        assert lam[0] / math.pi**2 == pytest.approx(ref, rel=1e-12)
+
+
+@pytest.mark.parametrize(("lam", "om", "nu"), [(12, 3, 1.5), (11, 2.5, 2), (20, 7, 3),
+                                               (10.5, 3.0, 1.5), (15, 0.5, 4), (40, 0.1, 9)])
+def test_paper_4x4_determinant_factorises(lam, om, nu):
+    with mp.workdps(30):
+        lam, om, nu = mp.mpf(lam), mp.mpf(om), mp.mpf(nu)
+        d4 = boundary_determinant_4x4(lam, om, nu)
+        prod = determinant("symmetric", lam, om, nu) * determinant("antisymmetric", lam, om, nu)
+        assert abs(d4 - 16 * om**2 * prod) < mp.mpf("1e-20") * max(1, abs(d4))
+
+
+@pytest.mark.parametrize(("twist", "nu"), [(1.0, 1.5), (3.0, 1.5), (8.0, 3.0), (20.0, 10.0)])
+def test_paper_4x4_determinant_vanishes_at_the_critical_load(twist, nu):
+    with mp.workdps(40):
+        p = characteristic_critical_load(twist, nu).p_star
+        om, nuv = mp.mpf(twist), mp.mpf(nu)
+
+        def d4(q):
+            return boundary_determinant_4x4(mp.pi**2 * q, om, nuv)
+
+        root = mp.findroot(d4, p + mp.mpf("1e-6"))
+        assert abs(root - p) < mp.mpf("1e-25")
+        assert abs(d4(p + mp.mpf("1e-3"))) > mp.mpf("1e-10")
+
+
+def test_crossing_slopes_agree_with_collocation_differences():
+    c = family_crossing(2 * math.pi, 1.5)
+    assert c.kind == "corner maximum" and c.left == "symmetric" and c.right == "antisymmetric"
+    h = 1e-5
+    for fam, slope in c.slopes.items():
+        lam = [solve_family(48, fam, np.array([float(c.twist) + s]), np.array([1.5]))[0][0]
+               for s in (h, -h)]
+        fd = (lam[0] - lam[1]) / (2 * h) / math.pi**2
+        assert float(slope) == pytest.approx(fd, rel=1e-6)
+    with mp.workdps(30):
+        assert family_slope("symmetric", c.p_star, c.twist, mp.mpf(1.5)) > 0
+
+
+@pytest.mark.parametrize(("twist", "nu"), [(5.0, 1.5), (3.0, 1.5), (9.0, 10.0), (20.0, 2.0)])
+def test_closed_form_mode_matches_collocation_mode(twist, nu):
+    root = characteristic_critical_load(twist, nu)
+    cm = characteristic_mode(root, twist, nu, points=101)
+    col = buckling_mode(twist, nu, points=101)
+    assert col.family == root.family
+    xc = np.column_stack([col.x1, col.x2])
+    xm = np.column_stack([cm.x1, cm.x2])
+    scale = np.sum(xc * xm) / np.sum(xc * xc)
+    assert np.max(np.abs(xc * scale - xm)) < 1e-10
+    # hinged ends
+    assert abs(cm.x1[0]) + abs(cm.x2[0]) + abs(cm.x1[-1]) + abs(cm.x2[-1]) < 1e-12
+
+
+def test_closed_form_mode_needs_twist():
+    root = characteristic_critical_load(0.0, 1.5)
+    with pytest.raises(ValueError):
+        characteristic_mode(root, 0.0, 1.5)
+    with pytest.raises(ValueError):
+        family_critical_load("even", 1.0, 1.5)
