@@ -191,9 +191,9 @@ def assemble(N: int, nu: float, e_ratio: float, load: str, freqs: list[int],
     Q = _quantities(basis, s)
     A1, A2, A3 = stiffnesses(nu, e_ratio)
     om = N * s
-    cv, sv = np.sin(om), np.cos(om)  # k.v0 = sin(Om) k_r + cos(Om) k_z
-    b_v = cv[:, None] * Q["k_r"] + sv[:, None] * Q["k_z"]
-    b_u = -np.cos(om)[:, None] * Q["k_r"] + np.sin(om)[:, None] * Q["k_z"]
+    sin_om, cos_om = np.sin(om)[:, None], np.cos(om)[:, None]
+    b_v = sin_om * Q["k_r"] + cos_om * Q["k_z"]  # k.v0 (v0 = sin Om e_r + cos Om e_z)
+    b_u = -cos_om * Q["k_r"] + sin_om * Q["k_z"]  # k.u0 (u0 = -cos Om e_r + sin Om e_z)
     K = w * (_gram(b_v, A1) + _gram(b_u, A2) + _gram(Q["k_phi"], A3))
     G = w * (_gram(Q["theta_r"]) + _gram(Q["theta_z"]))
     if load == "hydrostatic":
@@ -211,8 +211,10 @@ def rigid_body_constraints(basis: _Basis) -> NDArray[np.float64]:
     frequencies 0 and 1 enter, so C is zero for families without them."""
     if not any(f <= 1 for _, f, _ in basis.labels):
         return np.zeros((6, basis.size))
-    s = np.arange(16) * (2.0 * np.pi / 16)
-    w = 2.0 * np.pi / 16
+    # P points integrate frequencies < P exactly; the integrands reach max frequency + 1
+    P = 2 * max(f for _, f, _ in basis.labels) + 4
+    s = np.arange(P) * (2.0 * np.pi / P)
+    w = 2.0 * np.pi / P
     Q = _quantities(basis, s)
     er = np.stack([np.cos(s), np.sin(s), np.zeros_like(s)], axis=1)
     ephi = np.stack([-np.sin(s), np.cos(s), np.zeros_like(s)], axis=1)
