@@ -44,6 +44,12 @@ def main(argv: list[str] | None = None) -> int:
     except OSError as exc:
         print(f"python -m reproduce: error: {exc}", file=sys.stderr)
         return 2
+    except KeyboardInterrupt:
+        # every output is written to a temporary file and renamed (spectral_rod.io), so files
+        # from before the interrupt are whole and no partial file is left behind
+        print("python -m reproduce: interrupted; previous outputs left intact, no partial "
+              "files written", file=sys.stderr)
+        return 130
     log_stderr(f"all done in {time.perf_counter() - t0:.1f} s; outputs in {args.out}")
     return 0
 

@@ -25,9 +25,10 @@ X = (Omega - kappa)^2 gives the same to this order), i.e.
 The O(Omega^-3) remainder is oscillatory (boundary layers at the hinges); to first order in
 nu - 1 it is -(nu - 1) pi^2 |sin Omega| / (2 Omega^3) (from p* - 1 = (nu - 1)(1/2 - |J|),
 J = pi^2 sin Omega / (2 Omega (pi^2 - Omega^2))). Measured against the mpmath reference the
-relative error of the two-term formula is ~5 |sin Omega| / Omega^3 at most (nu up to 1e4):
-1e-4 at Omega(L) = 30, 5e-9 at 1000, 5e-12 at 1e4 -- never better than the 1e-10 target within
-|Omega(L)| <= 1000, so it is used only as the centre of the root bracket, never as the answer.
+relative error of the two-term formula is pi^2 (nu-1)/(nu+1) |sin Omega| / Omega^3 (+O(Omega^-4))
+(nu up to 1e4; tests/test_extremes.py): up to 4e-7 at Omega(L) = 300, 1e-8 at 1000, 1e-11 at
+1e4 -- never better than the 1e-10 target within |Omega(L)| <= 1000, so it is not used for
+values (critical_load uses the characteristic equation there).
 """
 
 from __future__ import annotations

@@ -1,0 +1,112 @@
+"""Issue 6: p* at the extremes of the (Omega(L), nu) plane against the mpmath reference."""
+
+from __future__ import annotations
+
+import math
+import warnings
+
+import numpy as np
+import pytest
+
+from spectral_rod.characteristic import characteristic_critical_load
+from spectral_rod.critical import TWIST_ROUTE, critical_load
+from spectral_rod.large_twist import (
+    characteristic_double,
+    large_twist_asymptote,
+    large_twist_limit,
+)
+from spectral_rod.straight_rod import ConvergenceWarning, collocation_critical_load
+
+
+def ref(twist: float, nu: float, dps: int = 40):
+    return characteristic_critical_load(twist, nu, dps=dps)
+
+
+TWISTS_ANY = (0.1, 1.0, math.pi, 2 * math.pi, 7.0, 20.0, 45.0, 60.0, 200.0)
+
+
+@pytest.mark.parametrize("e", [1e-12, 1e-9, 1e-6, 1e-3])
+def test_near_degenerate_modes(e):
+    # nu -> 1: double eigenvalue, non-normal collocation matrix; still 1e-12 relative
+    nus = np.full(len(TWISTS_ANY), 1 + e)
+    got = critical_load(np.asarray(TWISTS_ANY), nus)
+    for om, p in zip(TWISTS_ANY, got, strict=True):
+        r = float(ref(om, 1 + e).p_star)
+        assert abs(p / r - 1) <= 1e-12, (om, e, p, r)
+
+
+@pytest.mark.parametrize("twist", [50.0, 100.0, 300.0, 1000.0, 3000.0, 1e4])
+def test_large_twist(twist):
+    nus = (1 + 1e-9, 1.5, 10.0, 1e4)
+    tol = 1e-12 if twist <= 1000 else 1e-10
+    res = critical_load(np.full(4, twist), np.asarray(nus), tol=tol, full_output=True)
+    assert np.all(res.n == 0) and np.all(res.converged)  # routed to the characteristic equation
+    for p, nu in zip(res.p_star, nus, strict=True):
+        r = float(ref(twist, nu, dps=30).p_star)
+        assert abs(p / r - 1) <= (1e-12 if twist <= 1000 else 1e-10), (twist, nu)
+
+
+def test_routes_agree_where_both_work():
+    # two independent methods (collocation, double-precision characteristic equation)
+    for om in (30.0, 50.0, 100.0):
+        for nu in (1.2, 50.0):
+            a = float(collocation_critical_load(om, nu))
+            b = characteristic_double(om, nu)[0]
+            assert abs(a / b - 1) <= 5e-13
+    assert TWIST_ROUTE == 50.0
+
+
+@pytest.mark.parametrize("nu", [1e2, 1e3, 1e4])
+def test_strong_anisotropy(nu):
+    twists = np.array([1e-3, 0.5, 3.0, 10.0, 40.0, 120.0])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # no overflow or convergence warnings
+        res = critical_load(twists, np.full(twists.size, nu), full_output=True)
+    for om, p, fam in zip(twists, res.p_star, res.family, strict=True):
+        r = ref(float(om), nu)
+        assert np.isfinite(p)
+        assert abs(p / float(r.p_star) - 1) <= 1e-12, (om, nu)
+        assert fam == r.family  # no spurious mode chosen
+        assert 1.0 <= p < 2.0 * nu / (1.0 + nu)
+
+
+def test_fixed_degree_is_finite_and_roundoff_stays_small():
+    for om, nu in [(1.0, 1.5), (30.0, 1 + 1e-9), (100.0, 1e4)]:
+        r = float(ref(om, nu).p_star)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", ConvergenceWarning)
+            for n in (8, 16, 64, 128, 256, 512):
+                p = critical_load(om, nu, n=n)
+                assert np.isfinite(p)
+                if n >= 128 and om <= 30:
+                    assert abs(p / r - 1) <= 1e-13, (om, nu, n)
+                if n >= 256:
+                    assert abs(p / r - 1) <= 1e-12, (om, nu, n)
+
+
+def test_negative_twist_is_even():
+    for om, nu in [(0.7, 1.3), (12.0, 2.0), (500.0, 1.5)]:
+        assert critical_load(-om, nu) == critical_load(om, nu)
+
+
+def test_unreachable_tolerance_at_large_twist_warns():
+    with pytest.warns(ConvergenceWarning, match="large-twist"):
+        res = critical_load(1e4, 1.5, tol=1e-14, full_output=True)
+    assert not bool(res.converged)
+
+
+def test_asymptote_limit_and_leading_correction():
+    for nu in (1.5, 10.0, 1e4):
+        assert large_twist_limit(nu) == pytest.approx(2 * nu / (1 + nu), rel=1e-15)
+        for om in (300.0, 1000.0, 1e4):
+            r = float(ref(om, nu, dps=30).p_star)
+            p_inf = large_twist_limit(nu)
+            asym = large_twist_asymptote(om, nu)
+            # remainder is O(Omega^-3) and oscillatory (|sin Omega| ripple)
+            b3 = math.pi**2 * (nu - 1) / (nu + 1)  # ripple amplitude (relative)
+            assert abs(asym - r) / r <= 1.05 * b3 * abs(math.sin(om)) / om**3 + 50 / om**4 \
+                + 1e-14, (om, nu)
+            # the correction is the leading one: it removes the Omega^-2 error of the limit
+            assert abs(p_inf - r) / r > 0.5 * math.pi**2 * ((nu - 1) / (nu + 1)) ** 2 / (
+                4 * om**2)
+            assert r < p_inf

@@ -1,0 +1,84 @@
+"""critical_load_increment: p* - 1 to full relative accuracy (issue 6, extreme 1).
+
+References are independent of the code under test: the paper's characteristic equation in
+mpmath at 60 digits, and closed-form leading terms of the two perturbation expansions.
+"""
+
+from __future__ import annotations
+
+import math
+
+import mpmath as mp
+import numpy as np
+import pytest
+
+from spectral_rod.characteristic import characteristic_critical_load
+from spectral_rod.increment import critical_load_increment
+
+NU_MINUS_1 = (1e-8, 1e-6, 1e-4, 1e-2, 0.5, 9.0, 9999.0)
+TWISTS = (1e-6, 1e-4, 1e-2, 1.0, 3.0, 10.0, 30.0)
+
+
+def ref_increment(twist: float, nu: float, dps: int = 60) -> float:
+    """p* - 1 from the characteristic equation at `dps` digits (subtraction done in mpmath)."""
+    return float(characteristic_critical_load(twist, nu, dps=dps).p_star - 1)
+
+
+@pytest.mark.parametrize("twist", TWISTS)
+def test_relative_accuracy_on_the_grid(twist):
+    for e in NU_MINUS_1:
+        ref = ref_increment(twist, 1 + e)
+        got = critical_load_increment(twist, 1 + e)
+        assert abs(got / ref - 1) <= 1e-9, (twist, e, got, ref)
+
+
+def test_corner_matches_double_expansion():
+    # nu -> 1, Omega -> 0: p* - 1 = (nu - 1) Omega^2 (pi^2 - 6)/(12 pi^2) (1 + O(nu-1, Omega^2))
+    e, om = 1e-8, 1e-6
+    lead = e * om**2 * (math.pi**2 - 6) / (12 * math.pi**2)
+    assert abs(critical_load_increment(om, 1 + e) / lead - 1) < 1e-7
+    assert lead == pytest.approx(3.2673e-22, rel=1e-4)
+
+
+def test_small_twist_matches_second_order_perturbation():
+    # Omega -> 0 at fixed nu: p* - 1 = Omega^2 l2 / pi^2 with (k = pi/sqrt(nu))
+    # l2 = 1 - 4 pi^2/(pi^2 - k^2) + 16 pi^2 k cot(k/2)/(pi^2 - k^2)^2 (body-frame perturbation)
+    with mp.workdps(40):
+        for nu in (1.5, 3.0, 1e4):
+            k = mp.pi / mp.sqrt(nu)
+            pi2 = mp.pi**2
+            l2 = 1 - 4 * pi2 / (pi2 - k**2) + 16 * pi2 * k * mp.cot(k / 2) / (pi2 - k**2) ** 2
+            om = 1e-5
+            lead = float(om**2 * l2 / pi2)
+            assert abs(critical_load_increment(om, nu) / lead - 1) < 1e-8
+
+
+def test_first_order_in_nu_minus_one_at_large_twist():
+    # p* - 1 = (nu - 1)(1/2 - |J|) + O((nu-1)^2), J = pi^2 sin(Om)/(2 Om (pi^2 - Om^2))
+    e = 1e-7
+    for om in (0.5, 2.0, 7.0, 40.0):
+        j = math.pi**2 * math.sin(om) / (2 * om * (math.pi**2 - om**2))
+        lead = e * (0.5 - abs(j))
+        assert abs(critical_load_increment(om, 1 + e) / lead - 1) < 1e-5
+
+
+def test_exact_zeros_evenness_and_broadcasting():
+    assert critical_load_increment(0.0, 2.0) == 0.0
+    assert critical_load_increment(5.0, 1.0) == 0.0
+    assert critical_load_increment(-0.3, 1.2) == critical_load_increment(0.3, 1.2)
+    out = critical_load_increment(np.array([[1e-3], [2.0]]), np.array([1 + 1e-6, 1.5]))
+    assert out.shape == (2, 2)
+    assert np.all(out > 0)
+
+
+def test_large_twist_small_anisotropy_uses_the_increment_formulation():
+    # p* - 1 ~ 5e-5 < 1e-3: computed directly, not as critical_load - 1
+    ref = ref_increment(100.0, 1 + 1e-4, dps=50)
+    assert abs(critical_load_increment(100.0, 1 + 1e-4) / ref - 1) <= 1e-9
+
+
+@pytest.mark.slow
+def test_increment_at_twist_1000():
+    for e in (1e-8, 1e-4):
+        ref = ref_increment(1000.0, 1 + e, dps=50)
+        assert abs(critical_load_increment(1000.0, 1 + e) / ref - 1) <= 1e-9
