@@ -54,7 +54,8 @@ def test_isotropic_section_is_euler(om):
 @SETTINGS
 @given(twists, st.floats(min_value=1.0, max_value=1e4))
 def test_at_least_euler(om, nu):
-    assert _quiet(critical_load, om, nu) >= 1.0 - 1e-14
+    tol = max(1e-14, characteristic_error_estimate(np.array(om)))  # accuracy of the route
+    assert _quiet(critical_load, om, nu) >= 1.0 - tol
 
 
 @SETTINGS
