@@ -46,15 +46,15 @@ def test_even_in_twist(om, nu):
 @SETTINGS
 @given(twists)
 def test_isotropic_section_is_euler(om):
-    # accuracy of the route: ~1e-13 (collocation), eps (8 + Omega/2) (characteristic equation)
-    tol = max(1e-13, characteristic_error_estimate(np.array(om)))
+    # accuracy target 1e-12 (issue 6); eps (8 + Omega/2) on the characteristic route
+    tol = max(1e-12, characteristic_error_estimate(np.array(om)))
     assert abs(_quiet(critical_load, om, 1.0) - 1.0) <= tol
 
 
 @SETTINGS
 @given(twists, st.floats(min_value=1.0, max_value=1e4))
 def test_at_least_euler(om, nu):
-    tol = max(1e-14, characteristic_error_estimate(np.array(om)))  # accuracy of the route
+    tol = max(1e-12, characteristic_error_estimate(np.array(om)))  # accuracy of the route
     assert _quiet(critical_load, om, nu) >= 1.0 - tol
 
 
@@ -95,4 +95,4 @@ def test_below_large_twist_limit_at_large_twist(om, nu):
 def test_properties_hold_at_grid_points_too():
     om = np.array([0.0, 1e-3, 3.0, 7.0, 100.0])
     p = critical_load(om, 1.5)
-    assert p[0] == 1.0 and np.all(np.diff(p[:3]) > 0)
+    assert abs(p[0] - 1.0) <= 1e-12 and np.all(np.diff(p[1:4]) > 0)
