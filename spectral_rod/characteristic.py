@@ -44,6 +44,18 @@ The Rayleigh quotient gives 1 <= p* <= (1 + nu)/2. We scan both determinants for
 on a grid in p from 1 - 1e-9 upward (step ``scan_step``) and take the first bracket; the root in
 it is refined by bisection-safe Anderson iteration in mpmath at ``dps`` digits. A root exactly at
 p = 1 (nu = 1 or Omega = 0) is returned in closed form.
+
+Further tools (used by the claims scene)
+----------------------------------------
+* :func:`family_critical_load` -- the lowest root of one family (bounds 1 <= p <= nu);
+* :func:`family_crossing` -- where the two families' lowest roots coincide (2-D Newton on
+  D_sym = D_anti = 0, verified lowest by the scans): the maxima of p*(Omega), which are corners;
+  at a crossing beta_1 L, beta_2 L are both odd or both even multiples of pi (proof and closed
+  form in :mod:`spectral_rod.asymptotics`);
+* :func:`family_slope` -- dp/dOmega along one family's root curve;
+* :func:`boundary_determinant_4x4` -- the paper's 4x4 boundary determinant on s in [0, 1],
+  literally; it equals 16 Omega^2 D_sym D_anti;
+* :func:`characteristic_mode` -- the buckling mode and centreline in closed form.
 """
 
 from __future__ import annotations
