@@ -80,6 +80,8 @@ SUBSPACES = {"all": FIELDS, "in-plane": ("y_phi",), "out-of-plane": ("y_z", "alp
 #: A mode is called in-plane / out-of-plane if its in-plane share of the load work is within
 #: this distance of 1 / 0.
 KIND_TOL = 1.0e-8
+#: LAPACK driver for the generalised symmetric eigenproblem.
+EIGH_DRIVER = "gv"
 
 
 class RingConvergenceError(RuntimeError):
@@ -138,9 +140,11 @@ def _trig_derivatives(freq: NDArray[np.float64], shift: NDArray[np.float64],
                       s: NDArray[np.float64], order: int) -> list[NDArray[np.float64]]:
     """[phi, phi', ..., phi^(order)] (each len(s) x len(freq)) for the basis functions
     phi_j(s) = cos(f_j s - shift_j), shift 0 for cos and pi/2 for sin:
-    phi^(k) = f^k cos(f s - shift + k pi/2)."""
+    phi^(k) = f^k cos(f s - shift + k pi/2), i.e. the cycle cos, -sin, -cos, sin."""
     phase = s[:, None] * freq[None, :] - shift[None, :]
-    return [freq[None, :] ** k * np.cos(phase + k * (np.pi / 2)) for k in range(order + 1)]
+    c, sn = np.cos(phase), np.sin(phase)
+    cycle = (c, -sn, -c, sn)
+    return [freq[None, :] ** k * cycle[k % 4] for k in range(order + 1)]
 
 
 def _quantities(basis: _Basis, s: NDArray[np.float64]) -> dict[str, NDArray[np.float64]]:
@@ -276,31 +280,82 @@ class FamilySolution:
         return max(share, key=lambda f: share[f])
 
 
-def solve_family(N: int, nu: float, e_ratio: float, load: str, freqs: list[int],
-                 fields: tuple[str, ...] = FIELDS) -> FamilySolution:
-    """Smallest positive q of G x = (1/q) K x on the constraint subspace of one family."""
+@dataclass(frozen=True)
+class _Prepared:
+    """One family reduced to the constraint subspace and Jacobi-scaled."""
+
+    K: NDArray[np.float64]
+    G: NDArray[np.float64]
+    labels: list[tuple[str, int, str]]
+    Z: NDArray[np.float64]
+    d: NDArray[np.float64]
+    Ks: NDArray[np.float64]
+    Gs: NDArray[np.float64]
+    rank: int
+
+
+def _prepare(N: int, nu: float, e_ratio: float, load: str, freqs: list[int],
+             fields: tuple[str, ...]) -> _Prepared:
     K, G, basis = assemble(N, nu, e_ratio, load, freqs, fields)
     C = rigid_body_constraints(basis)
     if C.any():
         Z = _null_space(C, basis.size)
         Kz = np.einsum("ia,ib->ab", Z, np.einsum("ij,jb->ib", K, Z))
         Gz = np.einsum("ia,ib->ab", Z, np.einsum("ij,jb->ib", G, Z))
+        rank = int(np.linalg.matrix_rank(C))
     else:  # no frequency 0 or 1 in this family: nothing to constrain
-        Z, Kz, Gz = np.eye(basis.size), K, G
-    rank = int(np.linalg.matrix_rank(C)) if C.any() else 0
-    if Z.shape[1] == 0:  # everything here is a rigid motion: no buckling mode
-        return FamilySolution(math.inf, np.zeros(basis.size), basis.labels, math.inf, rank, K, G)
-    d = 1.0 / np.sqrt(np.diag(Kz))
-    Kz, Gz = Kz * d[:, None] * d[None, :], Gz * d[:, None] * d[None, :]
-    try:
-        mu, vec = scipy.linalg.eigh(Gz, Kz)
-    except np.linalg.LinAlgError as exc:  # K not positive definite: energy argument violated
-        raise RuntimeError("bending/torsion stiffness is not positive definite on the "
-                           "constrained subspace") from exc
-    top = int(np.argmax(mu))
-    q = 1.0 / mu[top] if mu[top] > 0 else math.inf
-    x = Z @ (d * vec[:, top])
-    return FamilySolution(q, x, basis.labels, float(mu.min()), rank, K, G)
+        Z, Kz, Gz, rank = np.eye(basis.size), K, G, 0
+    d = 1.0 / np.sqrt(np.diag(Kz)) if Z.shape[1] else np.zeros(0)
+    return _Prepared(K, G, basis.labels, Z, d, Kz * d[:, None] * d[None, :],
+                     Gz * d[:, None] * d[None, :], rank)
+
+
+def _batched_eigh(Ks: NDArray[np.float64], Gs: NDArray[np.float64]
+                  ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """G y = mu K y for a stack of symmetric pairs with K positive definite (LAPACK sygv via
+    scipy, one pair at a time: faster than numpy's batched syevd for these small sizes);
+    returns mu ascending and K-orthonormal eigenvectors."""
+    mus, vecs = [], []
+    for K, G in zip(Ks, Gs, strict=True):
+        try:
+            mu, vec = scipy.linalg.eigh(G, K, driver=EIGH_DRIVER, check_finite=False)
+        except np.linalg.LinAlgError as exc:  # K not positive definite: energy argument
+            raise RuntimeError("bending/torsion stiffness is not positive definite on the "
+                               "constrained subspace") from exc
+        mus.append(mu)
+        vecs.append(vec)
+    return np.array(mus), np.array(vecs)
+
+
+def solve_families(N: int, nu: float, e_ratio: float, load: str, families: dict[int, list[int]],
+                   fields: tuple[str, ...] = FIELDS) -> dict[int, FamilySolution]:
+    """Smallest positive q of G x = (1/q) K x on the constraint subspace of each family
+    (families of equal size are solved as one batch)."""
+    prep = {n: _prepare(N, nu, e_ratio, load, fam, fields) for n, fam in families.items()}
+    out: dict[int, FamilySolution] = {}
+    by_size: dict[int, list[int]] = {}
+    for n, p in prep.items():
+        if p.Z.shape[1] == 0:  # everything here is a rigid motion: no buckling mode
+            out[n] = FamilySolution(math.inf, np.zeros(len(p.labels)), p.labels, math.inf,
+                                    p.rank, p.K, p.G)
+        else:
+            by_size.setdefault(p.Z.shape[1], []).append(n)
+    for members in by_size.values():
+        mu, Y = _batched_eigh(np.stack([prep[n].Ks for n in members]),
+                              np.stack([prep[n].Gs for n in members]))
+        for i, n in enumerate(members):
+            p = prep[n]
+            top = int(np.argmax(mu[i]))
+            q = 1.0 / mu[i, top] if mu[i, top] > 0 else math.inf
+            x = p.Z @ (p.d * Y[i, :, top])
+            out[n] = FamilySolution(float(q), x, p.labels, float(mu[i].min()), p.rank, p.K, p.G)
+    return out
+
+
+def solve_family(N: int, nu: float, e_ratio: float, load: str, freqs: list[int],
+                 fields: tuple[str, ...] = FIELDS) -> FamilySolution:
+    """Smallest positive q of G x = (1/q) K x on the constraint subspace of one family."""
+    return solve_families(N, nu, e_ratio, load, {0: freqs}, fields)[0]
 
 
 @dataclass(frozen=True)
@@ -389,8 +444,8 @@ def ring_buckling(N: object, nu: object, *, e_ratio: object = 1.0, load: object 
     rel = math.nan
     min_mu = math.inf
     for M in _truncations(n_turns, max_frequency):
-        sols = {n: solve_family(n_turns, v, e, ld, fam, fields)
-                for n, fam in enumerate(frequency_families(n_turns, M)) if fam}
+        sols = solve_families(n_turns, v, e, ld, {
+            n: fam for n, fam in enumerate(frequency_families(n_turns, M)) if fam}, fields)
         k = min(sols, key=lambda n: sols[n].load)
         min_mu = min(sol.min_mu for sol in sols.values())
         q = sols[k].load
