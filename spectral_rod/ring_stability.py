@@ -310,7 +310,7 @@ def _prepare(N: int, nu: float, e_ratio: float, load: str, freqs: list[int],
                      Gz * d[:, None] * d[None, :], rank)
 
 
-def _batched_eigh(Ks: NDArray[np.float64], Gs: NDArray[np.float64]
+def _generalised_eigh(Ks: NDArray[np.float64], Gs: NDArray[np.float64]
                   ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """G y = mu K y for a stack of symmetric pairs with K positive definite (LAPACK sygv via
     scipy, one pair at a time: faster than numpy's batched syevd for these small sizes);
@@ -330,7 +330,7 @@ def _batched_eigh(Ks: NDArray[np.float64], Gs: NDArray[np.float64]
 def solve_families(N: int, nu: float, e_ratio: float, load: str, families: dict[int, list[int]],
                    fields: tuple[str, ...] = FIELDS) -> dict[int, FamilySolution]:
     """Smallest positive q of G x = (1/q) K x on the constraint subspace of each family
-    (families of equal size are solved as one batch)."""
+    (families of equal size are stacked together)."""
     prep = {n: _prepare(N, nu, e_ratio, load, fam, fields) for n, fam in families.items()}
     out: dict[int, FamilySolution] = {}
     by_size: dict[int, list[int]] = {}
@@ -341,7 +341,7 @@ def solve_families(N: int, nu: float, e_ratio: float, load: str, families: dict[
         else:
             by_size.setdefault(p.Z.shape[1], []).append(n)
     for members in by_size.values():
-        mu, Y = _batched_eigh(np.stack([prep[n].Ks for n in members]),
+        mu, Y = _generalised_eigh(np.stack([prep[n].Ks for n in members]),
                               np.stack([prep[n].Gs for n in members]))
         for i, n in enumerate(members):
             p = prep[n]
