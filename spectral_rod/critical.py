@@ -3,7 +3,13 @@
 Routing (issue 6, measured against the mpmath characteristic equation; tests/test_extremes.py
 and the ``extremes`` scene):
 
-* |Omega(L)| < :data:`TWIST_ROUTE` = 50, or an explicit degree ``n``: Chebyshev collocation
+* nu - 1 <= :data:`NEAR_DEGENERATE` = 1e-3 and |Omega(L)| < 50 (no explicit ``n``): the
+  lowest eigenvalue is nearly double and collocation's non-normal matrices make it
+  ill-conditioned; p* = 1 + (p* - 1) with the increment from the lab-frame Schur-complement
+  formulation (:func:`spectral_rod.increment.galerkin_increment_family`, relative accuracy
+  ~1e-14 of the *increment*, so p* is good to ~1e-16). Reported with ``n = 0`` and
+  ``error_estimate = max(eps, 1e-12 (p* - 1))`` (a bound on the increment's measured error).
+* other |Omega(L)| < :data:`TWIST_ROUTE` = 50, or an explicit degree ``n``: Chebyshev collocation
   (:func:`spectral_rod.straight_rod.collocation_critical_load`); relative error <= ~3e-14
   there at n <= ~60 (nu in [1, 1e4], including nu - 1 down to 1e-12).
 * |Omega(L)| >= 50: the paper's characteristic equation in double precision with a bracketing
@@ -26,6 +32,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from spectral_rod._validation import check_nu, check_resolution, check_tol, check_twist
+from spectral_rod.increment import galerkin_increment_family
 from spectral_rod.large_twist import characteristic_double
 from spectral_rod.straight_rod import (
     N_MAX,
@@ -35,10 +42,12 @@ from spectral_rod.straight_rod import (
     collocation_critical_load,
 )
 
-__all__ = ["TWIST_ROUTE", "critical_load"]
+__all__ = ["NEAR_DEGENERATE", "TWIST_ROUTE", "critical_load"]
 
 #: |Omega(L)| from which the characteristic equation (double precision) is used.
 TWIST_ROUTE = 50.0
+#: nu - 1 up to which p* = 1 + increment (for |Omega(L)| < TWIST_ROUTE).
+NEAR_DEGENERATE = 1.0e-3
 _EPS = float(np.finfo(float).eps)
 
 
@@ -71,14 +80,15 @@ def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None
     tw = np.abs(np.broadcast_to(twist, shape).ravel())
     nv = np.broadcast_to(nu_arr, shape).ravel()
     routed = (tw >= TWIST_ROUTE) if n is None else np.zeros(tw.size, dtype=bool)
-    if not routed.any():
+    degenerate = ((nv - 1.0 <= NEAR_DEGENERATE) & ~routed) if n is None else routed
+    if not (routed.any() or degenerate.any()):
         return collocation_critical_load(twist_angle, nu, n=n, tol=tol,
                                          full_output=full_output)
     p = np.empty(tw.size)
     deg = np.zeros(tw.size, dtype=int)
     err = np.empty(tw.size)
     fam = np.empty(tw.size, dtype="<U13")
-    colloc = np.flatnonzero(~routed)
+    colloc = np.flatnonzero(~routed & ~degenerate)
     if colloc.size:
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always", ConvergenceWarning)
@@ -91,6 +101,10 @@ def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None
     for i in np.flatnonzero(routed):
         p[i], fam[i] = characteristic_double(tw[i], nv[i])
     err[routed] = characteristic_error_estimate(tw[routed])
+    for i in np.flatnonzero(degenerate):
+        d, fam[i] = galerkin_increment_family(tw[i], nv[i])
+        p[i] = 1.0 + d
+        err[i] = max(_EPS, 1e-12 * d)
     converged = err <= tol
     bad = np.flatnonzero(routed & ~converged)
     if bad.size:

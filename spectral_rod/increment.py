@@ -66,7 +66,8 @@ from scipy.linalg import cho_factor, cho_solve
 
 from spectral_rod._validation import check_nu, check_twist
 
-__all__ = ["INCREMENT_MAX_TWIST", "critical_load_increment", "galerkin_increment"]
+__all__ = ["INCREMENT_MAX_TWIST", "critical_load_increment", "galerkin_increment",
+           "galerkin_increment_family"]
 
 #: |Omega(L)| limit of :func:`critical_load_increment` (the basis needs N ~ 2|Omega|/pi + 32).
 INCREMENT_MAX_TWIST = 1.0e3
@@ -149,9 +150,26 @@ def galerkin_increment(twist_angle: float, nu: float, n: int | None = None) -> f
     twist_angle = Omega(L) (any sign), nu = I2/I1 >= 1; n sine modes per field (default
     :func:`basis_size`). Exact zero at nu = 1 or Omega = 0.
     """
+    return galerkin_increment_family(twist_angle, nu, n)[0]
+
+
+def mode_family(c1: NDArray[np.float64], twist_angle: float) -> str:
+    """Parity family of the mode from its sin(pi s) coefficient c1 = (x1, x2) in the lab frame.
+
+    By the reflection symmetry (see :mod:`spectral_rod.characteristic`), exp(-i Omega/2) c1 is
+    real for the symmetric family (mid-span displacement along u0) and imaginary for the
+    antisymmetric one.
+    """
+    ang = math.atan2(c1[1], c1[0]) - twist_angle / 2
+    return "symmetric" if abs(math.cos(ang)) >= abs(math.sin(ang)) else "antisymmetric"
+
+
+def galerkin_increment_family(twist_angle: float, nu: float, n: int | None = None
+                              ) -> tuple[float, str]:
+    """(p* - 1, mode family) from the Schur-complement formulation; see galerkin_increment."""
     om, e = abs(float(twist_angle)), float(nu) - 1.0
     if om == 0.0 or e == 0.0:
-        return 0.0
+        return 0.0, "symmetric"
     n = basis_size(om) if n is None else int(n)
     q = int(1.6 * n + 0.5 * om + 40)
     x, w = leggauss(q)
@@ -184,7 +202,7 @@ def galerkin_increment(twist_angle: float, nu: float, n: int | None = None) -> f
         return e * g11 - e * e * (g21.T @ y), cf
 
     t0, _ = schur(0.0)
-    d, _ = _min_eig2(t0)
+    d, v = _min_eig2(t0)
     for _ in range(_MAX_NEWTON):
         try:
             t, cf = schur(d)
@@ -196,9 +214,9 @@ def galerkin_increment(twist_angle: float, nu: float, n: int | None = None) -> f
         step = (lmin - d) / (-e * e * float(r @ r) - 1.0)
         d_new = d - step
         if abs(d_new - d) <= 4e-16 * abs(d_new):
-            return d_new
+            return d_new, mode_family(v, om)
         d = d_new
-    return d
+    return d, mode_family(v, om)
 
 
 def critical_load_increment(twist_angle: ArrayLike, nu: ArrayLike):
@@ -216,8 +234,12 @@ def critical_load_increment(twist_angle: ArrayLike, nu: ArrayLike):
     shape = np.broadcast_shapes(twist.shape, nu_arr.shape)
     tw = np.abs(np.broadcast_to(twist, shape).ravel())
     nv = np.broadcast_to(nu_arr, shape).ravel()
-    p = np.atleast_1d(critical_load(tw, nv))
-    out = p - 1.0
-    for i in np.flatnonzero(out < DIRECT_THRESHOLD):
+    out = np.zeros(tw.size)
+    # nu - 1 <= DIRECT_THRESHOLD gives p* - 1 < 1e-3 (p* <= (1 + nu)/2): no need to ask
+    direct = nv - 1.0 <= DIRECT_THRESHOLD
+    rest = np.flatnonzero(~direct)
+    if rest.size:
+        out[rest] = np.atleast_1d(critical_load(tw[rest], nv[rest])) - 1.0
+    for i in np.flatnonzero(direct | (out < DIRECT_THRESHOLD)):
         out[i] = galerkin_increment(tw[i], nv[i])
     return float(out[0]) if shape == () else out.reshape(shape)
