@@ -63,7 +63,7 @@ NUS = (1.1, 1.5, 2.0, 5.0, 10.0)
 #: Curves drawn in claims_load.png.
 CURVE_NUS = (1.1, 1.5, 2.0, 5.0)
 TWIST_MAX = 20 * math.pi
-GRID_POINTS = 501
+GRID_POINTS = 401
 #: Maxima located for every nu (n pi), and for the detailed nu the whole run to 20 pi.
 MAXIMA_N = (2, 3, 4)
 DETAIL_NU = 1.5
@@ -217,9 +217,12 @@ class StraightRodEvidence:
 
 
 def _maximum(nu: float, n: int) -> MaximumRecord:
-    mpc = family_crossing(n * math.pi, nu, dps=DPS)
-    col = collocation_crossing(n * math.pi, nu)
+    """One maximum three ways. The mpmath Newton starts from the closed form (a starting guess
+    only: it solves D_sym = D_anti = 0 itself and the sign scans verify the root is the lowest
+    of both families; tests/test_asymptotics.py also starts it from (n pi, p*(n pi)))."""
     closed = crossing_closed_form(n, nu)
+    mpc = family_crossing(closed.twist, nu, p_guess=closed.p_star, dps=DPS)
+    col = collocation_crossing(n * math.pi, nu)
     with mp.workdps(DPS):
         nuv = mp.mpf(nu)
         dbeta = _mp_beta_difference(mpc.p_star, mpc.twist, nuv)
@@ -340,12 +343,13 @@ def compute_evidence(progress: Callable[[str], None] = lambda _m: None) -> Strai
                      "shape_mismatch": float(np.max(np.abs(
                          euler.x1 / e_scale - np.sin(np.pi * euler.s))))})
     planarity_decay = []
-    for om in PLANARITY_TWISTS:
-        row = _mode_row(om, DETAIL_NU)
-        lam = math.pi**2 * large_twist_limit(DETAIL_NU)
-        planarity_decay.append({"twist": om, "planarity_mp": row["planarity_mp"],
-                                "planarity_coll": row["planarity_coll"],
-                                "fast_amplitude": lam * 0.5 * (1 - 1 / DETAIL_NU) / (4 * om**2)})
+    lam_inf = math.pi**2 * large_twist_limit(DETAIL_NU)
+    for om in PLANARITY_TWISTS:  # mpmath only (the collocation mode is checked at MODE_CASES)
+        root = characteristic_critical_load(om, DETAIL_NU, dps=DPS)
+        cm = characteristic_mode(root, om, DETAIL_NU, points=121, dps=20)
+        planarity_decay.append({
+            "twist": om, "planarity_mp": planarity(np.array(cm.x1), np.array(cm.x2)),
+            "fast_amplitude": lam_inf * 0.5 * (1 - 1 / DETAIL_NU) / (4 * om**2)})
     timings["spot checks, limit, windows, modes"] = time.perf_counter() - t2
     progress(f"spot checks, large-twist loads, windows and modes in "
              f"{timings['spot checks, limit, windows, modes']:.1f} s")
@@ -776,8 +780,7 @@ def claim_three_dimensional(ev: StraightRodEvidence) -> Claim:
     om_d = np.array([r["twist"] for r in dec])
     pl_d = np.array([r["planarity_mp"] for r in dec])
     decay = float(np.polyfit(np.log(om_d), np.log(pl_d), 1)[0])
-    ok = ok and all(r["planarity_mp"] > 0 and abs(r["planarity_coll"] - r["planarity_mp"])
-                    < 1e-6 for r in dec)
+    ok = ok and all(r["planarity_mp"] > 0 for r in dec)
     cases = "; ".join(f"Ω = {m['twist']:g}, ν = {m['nu']:g}: σ_min/σ_max = "
                       f"{m['planarity_mp']:.3f} (mpmath) / {m['planarity_coll']:.3f} "
                       f"(collocation), max|ω2|/max|ω1| = {m['omega2_over_omega1']:.3f}"
@@ -910,7 +913,7 @@ def figure_wavenumbers(ev: StraightRodEvidence):
                              gridspec_kw={"height_ratios": [1, 1, 1], "hspace": 0.38})
     ax, ax2, ax3 = axes
     nu = DETAIL_NU
-    om = np.linspace(0.0, 3 * np.pi, 601)
+    om = np.linspace(0.0, 3 * np.pi, 361)
     xm, xp = wavenumbers_np(critical_load(om, nu, tol=CURVE_TOL), om, nu)
     w = {r["nu"]: r for r in ev.windows}
     ax.axvspan(w[nu]["omega_a"], w[nu]["omega_b"], color="0.85", label="β₁ imaginary")
@@ -927,7 +930,7 @@ def figure_wavenumbers(ev: StraightRodEvidence):
     ax.set_title(f"Critical wavenumbers along p*(Ω), ν = {nu}", fontsize=10)
     ax.legend(fontsize=7.5, frameon=False, loc="upper left")
     # beta2 - beta1
-    om2 = np.linspace(0.0, 4 * np.pi, 801)
+    om2 = np.linspace(0.0, 4 * np.pi, 481)
     for k, nu2 in enumerate((1.1, 1.5, 10.0)):
         d = beta_difference(critical_load(om2, nu2, tol=CURVE_TOL), om2, nu2)
         ax2.plot(om2, d, color=COLORS[nu2], lw=1.2, label=f"ν = {nu2}")
