@@ -30,8 +30,9 @@ the second variation of energy plus load potential is 1/2 (x.K x - q x.G x) with
     x.G x = int (theta_r^2 + theta_z^2) ds - int y_phi theta_z ds      ("hydrostatic"),
     x.G x = int (theta_r^2 + theta_z^2) ds - int y_phi^2 ds            ("axis").
 
-The first term of G is the work of the hoop force F_t = -q R on the second-order shortening of
-the chord (|y'|^2 = theta_r^2 + theta_z^2); the second is the second-order load potential:
+The first term of G is the work of the hoop force F_t = -q R on the second-order part of the
+tangent, d_3 - t0 = theta x (theta x t0)/2 (|theta x t0|^2 = |y'|^2 = theta_r^2 + theta_z^2); the
+second is the second-order load potential:
 
 * ``"hydrostatic"``: force per unit length q e_z x R'(s), i.e. pressure q acting on the ring's
   projection on the plane z = 0, horizontal and normal to the projected centreline.  It is
