@@ -38,6 +38,7 @@ from reproduce._runner import SceneOutput
 from reproduce.ledger import Claim, update_ledger
 from spectral_rod.asymptotics import (
     crossing_closed_form,
+    crossing_twist_asymptotic,
     imaginary_beta1_window,
     large_twist_coefficients,
     large_twist_expansion,
@@ -551,6 +552,8 @@ def claim_further_maxima(ev: StraightRodEvidence) -> Claim:
     ns = np.array([m.n for m in detail], dtype=float)
     offs = np.array([m.offset for m in detail])
     slope = float(np.polyfit(np.log(ns[-8:]), np.log(offs[-8:]), 1)[0])
+    last = detail[-1]
+    predicted = (crossing_twist_asymptotic(last.n, DETAIL_NU) - last.n * math.pi) / math.pi
     no_max_near_pi = all(rises_until_first_maximum(ev, nu) for nu in NUS)
     # every grid maximum sits next to a located crossing (no smooth maxima)
     gaps = []
@@ -576,7 +579,9 @@ def claim_further_maxima(ev: StraightRodEvidence) -> Claim:
              "(ν+3))]/((3ν+1)(ν+3)), N = n²+1, M = (n²−1)², p*_n = 2ν(N − Ω_n²/π²)/(ν+1)); "
              "every local maximum of the dense collocation curve must sit at a family switch; "
              "fit of the offset Ω_n − nπ against n; is there a maximum near π?",
-        evidence=f"ν = {DETAIL_NU}: maxima at {rows}, … (offset ∝ n^{slope:.2f}, i.e. ~n⁻³); "
+        evidence=f"ν = {DETAIL_NU}: maxima at {rows}, … (offset ∝ n^{slope:.2f}; "
+                 f"asymptotically π((ν−1)/(ν+1))²/(8n³): at n = {last.n} {predicted:.4e}π "
+                 f"predicted, {last.offset:.4e}π found); "
                  f"{others}. All {len(ev.maxima)} are corners where the critical mode switches "
                  f"family (alternately symmetric/antisymmetric), none is smooth (grid maxima at "
                  f"family switches: {grid_max_at_switch}); mpmath, collocation and closed form "
@@ -593,6 +598,7 @@ def claim_further_maxima(ev: StraightRodEvidence) -> Claim:
                  "detail_nu": DETAIL_NU,
                  "twist_over_pi": {m.n: m.twist_mp / math.pi for m in detail},
                  "offset_exponent": slope, "max_relative_offset": rel,
+                 "offset_last_found": last.offset, "offset_last_predicted": predicted,
                  "maximum_near_pi": not no_max_near_pi, "all_corners": all_corner,
                  "heights_rise": heights_rise, "agreement": agree})
 

@@ -106,7 +106,14 @@ quadratic for w = Omega^2/pi^2 whose larger root is the crossing:
     Omega_n = pi sqrt(w_n),   p*_n = 2 nu (N - w_n) / (nu + 1).
 
 (n = 1 reproduces Omega_b and p_b above: there beta_1 = 0 and beta_2 = 2 pi, but S_- = 1/2, so it
-is not a crossing.) For large n, w_n = n^2 + O(n^-2), so Omega_n - n pi = O(n^-3).
+is not a crossing.) For large n, with sqrt(N^2 b^2 + M c) expanded in 1/n^2 (b^2 + (nu+1)^2
+(3nu+1)(nu+3) = 4 (nu+1)^4),
+
+    w_n = n^2 + (nu - 1)^2 / (4 (nu + 1)^2 n^2) + O(n^-4),
+    Omega_n = n pi + pi (delta p_inf)^2 / (8 n^3) + O(n^-5),   delta p_inf = (nu-1)/(nu+1),
+    p*_n = p_inf (1 - (delta p_inf)^2 / (4 n^2)) + O(n^-4)
+
+(consistent with a2 above at sin(Omega) = 0).
 """
 
 from __future__ import annotations
@@ -121,6 +128,7 @@ __all__ = [
     "CrossingClosedForm",
     "LargeTwistCoefficients",
     "crossing_closed_form",
+    "crossing_twist_asymptotic",
     "imaginary_beta1_window",
     "large_twist_coefficients",
     "large_twist_expansion",
@@ -264,3 +272,9 @@ def crossing_closed_form(n: int, nu: float) -> CrossingClosedForm:
     p = 2.0 * nu * (big_n - w) / (nu + 1.0)
     return CrossingClosedForm(n=n, twist=math.pi * math.sqrt(w), p_star=p,
                               beta1=(n - 1) * math.pi, beta2=(n + 1) * math.pi)
+
+
+def crossing_twist_asymptotic(n: int, nu: float) -> float:
+    """Omega_n ~ n pi + pi ((nu - 1)/(nu + 1))^2 / (8 n^3), error O(n^-5) (module docstring)."""
+    q = (float(check_nu(nu)) - 1.0) / (float(nu) + 1.0)
+    return n * math.pi + math.pi * q * q / (8.0 * n**3)

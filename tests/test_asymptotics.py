@@ -14,6 +14,7 @@ import pytest
 
 from spectral_rod.asymptotics import (
     crossing_closed_form,
+    crossing_twist_asymptotic,
     imaginary_beta1_window,
     large_twist_coefficients,
     large_twist_expansion,
@@ -129,3 +130,15 @@ def test_input_validation():
         crossing_closed_form(1, 1.5)
     with pytest.raises(ValueError):
         large_twist_limit(0.5)
+
+
+@pytest.mark.parametrize("nu", [1.5, 10.0])
+def test_crossing_offset_asymptotics_has_error_of_order_n_to_the_minus_five(nu):
+    ns = np.array([8, 16, 32])
+    err = [abs(crossing_closed_form(int(n), nu).twist - crossing_twist_asymptotic(int(n), nu))
+           for n in ns]
+    assert np.polyfit(np.log(ns), np.log(err), 1)[0] == pytest.approx(-5.0, abs=0.3)
+    # and the leading offset itself against the Newton solution of the determinants
+    newton = family_crossing(12 * math.pi, nu)
+    off = float(newton.twist) - 12 * math.pi
+    assert off == pytest.approx(crossing_twist_asymptotic(12, nu) - 12 * math.pi, rel=0.05)

@@ -192,3 +192,9 @@ def test_scene_writes_ledger_figures_and_report(tmp_path, ev, monkeypatch):
     assert out.report.startswith("## Claims")
     assert all((tmp_path / n).stat().st_size > 0 for n in names)
     assert out.details["verdicts"]["rod-beta-real"] == "fails"
+
+
+def test_further_maxima_offset_matches_its_asymptotics(ev):
+    c = sc.claim_further_maxima(ev)
+    assert c.numbers["offset_last_found"] == pytest.approx(c.numbers["offset_last_predicted"],
+                                                           rel=1e-2)
