@@ -6,8 +6,9 @@ Compares: the public ``critical_load`` (collocation for |Omega| < 50, double-pre
 characteristic equation above) and ``critical_load_increment`` with the mpmath characteristic
 equation at 50 digits (the independent reference), over a grid reaching nu - 1 = 1e-12,
 nu = 1e4, Omega(L) = 1e-6 and 1000; and collocation at fixed degree n = 8..512 (round-off growth).
-Writes: extremes.png, extremes_grid.csv, extremes_increment.csv, extremes_resolution.csv and the
-report section. Nothing is cached across runs.
+Writes: extremes.png, extremes_grid.csv, extremes_increment.csv, extremes_resolution.csv,
+extremes_routing.csv (collocation vs characteristic equation at large twist: error, n, time) and
+the report section. Nothing is cached across runs.
 """
 
 from __future__ import annotations
@@ -26,10 +27,11 @@ import pandas as pd
 
 from reproduce._runner import SceneOutput
 from spectral_rod.characteristic import characteristic_critical_load
-from spectral_rod.critical import TWIST_ROUTE, critical_load
+from spectral_rod.critical import NEAR_DEGENERATE, TWIST_ROUTE, critical_load
 from spectral_rod.increment import critical_load_increment
 from spectral_rod.io import write_with
-from spectral_rod.straight_rod import ConvergenceWarning
+from spectral_rod.large_twist import characteristic_double
+from spectral_rod.straight_rod import ConvergenceWarning, collocation_critical_load
 
 NAME = "extremes"
 SUMMARY = ("straight rod at the extremes: p* and p*-1 errors over the (Omega, nu) plane vs the "
@@ -41,6 +43,8 @@ INC_TWISTS = (1e-6, 1e-3, 1.0, 5.0, 30.0, 100.0)
 INC_NUS = (1 + 1e-8, 1 + 1e-4, 1.5, 10.0, 1e4)
 RES_POINTS = ((1.0, 1.5), (30.0, 1.5), (100.0, 10.0), (30.0, 1 + 1e-9))
 RES_DEGREES = (8, 12, 16, 24, 32, 48, 64, 96, 128, 192, 256, 384, 512)
+ROUTE_TWISTS = (10.0, 30.0, 50.0, 100.0, 200.0, 300.0, 1000.0)
+ROUTE_NUS = (1.5, 1e4)
 P_LIMIT, INC_LIMIT = 1e-10, 1e-9
 
 
@@ -59,8 +63,40 @@ def p_star_grid() -> pd.DataFrame:
             p = float(res.p_star[j])
             rows.append({"twist_angle": om, "nu": nu, "p_star": p, "p_ref": float(ref),
                          "rel_error": float(abs((p - ref) / ref)),
-                         "method": "characteristic" if om >= TWIST_ROUTE else "collocation",
+                         "method": route_name(om, nu),
                          "n": int(res.n[j]), "family": str(res.family[j])})
+    return pd.DataFrame(rows)
+
+
+def route_name(twist: float, nu: float) -> str:
+    """The method critical_load uses at (twist, nu) (see spectral_rod.critical)."""
+    if abs(twist) >= TWIST_ROUTE:
+        return "characteristic"
+    return "1+increment" if nu - 1 <= NEAR_DEGENERATE else "collocation"
+
+
+def routing_study() -> pd.DataFrame:
+    """Both large-twist candidates measured: collocation (automatic n) and the double-precision
+    characteristic equation -- relative error against the reference and wall time."""
+    rows = []
+    for nu in ROUTE_NUS:
+        for om in ROUTE_TWISTS:
+            ref = reference(om, nu)
+            t0 = time.perf_counter()
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", ConvergenceWarning)
+                # beyond Omega ~ 300 the automatic degree would exceed the cap: measure n = 512
+                res = collocation_critical_load(om, nu, n=512 if om > 300 else None,
+                                                full_output=True)
+            t1 = time.perf_counter()
+            pc, _ = characteristic_double(om, nu)
+            t2 = time.perf_counter()
+            rows.append({"twist_angle": om, "nu": nu,
+                         "colloc_rel_error": float(abs((float(res.p_star) - ref) / ref)),
+                         "colloc_n": int(res.n), "colloc_converged": bool(res.converged),
+                         "colloc_seconds": t1 - t0,
+                         "char_rel_error": float(abs((pc - ref) / ref)),
+                         "char_seconds": t2 - t1})
     return pd.DataFrame(rows)
 
 
@@ -112,9 +148,9 @@ def _nu_label(nu: float) -> str:
     return f"1+{nu - 1:.0e}" if nu - 1 < 1e-3 else f"{nu:g}"
 
 
-def draw(grid: pd.DataFrame, inc: pd.DataFrame, res: pd.DataFrame):
-    fig, axes = plt.subplots(1, 3, figsize=(15, 4.8), layout="constrained",
-                             gridspec_kw={"width_ratios": [1.2, 1, 1.1]})
+def draw(grid: pd.DataFrame, inc: pd.DataFrame, res: pd.DataFrame, route: pd.DataFrame):
+    fig, axs = plt.subplots(2, 2, figsize=(13, 9.5), layout="constrained")
+    axes = axs.ravel()
     im = _heatmap(axes[0], grid, P_TWISTS, P_NUS,
                   "log10 rel. error of p* (critical_load)", P_LIMIT)
     axes[0].axvline(P_TWISTS.index(100.0) - 0.5, color="r", lw=1)
@@ -134,6 +170,22 @@ def draw(grid: pd.DataFrame, inc: pd.DataFrame, res: pd.DataFrame):
     ax.set_ylabel("relative error of p*")
     ax.set_title("collocation at fixed n: truncation, then round-off", fontsize=9)
     ax.legend(fontsize=7)
+    ax.grid(True, which="major", alpha=0.3)
+    ax = axes[3]
+    for nu, sub in route.groupby("nu"):
+        ax.loglog(sub["twist_angle"], np.maximum(sub["colloc_rel_error"], 1e-17), "o-", ms=3,
+                  label=f"collocation (auto n), ν={nu:g}")
+        ax.loglog(sub["twist_angle"], np.maximum(sub["char_rel_error"], 1e-17), "s--", ms=3,
+                  label=f"characteristic eq. (double), ν={nu:g}")
+    om = np.asarray(ROUTE_TWISTS)
+    ax.loglog(om, 2.2e-16 * (8 + om / 2), "k:", lw=1, label="ε (8 + Ω/2): stated bound")
+    ax.axvline(TWIST_ROUTE, color="r", lw=1)
+    ax.text(TWIST_ROUTE * 1.05, 3e-10, "route →\ncharacteristic", color="r", fontsize=7)
+    ax.set_ylim(1e-17, 1e-8)
+    ax.set_xlabel("Ω(L)")
+    ax.set_ylabel("relative error of p*")
+    ax.set_title("large twist: both methods measured (collocation n capped at 512)", fontsize=9)
+    ax.legend(fontsize=7, loc="upper left")
     ax.grid(True, which="major", alpha=0.3)
     return fig
 
@@ -155,10 +207,13 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
     inc = increment_grid()
     progress("collocation at fixed n = 8..512")
     res = resolution_study()
+    progress("large twist: collocation vs characteristic equation (error, time)")
+    route = routing_study()
     files = [write_with(out / "extremes_grid.csv", lambda p: grid.to_csv(p, index=False)),
              write_with(out / "extremes_increment.csv", lambda p: inc.to_csv(p, index=False)),
-             write_with(out / "extremes_resolution.csv", lambda p: res.to_csv(p, index=False))]
-    fig = draw(grid, inc, res)
+             write_with(out / "extremes_resolution.csv", lambda p: res.to_csv(p, index=False)),
+             write_with(out / "extremes_routing.csv", lambda p: route.to_csv(p, index=False))]
+    fig = draw(grid, inc, res, route)
     files.append(write_with(out / "extremes.png",
                             lambda p: fig.savefig(p, format="png", dpi=150)))
     plt.close(fig)
@@ -183,10 +238,20 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
         "* Fixed n = 8..512: all results finite; round-off floor for n >= 128: "
         + ", ".join(f"(Ω={om:g}, ν={_nu_label(nu)}) {v:.0e}" for (om, nu), v in
                     res_floor.items()) + ".",
+        "* Large twist, both methods measured (table below): collocation's n grows with Ω(L) "
+        "and its round-off with n; the characteristic equation costs the same at any twist. "
+        f"Routing: |Ω(L)| >= {TWIST_ROUTE:g} -> characteristic equation; ν − 1 <= "
+        f"{NEAR_DEGENERATE:g} (|Ω| < {TWIST_ROUTE:g}) -> 1 + increment; else collocation.",
+        "* Asymptote (not used for values): p* = p_inf [1 − π²(ν−1)²/(4(ν+1)²Ω²)] + "
+        "O(Ω⁻³) with p_inf = 2ν/(1+ν); the O(Ω⁻³) term is the ripple "
+        "−π²(ν−1)/(ν+1) p_inf |sin Ω|/Ω³ (`spectral_rod.large_twist`).",
         f"* Status: {'PASS' if ok else 'FAIL'}; run time {time.perf_counter() - t0:.1f} s.",
         "", "![extremes](extremes.png)", "",
         "### p* − 1 (relative error)", "",
         _md(inc, ["twist_angle", "nu", "increment_ref", "rel_error"]), "",
+        "### Large twist: collocation vs characteristic equation", "",
+        _md(route, ["twist_angle", "nu", "colloc_rel_error", "colloc_n", "colloc_converged",
+                    "colloc_seconds", "char_rel_error", "char_seconds"]), "",
         "### p* (relative error, route)", "",
         _md(grid, ["twist_angle", "nu", "p_ref", "rel_error", "method", "n"]), "",
     ])

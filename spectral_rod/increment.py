@@ -43,9 +43,12 @@ jump in z''''), which alone would limit the error to O(N^-5); the tails absorb t
 the error falls to the rounding floor with N ~ 2 |Omega|/pi + 32. Integrals of omega2 moments
 use Gauss-Legendre quadrature (all integrands entire, sin(Omega s) evaluated directly).
 
-Where p* - 1 >= 1e-3 the increment is not small and ``critical_load(...) - 1`` already has
-relative accuracy ~1e-12 (p* is good to ~1e-15); there (and only there) it is used, which
-also covers the large-twist/strong-anisotropy corner where the sine basis converges slowly.
+Where p* - 1 >= 1e-3 the increment is not small and p* - 1 from the characteristic
+equation in double precision (:func:`spectral_rod.large_twist.characteristic_double`, measured
+within 1-2 ulp of p* for Omega in [1e-3, 1e4], nu in [1.001, 1e4]) has relative accuracy
+<= 1e-12; there (and only there) it is used, which also covers the large-twist /
+strong-anisotropy corner where the sine basis converges slowly. (Points with nu - 1 <= 1e-3
+always take the Galerkin route: p* - 1 <= (nu - 1)/2 there.)
 
 Verified against the mpmath characteristic equation (:mod:`spectral_rod.characteristic`) at
 50-60 digits: relative error <= 1e-9 on the grid nu - 1 in [1e-8, 1e4], Omega in [1e-6, 1e3]
@@ -65,6 +68,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.linalg import cho_factor, cho_solve
 
 from spectral_rod._validation import check_nu, check_twist
+from spectral_rod.large_twist import characteristic_double
 
 __all__ = ["INCREMENT_MAX_TWIST", "critical_load_increment", "galerkin_increment",
            "galerkin_increment_family"]
@@ -225,10 +229,8 @@ def critical_load_increment(twist_angle: ArrayLike, nu: ArrayLike):
     twist_angle = Omega(L) = omega30 L in radians, |Omega(L)| <= 1000 (p* is even in it);
     nu = I2/I1 in [1, 1e4] (convention A1 <= A2). Scalars give a float, arrays broadcast.
     Where p* - 1 < 1e-3 the lab-frame Schur-complement Galerkin method of the module
-    docstring is used; elsewhere ``critical_load(...) - 1``.
+    docstring is used; elsewhere p* - 1 from the double-precision characteristic equation.
     """
-    from spectral_rod.critical import critical_load  # local: critical imports nothing here
-
     twist = check_twist(twist_angle, max_abs=INCREMENT_MAX_TWIST)
     nu_arr = check_nu(nu)
     shape = np.broadcast_shapes(twist.shape, nu_arr.shape)
@@ -238,8 +240,8 @@ def critical_load_increment(twist_angle: ArrayLike, nu: ArrayLike):
     # nu - 1 <= DIRECT_THRESHOLD gives p* - 1 < 1e-3 (p* <= (1 + nu)/2): no need to ask
     direct = nv - 1.0 <= DIRECT_THRESHOLD
     rest = np.flatnonzero(~direct)
-    if rest.size:
-        out[rest] = np.atleast_1d(critical_load(tw[rest], nv[rest])) - 1.0
+    for i in rest:
+        out[i] = characteristic_double(tw[i], nv[i])[0] - 1.0
     for i in np.flatnonzero(direct | (out < DIRECT_THRESHOLD)):
         out[i] = galerkin_increment(tw[i], nv[i])
     return float(out[0]) if shape == () else out.reshape(shape)

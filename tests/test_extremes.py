@@ -70,16 +70,26 @@ def test_strong_anisotropy(nu):
         assert 1.0 <= p < 2.0 * nu / (1.0 + nu)
 
 
+def _check_fixed_degrees(om: float, nu: float, degrees) -> None:
+    r = float(ref(om, nu).p_star)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ConvergenceWarning)
+        for n in degrees:
+            p = critical_load(om, nu, n=n)
+            assert np.isfinite(p)
+            if n >= 128:  # resolved: only round-off left, and it stays at the 1e-12 level
+                assert abs(p / r - 1) <= 1e-12, (om, nu, n)
+
+
 def test_fixed_degree_is_finite_and_roundoff_stays_small():
+    _check_fixed_degrees(1.0, 1.5, (8, 16, 64, 128, 256))  # 512: the slow sweep, scene
+    _check_fixed_degrees(30.0, 1 + 1e-9, (8, 32, 128))
+
+
+@pytest.mark.slow
+def test_fixed_degree_full_sweep():
     for om, nu in [(1.0, 1.5), (30.0, 1 + 1e-9), (100.0, 1e4)]:
-        r = float(ref(om, nu).p_star)
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", ConvergenceWarning)
-            for n in (8, 16, 64, 128, 256, 512):
-                p = critical_load(om, nu, n=n)
-                assert np.isfinite(p)
-                if n >= 128:  # resolved: only round-off left, and it stays at the 1e-12 level
-                    assert abs(p / r - 1) <= 1e-12, (om, nu, n)
+        _check_fixed_degrees(om, nu, (8, 12, 16, 24, 32, 48, 64, 96, 128, 192, 256, 384, 512))
 
 
 def test_negative_twist_is_even():
@@ -108,3 +118,13 @@ def test_asymptote_limit_and_leading_correction():
             assert abs(p_inf - r) / r > 0.5 * math.pi**2 * ((nu - 1) / (nu + 1)) ** 2 / (
                 4 * om**2)
             assert r < p_inf
+
+
+def test_near_degenerate_route_reports_the_right_family():
+    # p* = 1 + increment there; the family comes from the sin(pi s) coefficient's orientation
+    twists = np.array([0.5, 2.0, 5.0, 8.0, 12.0, 20.0])
+    for e in (1e-3, 1e-6):
+        res = critical_load(twists, np.full(twists.size, 1 + e), full_output=True)
+        assert np.all(res.n == 0) and np.all(res.converged)
+        for om, fam in zip(twists, res.family, strict=True):
+            assert fam == ref(float(om), 1 + e).family, (om, e)
