@@ -8,10 +8,24 @@ angle Omega(L) = omega30 L, nu = I2/I1 >= 1, p* = P_cr / (pi^2 A1 / L^2).
 * :func:`buckling_mode` -- the critical mode (omega1, omega2, centreline) and wavenumbers.
 * :func:`characteristic_critical_load` -- the paper's characteristic equation in extended
   precision (the independent reference).
+
+Ring (paper's section "Stability of a ring"), q_cr R^3 / (E1 I1), e = E2/E1:
+
+* :func:`ring_formula_load`, :func:`threshold_twist` -- the paper's Eq. ``crit2`` and the twist at
+  which it predicts instability without load.
+* :func:`ring_critical_load`, :func:`ring_buckling` -- the linearised ring problem solved
+  numerically (Fourier spectral), the converged answer against which ``crit2`` is judged.
 """
 
 from spectral_rod.characteristic import characteristic_critical_load
 from spectral_rod.critical import critical_load
+from spectral_rod.ring import ThresholdTwist, ring_formula_load, threshold_twist
+from spectral_rod.ring_stability import (
+    RingBuckling,
+    RingConvergenceError,
+    ring_buckling,
+    ring_critical_load,
+)
 from spectral_rod.straight_rod import (
     BucklingMode,
     ConvergenceWarning,
@@ -26,8 +40,15 @@ __all__ = [
     "BucklingMode",
     "ConvergenceWarning",
     "CriticalLoad",
+    "RingBuckling",
+    "RingConvergenceError",
+    "ThresholdTwist",
     "buckling_mode",
     "characteristic_critical_load",
     "critical_load",
     "critical_wavenumbers",
+    "ring_buckling",
+    "ring_critical_load",
+    "ring_formula_load",
+    "threshold_twist",
 ]
