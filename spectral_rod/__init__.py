@@ -7,7 +7,10 @@ angle Omega(L) = omega30 L, nu = I2/I1 >= 1, p* = P_cr / (pi^2 A1 / L^2).
 * :func:`critical_load` -- Chebyshev collocation, automatic resolution.
 * :func:`buckling_mode` -- the critical mode (omega1, omega2, centreline) and wavenumbers.
 * :func:`characteristic_critical_load` -- the paper's characteristic equation in extended
-  precision (the independent reference).
+  precision (the independent reference); :func:`family_critical_load` per mode family and
+  :func:`family_crossing`, where the families cross (the maxima of p*).
+* :func:`large_twist_limit` (2 nu/(1 + nu)), :func:`large_twist_expansion`,
+  :func:`imaginary_beta1_window`, :func:`crossing_closed_form` -- closed forms.
 
 Ring (paper's section "Stability of a ring"), q_cr R^3 / (E1 I1), e = E2/E1:
 
@@ -17,7 +20,17 @@ Ring (paper's section "Stability of a ring"), q_cr R^3 / (E1 I1), e = E2/E1:
   numerically (Fourier spectral), the converged answer against which ``crit2`` is judged.
 """
 
-from spectral_rod.characteristic import characteristic_critical_load
+from spectral_rod.asymptotics import (
+    crossing_closed_form,
+    imaginary_beta1_window,
+    large_twist_expansion,
+    large_twist_limit,
+)
+from spectral_rod.characteristic import (
+    characteristic_critical_load,
+    family_critical_load,
+    family_crossing,
+)
 from spectral_rod.critical import critical_load
 from spectral_rod.ring import ThresholdTwist, ring_formula_load, threshold_twist
 from spectral_rod.ring_stability import (
@@ -47,6 +60,12 @@ __all__ = [
     "characteristic_critical_load",
     "critical_load",
     "critical_wavenumbers",
+    "crossing_closed_form",
+    "family_critical_load",
+    "family_crossing",
+    "imaginary_beta1_window",
+    "large_twist_expansion",
+    "large_twist_limit",
     "ring_buckling",
     "ring_critical_load",
     "ring_formula_load",
