@@ -22,7 +22,7 @@ def ref(twist: float, nu: float, dps: int = 40):
     return characteristic_critical_load(twist, nu, dps=dps)
 
 
-TWISTS_ANY = (0.1, 1.0, math.pi, 2 * math.pi, 7.0, 20.0, 45.0, 60.0, 200.0)
+TWISTS_ANY = (1e-6, 0.1, 1.0, math.pi, 2 * math.pi, 7.0, 20.0, 45.0, 60.0, 200.0, 1000.0)
 
 
 @pytest.mark.parametrize("e", [1e-12, 1e-9, 1e-6, 1e-3])
