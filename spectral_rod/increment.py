@@ -40,7 +40,7 @@ Basis for z2 (each of x1, x2): sin(k pi s), k = 2..N (W and M diagonal), plus th
 boundary tails sum_{k>N} (+-1)^k sin(k pi s)/k^5 (closed form: Bernoulli polynomial B5 minus the
 partial sum). The true mode's sine coefficients decay like k^-5 (its odd extension has a
 jump in z''''), which alone would limit the error to O(N^-5); the tails absorb that jump and
-the error falls to the rounding floor with N ~ 2 |Omega|/pi + 32. Integrals of omega2 moments
+the error falls to the rounding floor with N ~ 2 |Omega|/pi + 48. Integrals of omega2 moments
 use Gauss-Legendre quadrature (all integrands entire, sin(Omega s) evaluated directly).
 
 Where p* - 1 >= 1e-3 the increment is not small and p* - 1 from the characteristic
@@ -73,7 +73,7 @@ from spectral_rod.large_twist import characteristic_double
 __all__ = ["INCREMENT_MAX_TWIST", "critical_load_increment", "galerkin_increment",
            "galerkin_increment_family"]
 
-#: |Omega(L)| limit of :func:`critical_load_increment` (the basis needs N ~ 2|Omega|/pi + 32).
+#: |Omega(L)| limit of :func:`critical_load_increment` (the basis needs N ~ 2|Omega|/pi + 48).
 INCREMENT_MAX_TWIST = 1.0e3
 #: Above this gain p* - 1 is taken from critical_load (relative error <= ~1e-12 there).
 DIRECT_THRESHOLD = 1.0e-3
@@ -98,8 +98,8 @@ def tail_polynomial(shift: int) -> NDArray[np.float64]:
 
 
 def basis_size(twist_angle: float) -> int:
-    """Sine modes per field: N = max(32, ceil(2 |Omega|/pi) + 32) (validated, see module)."""
-    return max(32, math.ceil(2 * abs(twist_angle) / math.pi) + 32)
+    """Sine modes per field: N = max(32, ceil(2 |Omega|/pi) + 48) (validated, see module)."""
+    return max(32, math.ceil(2 * abs(twist_angle) / math.pi) + 48)
 
 
 def _second_derivatives(s: NDArray[np.float64], n: int
