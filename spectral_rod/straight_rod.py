@@ -29,19 +29,32 @@ Reflection s -> 1 - s maps solutions to solutions with (omega1, omega2)(s) -> (o
 family) or *antisymmetric* (omega1 odd, omega2 even). Each family is discretised separately
 in the parity integration bases of :mod:`spectral_rod.chebyshev` (degree n; n/2 and n/2 - 1
 unknowns per field), which gives a generalised eigenproblem A c = lambda B c with square B
-(the collocation values of the basis). We solve the equivalent standard problem
-A^{-1} B theta = theta (theta = 1/lambda): all its matrices are O(1), so round-off does not
-grow like n^4 as it does with differentiation matrices.
+(the collocation values of the basis); all its matrices are O(1), so round-off does not grow
+like n^4 as it does with differentiation matrices. The reference solution of the discrete
+problem is the full ``eig`` of the inverse pencil A^{-1} B (theta = 1/lambda).
+
+Fast solution (issue 5): only the lowest eigenvalue is needed and it is >= pi^2. The
+uncoupled operators -d^2/ds^2 of each field are diagonalised once per degree
+(:class:`ModalFamily`); in that basis the family is K z = lambda z with K diagonal plus an
+Omega-proportional coupling, so K - SHIFT (SHIFT = 0.95 pi^2) is inverted through a Schur
+complement of half the size, for all points of a degree at once. Shift-and-invert iteration
+on right and left vectors (:func:`lowest_eigenpair`, contraction 0.01-0.2 per step on
+Figure 1's range) gives the eigenvectors, and the eigenvalue is the two-sided Rayleigh
+quotient of the O(1) pencil (A, B) itself (error = product of the two vectors' errors).
 
 Choosing the physical eigenvalue (the rule)
 -------------------------------------------
 The continuous spectrum is real and >= pi^2. Collocation adds spurious eigenvalues that are
-complex or very large (theta near 0). From each family we keep theta with |Im theta| <= 1e-8
-|theta| and Re theta > 0 and take the largest (the smallest lambda); p* is the smaller of the
-two families. The
-choice is accepted only if the mode's Chebyshev coefficients have decayed to the tolerance
-(a spurious mode is unresolved by construction) and p* >= 1 - tol (the proven lower bound);
-otherwise the resolution is increased or the result is flagged as not converged.
+complex or very large (theta near 0). The rule: from each family keep theta with
+|Im theta| <= 1e-8 |theta| and Re theta > 0 and take the largest (the smallest lambda); p* is
+the smaller of the two families. The fast path returns the eigenvalue nearest above SHIFT;
+as every physical eigenvalue is >= pi^2 > SHIFT this is the rule's choice unless a spurious
+eigenvalue is nearer to SHIFT, in which case the iteration does not converge to a real value
+>= SHIFT and the full ``eig`` with the rule decides (the two are compared on a grid in
+``tests/test_accuracy_control.py``). The choice is accepted only if the error estimate from
+the mode's Chebyshev coefficients (:func:`error_estimate`; a spurious mode is unresolved by
+construction) meets the tolerance; otherwise the resolution is increased or the result is
+flagged as not converged.
 """
 
 from __future__ import annotations
@@ -49,21 +62,26 @@ from __future__ import annotations
 import math
 import warnings
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cached_property, lru_cache
 
 import numpy as np
 import numpy.polynomial.chebyshev as C
 from numpy.typing import ArrayLike, NDArray
 
 from spectral_rod._validation import check_nu, check_resolution, check_tol, check_twist
-from spectral_rod.chebyshev import ParityBasis, parity_basis, tail
+from spectral_rod.chebyshev import ParityBasis, parity_basis
 
 FAMILIES = ("symmetric", "antisymmetric")
 N_MIN, N_MAX = 8, 512
 #: Eigenvalues with |Im| above this fraction of |lambda| are complex, i.e. not physical.
 IMAG_REL = 1.0e-8
-#: The coefficient tail must be this much below tol (eigenvalue errors are ~ tail; see tests).
-TAIL_SAFETY = 1.0
+EPS = float(np.finfo(float).eps)
+#: Error model of :func:`error_estimate` (calibrated against the mpmath reference).
+ERR_LINEAR, ERR_QUADRATIC = 5.0e-4, 200.0
+#: Shift of the inverse iteration: below every physical eigenvalue (lambda >= pi^2, p* >= 1).
+SHIFT = 0.95 * math.pi**2
+#: Inverse iteration: first-order error bound of lambda accepted (relative), and step cap.
+POWER_RTOL, POWER_STEPS, FIRST_CHECK = 1.0e-15, 40, 6
 
 
 class ConvergenceWarning(RuntimeWarning):
@@ -94,23 +112,39 @@ class FamilyOperator:
     def sizes(self) -> tuple[int, int]:
         return self.basis1.value.shape[1], self.basis2.value.shape[1]
 
+    @cached_property
+    def pieces(self) -> NDArray[np.float64]:
+        """A = sum_i coef_i P_i with coef = (1, Omega^2, nu, nu Omega^2, nu Omega, Omega):
+        the six constant matrices P_i, shape (6, m, m)."""
+        k1, k2 = self.sizes
+        b1, b2 = self.basis1, self.basis2
+        p = np.zeros((6, k1 + k2, k1 + k2))
+        p[0, :k1, :k1] = -4.0 * b1.d2
+        p[1, :k1, :k1] = b1.value
+        p[2, k1:, k1:] = -4.0 * b2.d2
+        p[3, k1:, k1:] = b2.value
+        p[4, :k1, k1:] = 4.0 * self.coupling12
+        p[5, k1:, :k1] = -4.0 * self.coupling21
+        return p
+
+    @cached_property
+    def mass(self) -> NDArray[np.float64]:
+        """B = diag(V_1, V_2), shape (m, m)."""
+        k1, k2 = self.sizes
+        b = np.zeros((k1 + k2, k1 + k2))
+        b[:k1, :k1] = self.basis1.value
+        b[k1:, k1:] = self.basis2.value
+        return b
+
     def pencil(self, twist_angle: ArrayLike, nu: ArrayLike
                ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
         """A for broadcast arrays `twist_angle`, `nu` (shape (..., m, m)), and B (m, m)."""
-        om = np.asarray(twist_angle, dtype=float)[..., None, None]
-        nu = np.asarray(nu, dtype=float)[..., None, None]
-        k1, k2 = self.sizes
-        b1, b2 = self.basis1, self.basis2
-        shape = (*np.broadcast_shapes(om.shape, nu.shape)[:-2], k1 + k2, k1 + k2)
-        a = np.empty(shape)
-        a[..., :k1, :k1] = -4.0 * b1.d2 + om**2 * b1.value
-        a[..., :k1, k1:] = 4.0 * nu * om * self.coupling12
-        a[..., k1:, :k1] = -4.0 * om * self.coupling21
-        a[..., k1:, k1:] = nu * (-4.0 * b2.d2 + om**2 * b2.value)
-        b = np.zeros((k1 + k2, k1 + k2))
-        b[:k1, :k1] = b1.value
-        b[k1:, k1:] = b2.value
-        return a, b
+        om, nu = np.broadcast_arrays(np.asarray(twist_angle, dtype=float),
+                                     np.asarray(nu, dtype=float))
+        coef = np.stack([np.ones_like(om), om**2, nu, nu * om**2, nu * om, om], axis=-1)
+        m = self.mass.shape[0]
+        a = (coef.reshape(-1, 6) @ self.pieces.reshape(6, m * m)).reshape(*om.shape, m, m)
+        return a, self.mass
 
     def split(self, c: NDArray[np.generic]) -> tuple[NDArray[np.generic], NDArray[np.generic]]:
         """Chebyshev coefficients (in x) of (omega1, omega2) from an eigenvector."""
@@ -153,23 +187,48 @@ class CriticalLoad:
 
 def initial_degree(twist_angle: NDArray[np.float64], nu: NDArray[np.float64],
                    tol: float) -> NDArray[np.int_]:
-    """A priori Chebyshev degree from the mode's largest wavenumber.
+    """A priori Chebyshev degree for relative accuracy `tol` (fitted, see below).
 
-    The critical mode is a sum of cos/sin(beta_k s) with beta_k^2 the roots of the
-    characteristic equation; at the load (at most (1 + nu)/2 pi^2) the larger root is below
-    beta_max^2 = lambda (1 + 1/nu) + 2 Omega^2 ... we use beta_max = sqrt(2) (|Omega| + pi).
-    On x in [-1, 1] this is frequency k = beta_max / 2, and the Chebyshev coefficients of
-    cos(k x) fall like J_j(k) ~ (e k / 2 j)^j; we take the smallest even j with (e k/2j)^j below
-    tol/100. The a-posteriori coefficient check then confirms or raises the degree.
+    The critical mode is a sum of cos/sin(beta_k s) with beta_k <= sqrt(X_+) ~ |Omega| + pi
+    (:func:`critical_wavenumbers`); on x = 2 s - 1 that is frequency k ~ |Omega| / 2, which
+    Chebyshev series resolve from degree ~ k on, with a transition layer ~ k^(1/3) wide. With
+    L = log10(1/tol),
+
+        n0 = |Omega|/2 + 3.5 + 0.5 L + 1.3 (1 + |Omega|)^(1/3) sqrt(L)   (rounded up to even)
+
+    is the smallest degree whose :func:`error_estimate` meets `tol`, fitted on Omega in
+    [0, 300], nu in [1, 100], tol in [1e-12, 1e-4] (exact or 2 above in 90 % of the cases, 2-4
+    below in 3 of 153; the a-posteriori check then raises the degree). ``nu`` does not enter:
+    the needed degree varies by at most 2 over nu in [1, 100].
     """
-    k = (np.abs(twist_angle) + np.pi) / 2.0 * np.where(nu > 1.0, 1.0, 1.0)
-    j = np.arange(4, N_MAX + 1, 2)
-    # log10 of the bound for each candidate degree, vectorised over points
-    with np.errstate(divide="ignore"):
-        logb = j * np.log10(np.e * k[..., None] / (2.0 * j))
-    ok = logb <= math.log10(tol) - 2.0
-    first = np.where(ok.any(axis=-1), ok.argmax(axis=-1), j.size - 1)
-    return np.maximum(j[first], N_MIN)
+    om = np.abs(np.asarray(twist_angle, dtype=float))
+    big_l = -math.log10(tol)
+    x = om / 2 + 3.5 + 0.5 * big_l + 1.3 * np.cbrt(1.0 + om) * math.sqrt(big_l)
+    return np.clip(2 * np.ceil(x / 2).astype(int), N_MIN, N_MAX) + 0 * np.asarray(nu, int)
+
+
+def error_estimate(tail_value: ArrayLike, twist_angle: ArrayLike) -> NDArray[np.float64]:
+    """Estimated relative error of p* from the mode's Chebyshev tail (see module docstring).
+
+        estimate = max(ERR_LINEAR * tail, ERR_QUADRATIC * tail^2) + eps (32 + Omega^2 / 4)
+
+    Calibrated against the mpmath characteristic equation (:mod:`spectral_rod.characteristic`)
+    for Omega in {0, 0.5, ..., 300}, nu in {1, 1.1, 1.5, 2, 4, 10, 100} and every even degree
+    from 8 until the tail is below 1e-13 (2,120 cases): the discretisation error was at most
+    3.3e-4 tail for tail < 1e-5 and at most 33 tail^2 for 1e-5 <= tail < 1e-2, so the two
+    constants carry safety factors 1.5 and 6; the round-off floor (from the inverse pencil's
+    Omega^2 terms) was at most 0.9 times the last term. With tail >= 1e-2 the mode is not
+    resolved and the estimate (>= 2e-2) only says so.
+    """
+    t = np.asarray(tail_value, dtype=float)
+    om = np.asarray(twist_angle, dtype=float)
+    return np.maximum(ERR_LINEAR * t, ERR_QUADRATIC * t**2) + roundoff_floor(om)
+
+
+def roundoff_floor(twist_angle: ArrayLike) -> NDArray[np.float64]:
+    """Round-off part of :func:`error_estimate`: eps (32 + Omega^2 / 4), measured (see there)."""
+    om = np.asarray(twist_angle, dtype=float)
+    return EPS * (32.0 + 0.25 * om**2)
 
 
 def _lowest_physical(theta: NDArray[np.complex128]) -> NDArray[np.int_]:
@@ -178,60 +237,292 @@ def _lowest_physical(theta: NDArray[np.complex128]) -> NDArray[np.int_]:
     return np.argmax(np.where(ok, theta.real, -np.inf), axis=-1)
 
 
-def _mode_tail(op: FamilyOperator, c: NDArray[np.generic]) -> float:
-    """Coefficient tail of the mode (omega1, omega2), relative to the larger field.
+def _physical_eig(m: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Largest real positive theta of each matrix and its eigenvector by full ``eig`` (the rule).
 
-    A field that vanishes (omega2 at zero twist) has no meaningful tail of its own.
+    theta = nan where no eigenvalue passes the rule.
     """
-    c1, c2 = op.split(c)
-    scale = max(np.abs(c1).max(), np.abs(c2).max())
-    if scale == 0.0:
-        return math.inf
-    return max(tail(c1, op.basis1.parity) * np.abs(c1).max() / scale,
-               tail(c2, op.basis2.parity) * np.abs(c2).max() / scale)
-
-
-def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np.float64]
-                 ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
-    """Lowest physical lambda = pi^2 p, its mode's coefficient tail, and the eigenvectors.
-
-    Solves the inverse pencil A^{-1} B (eigenvalues theta = 1/lambda): its matrices are O(1) and
-    spurious modes land near theta = 0, far from the physical theta = 1/lambda_min.
-    Returns lambda = inf where no eigenvalue passes the rule.
-    """
-    op = family_operator(n, family)
-    a, b = op.pencil(twist, nu)
-    theta, vec = np.linalg.eig(np.linalg.solve(a, b))
+    theta, vec = np.linalg.eig(m)
     idx = _lowest_physical(theta)
     rows = np.arange(theta.shape[0])
     th = theta[rows, idx]
     valid = (np.abs(th.imag) <= IMAG_REL * np.abs(th)) & (th.real > 0)
-    v = vec[rows, :, idx].real
-    tails = np.array([_mode_tail(op, vi) for vi in v])
-    lam = np.where(valid, 1.0 / np.where(valid, th.real, 1.0), np.inf)
-    return lam, np.where(valid, tails, np.inf), v
+    return np.where(valid, th.real, np.nan), vec[rows, :, idx].real
 
 
-def _solve_points(twist: NDArray[np.float64], nu: NDArray[np.float64], n: NDArray[np.int_]):
-    """p*, family index and tail for flat arrays of points at the given degrees."""
+@dataclass(frozen=True)
+class ModalFamily:
+    """One parity family in the eigenbasis of its uncoupled second-derivative operators.
+
+    S_i = -4 V_i^{-1} D2_i (the collocated -d^2/ds^2 with omega = 0 at the ends; real spectrum
+    ~ (j pi)^2, eigenvector matrices U_i with condition numbers <= 21 up to n = 256) is
+    diagonalised once per degree: S_i = U_i diag(Lambda_i) U_i^{-1}. With c_i = U_i z_i and the
+    rows multiplied by U_i^{-1} V_i^{-1}, the pencil (A, B) becomes the similar standard problem
+
+        K z = lambda z,   K = diag(Lambda_1 + Omega^2, nu (Lambda_2 + Omega^2))
+                              + Omega [[0, 4 nu G12], [-4 G21, 0]],
+
+    G12 = U_1^{-1} V_1^{-1} C12 U_2, G21 = U_2^{-1} V_2^{-1} C21 U_1 (C = the coupling blocks of
+    :class:`FamilyOperator`): diagonal plus an Omega-proportional coupling, so shifted solves
+    need only a Schur complement of the omega2 block (half the size).
+    """
+
+    op: FamilyOperator
+    lam1: NDArray[np.float64]  # Lambda_1 (k1,)
+    lam2: NDArray[np.float64]  # Lambda_2 (k2,)
+    u1: NDArray[np.float64]  # c1 = U_1 z1
+    u2: NDArray[np.float64]
+    left1: NDArray[np.float64]  # U_1^{-1} V_1^{-1}: left eigenvectors y1^T = w1^T left1
+    left2: NDArray[np.float64]
+    g12: NDArray[np.float64]  # (k1, k2)
+    g21: NDArray[np.float64]  # (k2, k1)
+    outer: NDArray[np.float64]  # (k1, k2 * k2): G21[:, j] (x) G12[j, :]
+
+
+@lru_cache(maxsize=64)
+def modal_family(n: int, family: str) -> ModalFamily:
+    """Diagonalise the uncoupled operators of (n, family) once (see :class:`ModalFamily`)."""
+    op = family_operator(n, family)
+    b1, b2 = op.basis1, op.basis2
+    lam1, u1 = _real_eig(-4.0 * np.linalg.solve(b1.value, b1.d2))
+    lam2, u2 = _real_eig(-4.0 * np.linalg.solve(b2.value, b2.d2))
+    left1 = np.linalg.solve(u1, np.linalg.inv(b1.value))
+    left2 = np.linalg.solve(u2, np.linalg.inv(b2.value))
+    g12 = left1 @ op.coupling12 @ u2
+    g21 = left2 @ op.coupling21 @ u1
+    outer = np.einsum("ij,jk->jik", g21, g12).reshape(g12.shape[0], -1)
+    return ModalFamily(op, lam1, lam2, u1, u2, left1, left2, g12, g21, outer)
+
+
+def _real_eig(s: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Eigen-decomposition of a matrix with a real spectrum, ascending."""
+    lam, u = np.linalg.eig(s)
+    if np.abs(lam.imag).max() > 1e-8 * np.abs(lam).max():
+        raise ArithmeticError("second-derivative collocation operator with complex spectrum")
+    order = np.argsort(lam.real)
+    return lam.real[order], u.real[:, order]
+
+
+Pair = tuple[NDArray[np.float64], NDArray[np.float64]]  # (omega1 block, omega2 block) rows
+
+
+@dataclass(frozen=True)
+class _ShiftedModal:
+    """K - SHIFT at a batch of points, factorised through the omega2-block Schur complement
+
+        S = D2 - SHIFT + 16 nu Omega^2 G21 (D1 - SHIFT)^{-1} G12   (one LAPACK inverse per point,
+                                                                     of size ~ n/2).
+    """
+
+    mf: ModalFamily
+    om: NDArray[np.float64]  # (P, 1)
+    nu: NDArray[np.float64]  # (P, 1)
+    d1: NDArray[np.float64]  # (P, k1) diagonal of block 1 of K
+    d2: NDArray[np.float64]  # (P, k2)
+    schur_inv: NDArray[np.float64]  # (P, k2, k2)
+
+    @classmethod
+    def at(cls, mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np.float64]
+           ) -> _ShiftedModal:
+        om, nu = twist[:, None], nu[:, None]
+        d1 = mf.lam1 + om**2
+        d2 = nu * (mf.lam2 + om**2)
+        k2 = d2.shape[1]
+        schur = ((16.0 * nu * om**2 / (d1 - SHIFT)) @ mf.outer).reshape(-1, k2, k2)
+        schur[:, np.arange(k2), np.arange(k2)] += d2 - SHIFT
+        return cls(mf, om, nu, d1, d2, np.linalg.inv(schur))
+
+    def take(self, idx: NDArray[np.int_]) -> _ShiftedModal:
+        """The points `idx` only."""
+        return _ShiftedModal(self.mf, self.om[idx], self.nu[idx], self.d1[idx], self.d2[idx],
+                             self.schur_inv[idx])
+
+    def solve(self, b: Pair) -> Pair:
+        """(K - SHIFT)^{-1} b for each row b."""
+        u1 = b[0] / (self.d1 - SHIFT)
+        z2 = np.matvec(self.schur_inv, b[1] + 4.0 * self.om * (u1 @ self.mf.g21.T))
+        return u1 - 4.0 * self.nu * self.om * (z2 @ self.mf.g12.T) / (self.d1 - SHIFT), z2
+
+    def solve_transposed(self, b: Pair) -> Pair:
+        """(K - SHIFT)^{-T} b for each row b (its Schur complement is S^T)."""
+        u1 = b[0] / (self.d1 - SHIFT)
+        z2 = np.vecmat(b[1] - 4.0 * self.nu * self.om * (u1 @ self.mf.g12), self.schur_inv)
+        return u1 + 4.0 * self.om * (z2 @ self.mf.g21) / (self.d1 - SHIFT), z2
+
+    def apply(self, z: Pair) -> Pair:
+        """K z for each row z."""
+        return (self.d1 * z[0] + 4.0 * self.nu * self.om * (z[1] @ self.mf.g12.T),
+                self.d2 * z[1] - 4.0 * self.om * (z[0] @ self.mf.g21.T))
+
+    def apply_transposed(self, z: Pair) -> Pair:
+        """K^T z for each row z."""
+        return (self.d1 * z[0] - 4.0 * self.om * (z[1] @ self.mf.g21),
+                self.d2 * z[1] + 4.0 * self.nu * self.om * (z[0] @ self.mf.g12))
+
+
+def _dot(a: Pair, b: Pair) -> NDArray[np.float64]:
+    return np.vecdot(a[0], b[0]) + np.vecdot(a[1], b[1])
+
+
+def _normalised(a: Pair) -> Pair:
+    s = 1.0 / np.sqrt(_dot(a, a))[:, None]
+    return a[0] * s, a[1] * s
+
+
+def lowest_eigenpair(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np.float64],
+                     rtol: float = POWER_RTOL, ceiling: NDArray[np.float64] | None = None,
+                     max_steps: int = POWER_STEPS
+                     ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64],
+                                NDArray[np.bool_], NDArray[np.bool_]]:
+    """Eigenvalue lambda of K nearest above SHIFT = 0.95 pi^2, its right and left eigenvectors
+    z, w, and whether it converged or was shown to lie above ``ceiling``, for a batch of points.
+
+    Shift-and-invert power iteration on right and left vectors together: the contraction per
+    step is (lambda_1 - SHIFT) / (lambda_2 - SHIFT) (0.01-0.2 on Figure 1's range). The
+    eigenvalue is the two-sided Rayleigh quotient w^T K z / w^T z; its error is estimated to
+    first order by |r| |l| / |w^T z| with the residuals r = K z - lambda z, l = K^T w - lambda w
+    (unit z, w). A point is done when that estimate is <= rtol lambda and lambda >= SHIFT
+    (converged), or when lambda - 100 estimate is above ``ceiling`` (only needed to be shown
+    higher than another family's eigenvalue: "above", lambda approximate). Points are dropped
+    from the iteration as they finish.
+    """
+    sk = _ShiftedModal.at(mf, twist, nu)
+    k1 = mf.lam1.size
+    x = _normalised(np.split(_start_vector(k1 + mf.lam2.size)[None, :] * np.ones((twist.size, 1)),
+                             [k1], axis=1))
+    y = x
+    lam = np.full(twist.size, np.nan)
+    vec = np.zeros((twist.size, k1 + mf.lam2.size))
+    left = np.zeros_like(vec)
+    ok = np.zeros(twist.size, dtype=bool)
+    above = np.zeros(twist.size, dtype=bool)
+    active = np.arange(twist.size)
+    for step in range(1, max_steps + 1):
+        x = sk.solve(x)  # |(K - SHIFT)^{-1}| <= ~20: normalising at the checks is enough
+        y = sk.solve_transposed(y)
+        if step < FIRST_CHECK or step % 2:
+            continue
+        x, y = _normalised(x), _normalised(y)
+        kx, ky = sk.apply(x), sk.apply_transposed(y)
+        yx = _dot(y, x)
+        rq = _dot(y, kx) / yx
+        rx, ry = (kx[0] - rq[:, None] * x[0], kx[1] - rq[:, None] * x[1]), \
+            (ky[0] - rq[:, None] * y[0], ky[1] - rq[:, None] * y[1])
+        bound = np.sqrt(_dot(rx, rx) * _dot(ry, ry)) / np.abs(yx)
+        conv = (bound <= rtol * np.abs(rq)) & (rq >= SHIFT)
+        high = np.zeros_like(conv) if ceiling is None else \
+            ~conv & (rq - 100.0 * bound > ceiling[active])
+        done = conv | high
+        if step + 2 > max_steps:
+            done[:] = True
+        fin = active[done]
+        lam[fin], ok[fin], above[fin] = rq[done], conv[done], high[done]
+        vec[fin] = np.hstack([x[0][done], x[1][done]])
+        left[fin] = np.hstack([y[0][done], y[1][done]])
+        if done.all():
+            break
+        keep = np.flatnonzero(~done)
+        active = active[keep]
+        sk = sk.take(keep)
+        x, y = (x[0][keep], x[1][keep]), (y[0][keep], y[1][keep])
+    return lam, vec, left, ok, above
+
+
+@lru_cache(maxsize=64)
+def _start_vector(k: int) -> NDArray[np.float64]:
+    """A fixed generic start vector (no special structure that could be orthogonal to a mode)."""
+    return np.random.default_rng(20240607).standard_normal(k)
+
+
+def mode_tails(op: FamilyOperator, vectors: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Coefficient tail (:func:`spectral_rod.chebyshev.tail`) of each mode (omega1, omega2),
+    the larger of the two fields' tails, each relative to the larger field's maximum.
+
+    A field that vanishes (omega2 at zero twist) has no meaningful tail of its own.
+    """
+    k1 = op.sizes[0]
+    c1 = vectors[:, :k1] @ op.basis1.coefficients.T  # (P, n + 1) Chebyshev coefficients
+    c2 = vectors[:, k1:] @ op.basis2.coefficients.T
+    a1 = np.abs(c1[:, op.basis1.parity::2])
+    a2 = np.abs(c2[:, op.basis2.parity::2])
+    scale = np.maximum(a1.max(axis=1), a2.max(axis=1))
+    last = np.maximum(a1[:, -2:].max(axis=1), a2[:, -2:].max(axis=1))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(scale > 0, last / scale, np.inf)
+
+
+def _pencil_rayleigh_quotient(op: FamilyOperator, twist: NDArray[np.float64],
+                              nu: NDArray[np.float64], left: NDArray[np.float64],
+                              right: NDArray[np.float64]) -> NDArray[np.float64]:
+    """y^T A x / y^T B x per point, with A = sum_i coef_i P_i (:attr:`FamilyOperator.pieces`)."""
+    m = right.shape[1]
+    px = (right @ op.pieces.reshape(6 * m, m).T).reshape(-1, 6, m)  # P_i x for each point
+    coef = np.stack([np.ones_like(twist), twist**2, nu, nu * twist**2, nu * twist, twist], axis=1)
+    return np.vecdot(coef, np.vecdot(left[:, None, :], px)) / np.vecdot(left, right @ op.mass.T)
+
+
+def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np.float64],
+                 *, rtol: float = POWER_RTOL, ceiling: NDArray[np.float64] | None = None
+                 ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
+    """Lowest physical lambda = pi^2 p, its mode's coefficient tail, and the eigenvectors
+    (coefficients c of :class:`FamilyOperator`), for arrays of points at degree n.
+
+    All points at once by shift-and-invert iteration in the modal form of the family
+    (:func:`lowest_eigenpair`, relative accuracy `rtol`): the eigenvalue nearest above
+    SHIFT = 0.95 pi^2. Every physical eigenvalue is >= pi^2 (p* >= 1), so that is the lowest
+    physical one unless a spurious eigenvalue is nearer; where the iteration has not converged
+    to a real value >= SHIFT, the full ``eig`` of the inverse pencil A^{-1} B with the rule of
+    the module docstring decides (tests compare both on a grid). Points whose eigenvalue is
+    shown to lie above ``ceiling`` (e.g. the other family's) stop early: their lambda is then
+    only approximate (but above ``ceiling``). Returns lambda = inf where no eigenvalue passes
+    the rule.
+    """
+    mf = modal_family(n, family)
+    op = mf.op
+    lam, z, w, ok, above = lowest_eigenpair(mf, twist, nu, rtol=rtol, ceiling=ceiling)
+    k1 = mf.lam1.size
+    vec = np.hstack([z[:, :k1] @ mf.u1.T, z[:, k1:] @ mf.u2.T])
+    # the eigenvalue from the O(1) pencil itself: the two-sided Rayleigh quotient (its error is
+    # the product of the vectors' errors; K carries round-off ~ eps n^4 in its diagonal)
+    left = np.hstack([w[:, :k1] @ mf.left1, w[:, k1:] @ mf.left2])
+    lam = _pencil_rayleigh_quotient(op, twist, nu, left, vec)
+    bad = np.flatnonzero(~(ok | above))
+    if bad.size:  # the full eig with the rule decides
+        a, b = op.pencil(twist[bad], nu[bad])
+        theta, vec[bad] = _physical_eig(np.linalg.solve(a, b))
+        valid = np.isfinite(theta) & (theta > 0)
+        lam[bad] = np.where(valid, 1.0 / np.where(valid, theta, 1.0), np.inf)
+    tails = np.where(np.isfinite(lam), mode_tails(op, vec), np.inf)
+    return lam, tails, vec
+
+
+def _solve_points(twist: NDArray[np.float64], nu: NDArray[np.float64], n: NDArray[np.int_],
+                  tol: float = 1e-12):
+    """p*, family index and tail for flat arrays of points at the given degrees.
+
+    The symmetric family first; the antisymmetric one then only has to be resolved where it
+    is not clearly above (1 + 1e-6 times) the symmetric eigenvalue.
+    """
     p = np.empty(twist.size)
     fam = np.empty(twist.size, dtype=int)
-    err = np.empty(twist.size)
+    tails = np.empty(twist.size)
+    rtol = max(0.01 * tol, POWER_RTOL)
     for deg in np.unique(n):
         sel = np.flatnonzero(n == deg)
         lam = np.empty((2, sel.size))
-        tails = np.empty((2, sel.size))
-        for f, family in enumerate(FAMILIES):
-            lam[f], tails[f], _ = solve_family(int(deg), family, twist[sel], nu[sel])
+        tl = np.empty((2, sel.size))
+        lam[0], tl[0], _ = solve_family(int(deg), FAMILIES[0], twist[sel], nu[sel], rtol=rtol)
+        lam[1], tl[1], _ = solve_family(int(deg), FAMILIES[1], twist[sel], nu[sel], rtol=rtol,
+                                        ceiling=lam[0] * (1 + 1e-6))
         best = np.argmin(lam, axis=0)
         cols = np.arange(sel.size)
         p[sel] = lam[best, cols] / np.pi**2
         fam[sel] = best
-        # if the two families are within the tolerance of each other either could be lowest;
+        # if the two families are within 1e-6 of each other either could be lowest;
         # both must then be resolved
-        err[sel] = np.where(np.abs(lam[0] - lam[1]) <= 1e-6 * lam.min(axis=0),
-                            tails.max(axis=0), tails[best, cols])
-    return p, fam, err
+        tails[sel] = np.where(np.abs(lam[0] - lam[1]) <= 1e-6 * lam.min(axis=0),
+                              tl.max(axis=0), tl[best, cols])
+    return p, fam, tails
 
 
 def collocation_critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None,
@@ -245,16 +536,18 @@ def collocation_critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int |
         p* is even in it (reflection of the twist sense), so negative angles are allowed.
     nu : I2 / I1 = A2 / A1 >= 1 (the paper's convention A1 <= A2).
     n : Chebyshev degree (even, 8..512). ``None`` chooses it automatically: an a priori degree
-        from the mode's wavenumber (:func:`initial_degree`), then the Chebyshev coefficients of
-        the computed buckling mode (omega1, omega2) must have decayed below ``tol`` in their
-        last two entries; if not, the degree is raised by ~40 % until they do or n = 512.
+        from the mode's wavenumber (:func:`initial_degree`), then the error estimate from the
+        Chebyshev coefficients of the computed buckling mode (:func:`error_estimate`) must be
+        <= ``tol``; if not, the degree is raised by ~12 % until it is or n = 512 (no raise
+        where the round-off floor eps (32 + Omega^2/4) alone exceeds ``tol``).
     tol : requested relative accuracy of p* (1e-14..1e-2).
     full_output : return a :class:`CriticalLoad` with the degree used, the error estimate,
         the mode family and a converged flag, instead of p* alone.
 
     Returns p* as a float for scalar input, otherwise an ndarray of the broadcast shape.
-    If ``tol`` is not met (cap reached), a :class:`ConvergenceWarning` is issued and the result
-    is flagged ``converged=False`` in the full output; it is never returned silently.
+    If ``tol`` is not met (cap or round-off floor), a :class:`ConvergenceWarning` is issued
+    and the result is flagged ``converged=False`` in the full output; it is never returned
+    silently.
     """
     twist = check_twist(twist_angle)
     nu_arr = check_nu(nu)
@@ -264,26 +557,29 @@ def collocation_critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int |
     nv = np.broadcast_to(nu_arr, shape).ravel()
     if n is not None:
         deg = np.full(tw.size, check_resolution(n, minimum=N_MIN, maximum=N_MAX))
-        p, fam, err = _solve_points(tw, nv, deg)
+        p, fam, tails = _solve_points(tw, nv, deg, tol)
+        err = error_estimate(tails, tw)
     else:
         deg = initial_degree(tw, nv, tol)
-        p, fam, err = _solve_points(tw, nv, deg)
-        todo = np.flatnonzero(err > tol * TAIL_SAFETY)
+        p, fam, tails = _solve_points(tw, nv, deg, tol)
+        err = error_estimate(tails, tw)
+        # raise the degree where the estimate misses tol, unless round-off alone does
+        todo = np.flatnonzero((err > tol) & (deg < N_MAX) & (roundoff_floor(tw) < tol))
         while todo.size:
-            grow = deg[todo] < N_MAX
-            todo = todo[grow]
-            if not todo.size:
-                break
-            deg[todo] = np.minimum(N_MAX, 2 * np.ceil(deg[todo] * 0.7).astype(int))
-            p[todo], fam[todo], err[todo] = _solve_points(tw[todo], nv[todo], deg[todo])
-            todo = todo[err[todo] > tol * TAIL_SAFETY]
-    converged = err <= tol * TAIL_SAFETY
+            deg[todo] = np.minimum(N_MAX, deg[todo] + 2 * np.ceil(0.06 * deg[todo] + 1)
+                                   .astype(int))
+            p[todo], fam[todo], tails[todo] = _solve_points(tw[todo], nv[todo], deg[todo],
+                                                            tol)
+            err[todo] = error_estimate(tails[todo], tw[todo])
+            todo = todo[(err[todo] > tol) & (deg[todo] < N_MAX)]
+    converged = err <= tol
     if n is None and not converged.all():
         bad = np.flatnonzero(~converged)
         warnings.warn(
-            f"critical_load: tol={tol:g} not met at {bad.size} point(s) (n capped at {N_MAX}; "
-            f"worst error estimate {err[bad].max():.2e} at twist_angle={tw[bad[0]]:g}, "
-            f"nu={nv[bad[0]]:g})", ConvergenceWarning, stacklevel=2)
+            f"critical_load: tol={tol:g} not met at {bad.size} point(s) (n capped at {N_MAX}, "
+            f"round-off floor eps (32 + Omega^2/4); worst error estimate {err[bad].max():.2e} "
+            f"at twist_angle={tw[bad[0]]:g}, nu={nv[bad[0]]:g})", ConvergenceWarning,
+            stacklevel=2)
     if full_output:
         return CriticalLoad(p_star=p.reshape(shape), n=deg.reshape(shape),
                             error_estimate=err.reshape(shape),
@@ -365,7 +661,8 @@ def buckling_mode(twist_angle: float, nu: float, *, n: int | None = None, tol: f
     twist = float(twist_angle)
     deg, family = int(res.n), str(res.family)
     op = family_operator(deg, family)
-    _, _, vec = solve_family(deg, family, np.array([abs(twist)]), np.array([float(nu)]))
+    a, b = op.pencil(abs(twist), float(nu))
+    _, vec = _physical_eig(np.linalg.solve(a, b)[None])  # full eig: an exact eigenvector
     c1, c2 = op.split(vec[0])
     if twist < 0:  # p* is even in Omega; the mode of -Omega is the mirror image (omega2 -> -)
         c2 = -c2

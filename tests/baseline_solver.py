@@ -1,0 +1,45 @@
+"""The obvious implementation of p*(Omega, nu) -- the speed baseline of the benchmarks (issue 5).
+
+What an engineer writes first from Trefethen's *Spectral Methods in MATLAB*: the differentiation
+matrix of ``cheb.m`` at degree n = 24, the dense 2-field operator of Eq. ``inst1`` in
+(omega1, omega2) built per point (omega = 0 at both ends by deleting the boundary rows and
+columns), ``numpy.linalg.eigvals`` on it, and the lowest positive real eigenvalue
+lambda = pi^2 p* taken. No parity split, no reuse between points, no resolution control.
+
+Kept out of the package on purpose: it is the yardstick, not a method we offer.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import NDArray
+
+
+def cheb(n: int) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Trefethen's cheb.m: Chebyshev points x_j = cos(j pi / n) and the differentiation matrix."""
+    x = np.cos(np.pi * np.arange(n + 1) / n)
+    c = np.hstack([2.0, np.ones(n - 1), 2.0]) * (-1.0) ** np.arange(n + 1)
+    dx = x[:, None] - x[None, :]
+    d = np.outer(c, 1.0 / c) / (dx + np.eye(n + 1))
+    return d - np.diag(d.sum(axis=1)), x
+
+
+def baseline_critical_load(twist_angle: float, nu: float, n: int = 24) -> float:
+    """p* at one point: dense operator of Eq. ``inst1`` on s in [0, 1] and ``eigvals``."""
+    d, _ = cheb(n)
+    d1 = 2.0 * d  # d/ds with s = (x + 1) / 2
+    d2 = (d1 @ d1)[1:-1, 1:-1]
+    d1 = d1[1:-1, 1:-1]
+    eye = np.eye(n - 1)
+    om = twist_angle
+    op = np.block([[-d2 + om**2 * eye, 2.0 * nu * om * d1],
+                   [-2.0 * om * d1, nu * (-d2 + om**2 * eye)]])
+    lam = np.linalg.eigvals(op)
+    ok = (np.abs(lam.imag) <= 1e-8 * np.abs(lam)) & (lam.real > 0)
+    return float(lam.real[ok].min() / np.pi**2)
+
+
+def baseline_sweep(twist: NDArray[np.float64], nu: NDArray[np.float64]) -> NDArray[np.float64]:
+    """The baseline at every point, one after the other."""
+    return np.array([baseline_critical_load(float(t), float(v))
+                     for t, v in zip(twist, nu, strict=True)])
