@@ -4,11 +4,24 @@ tables, claims ledger and report from code."""
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 import time
 from pathlib import Path
 
-from reproduce._runner import DEFAULT_OUT, SCENE_MODULES, load_scene, log_stderr, run_scenes
+# Every matrix in the pipeline is small (tens to hundreds of rows): a multi-threaded BLAS only
+# adds synchronisation, 2-3x slower on a busy 2-core machine. Set before numpy is first imported
+# (the scenes import it lazily); an explicit setting in the environment wins.
+for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_var, "1")
+
+from reproduce._runner import (  # noqa: E402 - after the BLAS thread setting
+    DEFAULT_OUT,
+    SCENE_MODULES,
+    load_scene,
+    log_stderr,
+    run_scenes,
+)
 
 
 def _parser() -> argparse.ArgumentParser:

@@ -4,7 +4,9 @@ spontaneous twist and curvature*.
 Straight rod (paper's Eq. ``inst1``, hinged ends), dimensionless: s/L in [0, 1], total twist
 angle Omega(L) = omega30 L, nu = I2/I1 >= 1, p* = P_cr / (pi^2 A1 / L^2).
 
-* :func:`critical_load` -- Chebyshev collocation, automatic resolution.
+* :func:`critical_load` -- Chebyshev collocation with automatic resolution; very large twist is
+  routed to the characteristic equation, near-degenerate points to the increment.
+* :func:`critical_load_increment` -- p* - 1 to full relative accuracy as nu -> 1 or twist -> 0.
 * :func:`buckling_mode` -- the critical mode (omega1, omega2, centreline) and wavenumbers.
 * :func:`characteristic_critical_load` -- the paper's characteristic equation in extended
   precision (the independent reference); :func:`family_critical_load` per mode family and
@@ -32,6 +34,7 @@ from spectral_rod.characteristic import (
     family_crossing,
 )
 from spectral_rod.critical import critical_load
+from spectral_rod.increment import critical_load_increment
 from spectral_rod.ring import ThresholdTwist, ring_formula_load, threshold_twist
 from spectral_rod.ring_stability import (
     RingBuckling,
@@ -59,6 +62,7 @@ __all__ = [
     "buckling_mode",
     "characteristic_critical_load",
     "critical_load",
+    "critical_load_increment",
     "critical_wavenumbers",
     "crossing_closed_form",
     "family_critical_load",

@@ -121,7 +121,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from spectral_rod._validation import check_nu
+from spectral_rod._validation import check_nu, check_twist
 
 __all__ = [
     "BetaWindow",
@@ -174,9 +174,9 @@ def large_twist_expansion(twist_angle: float, nu: float, *, order: int = 4,
     """
     if order not in (0, 2, 3, 4):
         raise ValueError(f"order must be 0, 2, 3 or 4, got {order!r}")
-    om = abs(float(twist_angle))
+    om = abs(float(check_twist(twist_angle)))
     if om == 0.0:
-        raise ValueError("the large-twist expansion needs a non-zero twist")
+        raise ValueError("twist_angle must be nonzero for the large-twist expansion")
     c = large_twist_coefficients(nu)
     if family is None:
         ripple = -abs(math.sin(om))

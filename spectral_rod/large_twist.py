@@ -41,34 +41,12 @@ from scipy.optimize import brentq
 
 from spectral_rod._validation import check_nu, check_twist
 
-__all__ = ["characteristic_double", "determinants", "large_twist_asymptote",
-           "large_twist_critical_load", "large_twist_limit"]
+__all__ = ["characteristic_double", "determinants", "large_twist_critical_load"]
 
 FAMILIES = ("symmetric", "antisymmetric")
 #: Scan step in p for sign changes (the reference uses 1/128; roots of one family are >= O(1)
 #: apart for large twist, the two families' lowest roots are bracketed separately).
 SCAN_STEP = 1.0 / 256
-
-
-def large_twist_limit(nu: ArrayLike) -> NDArray[np.float64] | float:
-    """p_inf = 2 nu / (1 + nu): the limit of p* as Omega(L) -> infinity (harmonic mean)."""
-    nu_arr = check_nu(nu)
-    out = 2.0 * nu_arr / (1.0 + nu_arr)
-    return float(out) if out.shape == () else out
-
-
-def large_twist_asymptote(twist_angle: ArrayLike, nu: ArrayLike) -> NDArray[np.float64] | float:
-    """p_inf [1 - pi^2 (nu-1)^2 / (4 (nu+1)^2 Omega^2)]: limit and leading correction.
-
-    Error O(Omega^-3), oscillatory (module docstring). Omega(L) = 0 is not allowed here.
-    """
-    om = check_twist(twist_angle)
-    nu_arr = check_nu(nu)
-    if np.any(om == 0.0):
-        raise ValueError("twist_angle must be nonzero for the large-twist asymptote")
-    p_inf = 2.0 * nu_arr / (1.0 + nu_arr)
-    out = p_inf * (1.0 - np.pi**2 * (nu_arr - 1.0) ** 2 / (4.0 * (nu_arr + 1.0) ** 2 * om**2))
-    return float(out) if out.shape == () else out
 
 
 def _cs(x: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:

@@ -61,14 +61,8 @@ A3 = e (1 + nu) in these units.
 
 from __future__ import annotations
 
-import contextlib
-import ctypes
-import glob
 import math
-import os
-from collections.abc import Iterator
 from dataclasses import dataclass, field
-from functools import lru_cache
 
 import numpy as np
 import scipy.linalg
@@ -317,41 +311,6 @@ def _prepare(N: int, nu: float, e_ratio: float, load: str, freqs: list[int],
                      Gz * d[:, None] * d[None, :], rank)
 
 
-@lru_cache(maxsize=1)
-def _scipy_openblas() -> tuple[object, object] | None:
-    """(get, set) of the thread count of the OpenBLAS that scipy.linalg's wheel bundles, or
-    None when it cannot be found (other builds: then nothing is changed)."""
-    try:
-        libdir = os.path.dirname(scipy.__file__) + ".libs"
-        for path in glob.glob(os.path.join(libdir, "libscipy_openblas*.so*")):
-            lib = ctypes.CDLL(path)
-            get = lib.scipy_openblas_get_num_threads
-            set_ = lib.scipy_openblas_set_num_threads
-            get.restype, set_.argtypes = ctypes.c_int, [ctypes.c_int]
-            return get, set_
-    except (OSError, AttributeError):
-        pass
-    return None
-
-
-@contextlib.contextmanager
-def _single_threaded_lapack() -> Iterator[None]:
-    """Run scipy's LAPACK on one thread: the matrices here are tiny (tens of rows) and a
-    threaded OpenBLAS only adds synchronisation (2-3x slower on a busy 2-core machine).
-    The previous thread count is restored afterwards; a no-op if the library is not found."""
-    api = _scipy_openblas()
-    if api is None:
-        yield
-        return
-    get, set_ = api
-    previous = int(get())  # type: ignore[operator]
-    set_(1)  # type: ignore[operator]
-    try:
-        yield
-    finally:
-        set_(previous)  # type: ignore[operator]
-
-
 def _generalised_eigh(Ks: NDArray[np.float64], Gs: NDArray[np.float64]
                   ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """G y = mu K y for a stack of symmetric pairs with K positive definite (LAPACK sygv via
@@ -373,8 +332,7 @@ def solve_families(N: int, nu: float, e_ratio: float, load: str, families: dict[
                    fields: tuple[str, ...] = FIELDS) -> dict[int, FamilySolution]:
     """Smallest positive q of G x = (1/q) K x on the constraint subspace of each family
     (families of equal size are stacked together)."""
-    with _single_threaded_lapack():
-        return _solve_families(N, nu, e_ratio, load, families, fields)
+    return _solve_families(N, nu, e_ratio, load, families, fields)
 
 
 def _solve_families(N: int, nu: float, e_ratio: float, load: str,

@@ -288,15 +288,3 @@ def test_solver_bad_input(kwargs: dict, exc: type[Exception], word: str) -> None
     if set(kwargs) <= {"N", "nu", "e_ratio", "load"}:
         with pytest.raises(exc, match=word):
             ring_critical_load(N, nu, **args)
-
-
-def test_lapack_thread_count_restored() -> None:
-    import spectral_rod.ring_stability as rs
-
-    api = rs._scipy_openblas()
-    if api is None:
-        pytest.skip("scipy's bundled OpenBLAS not found: the solver leaves threads alone")
-    get, _ = api
-    before = get()
-    ring_critical_load(2, 2.0)
-    assert get() == before

@@ -7,15 +7,15 @@ import math
 import numpy as np
 import pytest
 
+from spectral_rod.asymptotics import large_twist_expansion, large_twist_limit
 from spectral_rod.critical import critical_load
 from spectral_rod.figure_data import load_figure1
 from spectral_rod.increment import critical_load_increment
-from spectral_rod.large_twist import large_twist_asymptote, large_twist_limit
 
 PUBLIC = {
     "critical_load": critical_load,
     "critical_load_increment": critical_load_increment,
-    "large_twist_asymptote": large_twist_asymptote,
+    "large_twist_expansion": large_twist_expansion,
 }
 
 
@@ -77,7 +77,7 @@ def test_twist_ranges_are_stated():
     with pytest.raises(ValueError, match=r"\|twist_angle\| <= 1000"):
         critical_load_increment(1500.0, 1.5)
     with pytest.raises(ValueError, match="nonzero"):
-        large_twist_asymptote(0.0, 1.5)
+        large_twist_expansion(0.0, 1.5)
 
 
 def test_negative_twist_is_accepted_and_even():
