@@ -77,11 +77,13 @@ N_MIN, N_MAX = 8, 512
 IMAG_REL = 1.0e-8
 EPS = float(np.finfo(float).eps)
 #: Error model of :func:`error_estimate` (calibrated against the mpmath reference).
-ERR_LINEAR, ERR_QUADRATIC = 5.0e-4, 200.0
+ERR_LINEAR, ERR_QUADRATIC, ROUNDOFF_TWIST = 5.0e-4, 200.0, 0.3
 #: Shift of the inverse iteration: below every physical eigenvalue (lambda >= pi^2, p* >= 1).
 SHIFT = 0.95 * math.pi**2
 #: Inverse iteration: first-order error bound of lambda accepted (relative), and step cap.
 POWER_RTOL, POWER_STEPS, FIRST_CHECK = 1.0e-15, 40, 6
+#: Above this |Omega| the final Rayleigh quotient is accumulated in extended precision.
+LONG_TWIST = 20.0
 
 
 class ConvergenceWarning(RuntimeWarning):
@@ -210,15 +212,17 @@ def initial_degree(twist_angle: NDArray[np.float64], nu: NDArray[np.float64],
 def error_estimate(tail_value: ArrayLike, twist_angle: ArrayLike) -> NDArray[np.float64]:
     """Estimated relative error of p* from the mode's Chebyshev tail (see module docstring).
 
-        estimate = max(ERR_LINEAR * tail, ERR_QUADRATIC * tail^2) + eps (32 + Omega^2 / 4)
+        estimate = max(ERR_LINEAR * tail, ERR_QUADRATIC * tail^2) + eps (32 + 0.3 Omega^2)
 
     Calibrated against the mpmath characteristic equation (:mod:`spectral_rod.characteristic`)
     for Omega in {0, 0.5, ..., 300}, nu in {1, 1.1, 1.5, 2, 4, 10, 100} and every even degree
     from 8 until the tail is below 1e-13 (2,120 cases): the discretisation error was at most
     3.3e-4 tail for tail < 1e-5 and at most 33 tail^2 for 1e-5 <= tail < 1e-2, so the two
-    constants carry safety factors 1.5 and 6; the round-off floor (from the inverse pencil's
-    Omega^2 terms) was at most 0.9 times the last term. With tail >= 1e-2 the mode is not
-    resolved and the estimate (>= 2e-2) only says so.
+    constants carry safety factors 1.5 and 6. The round-off floor (the Omega^2 terms of the
+    pencil cancel to ~lambda) was re-measured for the solver as it is (shift-and-invert, final
+    Rayleigh quotient in extended precision above |Omega| = 20) on Omega in [40, 100]: at most
+    0.19 eps Omega^2 (0.22 with the full ``eig``), hence the 0.3. With tail >= 1e-2 the mode
+    is not resolved and the estimate (>= 2e-2) only says so.
     """
     t = np.asarray(tail_value, dtype=float)
     om = np.asarray(twist_angle, dtype=float)
@@ -226,9 +230,9 @@ def error_estimate(tail_value: ArrayLike, twist_angle: ArrayLike) -> NDArray[np.
 
 
 def roundoff_floor(twist_angle: ArrayLike) -> NDArray[np.float64]:
-    """Round-off part of :func:`error_estimate`: eps (32 + Omega^2 / 4), measured (see there)."""
+    """Round-off part of :func:`error_estimate`: eps (32 + 0.3 Omega^2), measured (see there)."""
     om = np.asarray(twist_angle, dtype=float)
-    return EPS * (32.0 + 0.25 * om**2)
+    return EPS * (32.0 + ROUNDOFF_TWIST * om**2)
 
 
 def _lowest_physical(theta: NDArray[np.complex128]) -> NDArray[np.int_]:
@@ -454,11 +458,31 @@ def mode_tails(op: FamilyOperator, vectors: NDArray[np.float64]) -> NDArray[np.f
 def _pencil_rayleigh_quotient(op: FamilyOperator, twist: NDArray[np.float64],
                               nu: NDArray[np.float64], left: NDArray[np.float64],
                               right: NDArray[np.float64]) -> NDArray[np.float64]:
-    """y^T A x / y^T B x per point, with A = sum_i coef_i P_i (:attr:`FamilyOperator.pieces`)."""
+    """y^T A x / y^T B x per point, with A = sum_i coef_i P_i (:attr:`FamilyOperator.pieces`).
+
+    For |Omega| > LONG_TWIST the Omega^2 terms cancel against the others to ~lambda/Omega^2,
+    and the sums are accumulated in extended precision (``np.longdouble``): this halves the
+    round-off there (measured at Omega in [40, 100]: 0.39 -> 0.19 eps Omega^2).
+    """
+    out = _rayleigh_sums(op, twist, nu, left, right, np.float64)
+    big = np.flatnonzero(np.abs(twist) > LONG_TWIST)
+    if big.size:
+        out[big] = _rayleigh_sums(op, twist[big], nu[big], left[big], right[big],
+                                  np.longdouble)
+    return out
+
+
+def _rayleigh_sums(op: FamilyOperator, twist: NDArray[np.float64], nu: NDArray[np.float64],
+                   left: NDArray[np.float64], right: NDArray[np.float64], dtype: type
+                   ) -> NDArray[np.float64]:
     m = right.shape[1]
-    px = (right @ op.pieces.reshape(6 * m, m).T).reshape(-1, 6, m)  # P_i x for each point
-    coef = np.stack([np.ones_like(twist), twist**2, nu, nu * twist**2, nu * twist, twist], axis=1)
-    return np.vecdot(coef, np.vecdot(left[:, None, :], px)) / np.vecdot(left, right @ op.mass.T)
+    x, y = right.astype(dtype), left.astype(dtype)
+    px = (x @ op.pieces.astype(dtype).reshape(6 * m, m).T).reshape(-1, 6, m)  # P_i x
+    om, nv = twist.astype(dtype), nu.astype(dtype)
+    coef = np.stack([np.ones_like(om), om**2, nv, nv * om**2, nv * om, om], axis=1)
+    num = (coef * np.einsum("pj,pij->pi", y, px)).sum(axis=1)
+    den = np.einsum("pj,pj->p", y, x @ op.mass.astype(dtype).T)
+    return (num / den).astype(np.float64)
 
 
 def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np.float64],
@@ -514,7 +538,9 @@ def _solve_points(twist: NDArray[np.float64], nu: NDArray[np.float64], n: NDArra
         lam[0], tl[0], _ = solve_family(int(deg), FAMILIES[0], twist[sel], nu[sel], rtol=rtol)
         lam[1], tl[1], _ = solve_family(int(deg), FAMILIES[1], twist[sel], nu[sel], rtol=rtol,
                                         ceiling=lam[0] * (1 + 1e-6))
-        best = np.argmin(lam, axis=0)
+        # a tie to round-off (e.g. nu = 1 at zero twist: the Euler mode in either plane) goes
+        # to the symmetric family, whose mode is the planar one in the (u0) plane
+        best = (lam[1] < lam[0] * (1.0 - 1e-14)).astype(int)
         cols = np.arange(sel.size)
         p[sel] = lam[best, cols] / np.pi**2
         fam[sel] = best
@@ -539,7 +565,7 @@ def collocation_critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int |
         from the mode's wavenumber (:func:`initial_degree`), then the error estimate from the
         Chebyshev coefficients of the computed buckling mode (:func:`error_estimate`) must be
         <= ``tol``; if not, the degree is raised by ~12 % until it is or n = 512 (no raise
-        where the round-off floor eps (32 + Omega^2/4) alone exceeds ``tol``).
+        where the round-off floor eps (32 + 0.3 Omega^2) alone exceeds ``tol``).
     tol : requested relative accuracy of p* (1e-14..1e-2).
     full_output : return a :class:`CriticalLoad` with the degree used, the error estimate,
         the mode family and a converged flag, instead of p* alone.
@@ -577,7 +603,7 @@ def collocation_critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int |
         bad = np.flatnonzero(~converged)
         warnings.warn(
             f"critical_load: tol={tol:g} not met at {bad.size} point(s) (n capped at {N_MAX}, "
-            f"round-off floor eps (32 + Omega^2/4); worst error estimate {err[bad].max():.2e} "
+            f"round-off floor eps (32 + 0.3 Omega^2); worst error estimate {err[bad].max():.2e} "
             f"at twist_angle={tw[bad[0]]:g}, nu={nv[bad[0]]:g})", ConvergenceWarning,
             stacklevel=2)
     if full_output:
