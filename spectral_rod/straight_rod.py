@@ -404,7 +404,7 @@ def lowest_eigenpair(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np
     for step in range(1, max_steps + 1):
         x = sk.solve(x)  # |(K - SHIFT)^{-1}| <= ~20: normalising at the checks is enough
         y = sk.solve_transposed(y)
-        if step < FIRST_CHECK or step % 2:
+        if step < (FIRST_CHECK if ceiling is None else 4) or step % 2:
             continue
         x, y = _normalised(x), _normalised(y)
         kx, ky = sk.apply(x), sk.apply_transposed(y)
