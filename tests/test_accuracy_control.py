@@ -63,7 +63,7 @@ def test_resolution_grows_with_twist_and_tolerance():
 
 
 def test_round_off_floor_warns_instead_of_returning_silently():
-    # at Omega = 300 the round-off floor eps (32 + Omega^2/4) ~ 5e-12 exceeds tol = 1e-12
+    # at Omega = 300 the round-off floor eps (32 + 0.3 Omega^2) ~ 6e-12 exceeds tol = 1e-12
     assert roundoff_floor(300.0) > 1e-12
     with pytest.warns(ConvergenceWarning, match="not met"):
         res = collocation_critical_load(300.0, 1.5, tol=1e-12, full_output=True)
