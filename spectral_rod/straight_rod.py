@@ -84,6 +84,26 @@ SHIFT = 0.95 * math.pi**2
 POWER_RTOL, POWER_STEPS, FIRST_CHECK = 1.0e-15, 40, 6
 #: Above this |Omega| the final Rayleigh quotient is accumulated in extended precision.
 LONG_TWIST = 20.0
+#: Largest product handed to BLAS in one call (see :func:`_rows_matmul`).
+BLAS_BLOCK = 1 << 17
+
+
+def _rows_matmul(a: NDArray[np.floating], b: NDArray[np.floating]) -> NDArray[np.floating]:
+    """a @ b for a tall a (points x k) and a small b (k x m), as a stack of small products.
+
+    One large product would be handed to the multithreaded BLAS; its worker threads then spin
+    between calls and, on a machine whose cores are busy, slow every later call down (measured
+    2-6x on the Figure 1 sweep with one core loaded). Blocks of at most BLAS_BLOCK
+    multiply-adds stay on the calling thread.
+    """
+    p, k = a.shape
+    rows = max(1, BLAS_BLOCK // max(1, k * b.shape[1]))
+    if p <= rows:
+        return a @ b
+    pad = (-p) % rows
+    if pad:
+        a = np.concatenate([a, np.zeros((pad, k), dtype=a.dtype)])
+    return (a.reshape(-1, rows, k) @ b).reshape(-1, b.shape[1])[:p]
 
 
 class ConvergenceWarning(RuntimeWarning):
@@ -332,7 +352,7 @@ class _ShiftedModal:
         d1 = mf.lam1 + om**2
         d2 = nu * (mf.lam2 + om**2)
         k2 = d2.shape[1]
-        schur = ((16.0 * nu * om**2 / (d1 - SHIFT)) @ mf.outer).reshape(-1, k2, k2)
+        schur = _rows_matmul(16.0 * nu * om**2 / (d1 - SHIFT), mf.outer).reshape(-1, k2, k2)
         schur[:, np.arange(k2), np.arange(k2)] += d2 - SHIFT
         return cls(mf, om, nu, d1, d2, np.linalg.inv(schur))
 
@@ -344,24 +364,26 @@ class _ShiftedModal:
     def solve(self, b: Pair) -> Pair:
         """(K - SHIFT)^{-1} b for each row b."""
         u1 = b[0] / (self.d1 - SHIFT)
-        z2 = np.matvec(self.schur_inv, b[1] + 4.0 * self.om * (u1 @ self.mf.g21.T))
-        return u1 - 4.0 * self.nu * self.om * (z2 @ self.mf.g12.T) / (self.d1 - SHIFT), z2
+        z2 = np.matvec(self.schur_inv, b[1] + 4.0 * self.om * _rows_matmul(u1, self.mf.g21.T))
+        z1 = u1 - 4.0 * self.nu * self.om * _rows_matmul(z2, self.mf.g12.T) / (self.d1 - SHIFT)
+        return z1, z2
 
     def solve_transposed(self, b: Pair) -> Pair:
         """(K - SHIFT)^{-T} b for each row b (its Schur complement is S^T)."""
         u1 = b[0] / (self.d1 - SHIFT)
-        z2 = np.vecmat(b[1] - 4.0 * self.nu * self.om * (u1 @ self.mf.g12), self.schur_inv)
-        return u1 + 4.0 * self.om * (z2 @ self.mf.g21) / (self.d1 - SHIFT), z2
+        t2 = b[1] - 4.0 * self.nu * self.om * _rows_matmul(u1, self.mf.g12)
+        z2 = np.vecmat(t2, self.schur_inv)
+        return u1 + 4.0 * self.om * _rows_matmul(z2, self.mf.g21) / (self.d1 - SHIFT), z2
 
     def apply(self, z: Pair) -> Pair:
         """K z for each row z."""
-        return (self.d1 * z[0] + 4.0 * self.nu * self.om * (z[1] @ self.mf.g12.T),
-                self.d2 * z[1] - 4.0 * self.om * (z[0] @ self.mf.g21.T))
+        return (self.d1 * z[0] + 4.0 * self.nu * self.om * _rows_matmul(z[1], self.mf.g12.T),
+                self.d2 * z[1] - 4.0 * self.om * _rows_matmul(z[0], self.mf.g21.T))
 
     def apply_transposed(self, z: Pair) -> Pair:
         """K^T z for each row z."""
-        return (self.d1 * z[0] - 4.0 * self.om * (z[1] @ self.mf.g21),
-                self.d2 * z[1] + 4.0 * self.nu * self.om * (z[0] @ self.mf.g12))
+        return (self.d1 * z[0] - 4.0 * self.om * _rows_matmul(z[1], self.mf.g21),
+                self.d2 * z[1] + 4.0 * self.nu * self.om * _rows_matmul(z[0], self.mf.g12))
 
 
 def _dot(a: Pair, b: Pair) -> NDArray[np.float64]:
@@ -447,8 +469,8 @@ def mode_tails(op: FamilyOperator, vectors: NDArray[np.float64]) -> NDArray[np.f
     A field that vanishes (omega2 at zero twist) has no meaningful tail of its own.
     """
     k1 = op.sizes[0]
-    c1 = vectors[:, :k1] @ op.basis1.coefficients.T  # (P, n + 1) Chebyshev coefficients
-    c2 = vectors[:, k1:] @ op.basis2.coefficients.T
+    c1 = _rows_matmul(vectors[:, :k1], op.basis1.coefficients.T)  # (P, n + 1) Chebyshev
+    c2 = _rows_matmul(vectors[:, k1:], op.basis2.coefficients.T)
     a1 = np.abs(c1[:, op.basis1.parity::2])
     a2 = np.abs(c2[:, op.basis2.parity::2])
     scale = np.maximum(a1.max(axis=1), a2.max(axis=1))
@@ -479,11 +501,11 @@ def _rayleigh_sums(op: FamilyOperator, twist: NDArray[np.float64], nu: NDArray[n
                    ) -> NDArray[np.float64]:
     m = right.shape[1]
     x, y = right.astype(dtype), left.astype(dtype)
-    px = (x @ op.pieces.astype(dtype).reshape(6 * m, m).T).reshape(-1, 6, m)  # P_i x
+    px = _rows_matmul(x, op.pieces.astype(dtype).reshape(6 * m, m).T).reshape(-1, 6, m)
     om, nv = twist.astype(dtype), nu.astype(dtype)
     coef = np.stack([np.ones_like(om), om**2, nv, nv * om**2, nv * om, om], axis=1)
     num = (coef * np.einsum("pj,pij->pi", y, px)).sum(axis=1)
-    den = np.einsum("pj,pj->p", y, x @ op.mass.astype(dtype).T)
+    den = np.einsum("pj,pj->p", y, _rows_matmul(x, op.mass.astype(dtype).T))
     return (num / den).astype(np.float64)
 
 
@@ -507,10 +529,10 @@ def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np
     op = mf.op
     lam, z, w, ok, above = lowest_eigenpair(mf, twist, nu, rtol=rtol, ceiling=ceiling)
     k1 = mf.lam1.size
-    vec = np.hstack([z[:, :k1] @ mf.u1.T, z[:, k1:] @ mf.u2.T])
+    vec = np.hstack([_rows_matmul(z[:, :k1], mf.u1.T), _rows_matmul(z[:, k1:], mf.u2.T)])
     # the eigenvalue from the O(1) pencil itself: the two-sided Rayleigh quotient (its error is
     # the product of the vectors' errors; K carries round-off ~ eps n^4 in its diagonal)
-    left = np.hstack([w[:, :k1] @ mf.left1, w[:, k1:] @ mf.left2])
+    left = np.hstack([_rows_matmul(w[:, :k1], mf.left1), _rows_matmul(w[:, k1:], mf.left2)])
     lam = _pencil_rayleigh_quotient(op, twist, nu, left, vec)
     bad = np.flatnonzero(~(ok | above))
     if bad.size:  # the full eig with the rule decides
