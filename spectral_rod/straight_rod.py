@@ -86,6 +86,9 @@ POWER_RTOL, POWER_STEPS, FIRST_CHECK = 1.0e-15, 40, 6
 LONG_TWIST = 20.0
 #: Largest product handed to BLAS in one call (see :func:`_rows_matmul`).
 BLAS_BLOCK = 1 << 17
+#: Up to this many points per degree and family, and degree, the full eig is cheaper than the
+#: iteration (measured: 0.7 vs 1.3 ms for one point at n = 20; the other way round at n = 94).
+SMALL_BATCH, SMALL_DEGREE = 4, 40
 
 
 def _rows_matmul(a: NDArray[np.floating], b: NDArray[np.floating]) -> NDArray[np.floating]:
@@ -525,6 +528,8 @@ def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np
     only approximate (but above ``ceiling``). Returns lambda = inf where no eigenvalue passes
     the rule.
     """
+    if twist.size <= SMALL_BATCH and n <= SMALL_DEGREE:  # the full eig is cheaper here
+        return _solve_family_eig(n, family, twist, nu)
     mf = modal_family(n, family)
     op = mf.op
     lam, z, w, ok, above = lowest_eigenpair(mf, twist, nu, rtol=rtol, ceiling=ceiling)
@@ -542,6 +547,17 @@ def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np
         lam[bad] = np.where(valid, 1.0 / np.where(valid, theta, 1.0), np.inf)
     tails = np.where(np.isfinite(lam), mode_tails(op, vec), np.inf)
     return lam, tails, vec
+
+
+def _solve_family_eig(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np.float64]
+                      ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
+    """:func:`solve_family` by the full ``eig`` of A^{-1} B and the rule (the reference path)."""
+    op = family_operator(n, family)
+    a, b = op.pencil(twist, nu)
+    theta, vec = _physical_eig(np.linalg.solve(a, b))
+    valid = np.isfinite(theta) & (theta > 0)
+    lam = np.where(valid, 1.0 / np.where(valid, theta, 1.0), np.inf)
+    return lam, np.where(valid, mode_tails(op, vec), np.inf), vec
 
 
 def _solve_points(twist: NDArray[np.float64], nu: NDArray[np.float64], n: NDArray[np.int_],
