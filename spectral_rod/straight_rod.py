@@ -198,8 +198,9 @@ class CriticalLoad:
     """Result of :func:`critical_load` with ``full_output=True`` (arrays broadcast like input).
 
     p_star: P_cr / (pi^2 A1 / L^2); n: Chebyshev degree used; error_estimate: estimated relative
-    error of p_star (coefficient tail of the buckling mode); family: 'symmetric' (omega1 even
-    about the mid-point) or 'antisymmetric'; converged: error_estimate <= tol.
+    error of p_star (:func:`error_estimate`: calibrated model of the buckling mode's Chebyshev
+    tail plus the round-off floor; measured to bound the actual error); family: 'symmetric'
+    (omega1 even about the mid-point) or 'antisymmetric'; converged: error_estimate <= tol.
     """
 
     p_star: NDArray[np.float64]
