@@ -100,10 +100,12 @@ def _rows_matmul(a: NDArray[np.floating], b: NDArray[np.floating]) -> NDArray[np
     multiply-adds stay on the calling thread.
     """
     p, k = a.shape
-    rows = max(1, BLAS_BLOCK // max(1, k * b.shape[1]))
-    if p <= rows:
+    most = max(1, BLAS_BLOCK // max(1, k * b.shape[1]))
+    if p <= most:
         return a @ b
-    pad = (-p) % rows
+    blocks = -(-p // most)
+    rows = -(-p // blocks)
+    pad = blocks * rows - p
     if pad:
         a = np.concatenate([a, np.zeros((pad, k), dtype=a.dtype)])
     return (a.reshape(-1, rows, k) @ b).reshape(-1, b.shape[1])[:p]
@@ -348,6 +350,7 @@ class _ShiftedModal:
     d1: NDArray[np.float64]  # (P, k1) diagonal of block 1 of K
     d2: NDArray[np.float64]  # (P, k2)
     schur_inv: NDArray[np.float64]  # (P, k2, k2)
+    r1: NDArray[np.float64]  # 1 / (D1 - SHIFT)
 
     @classmethod
     def at(cls, mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np.float64]
@@ -355,29 +358,29 @@ class _ShiftedModal:
         om, nu = twist[:, None], nu[:, None]
         d1 = mf.lam1 + om**2
         d2 = nu * (mf.lam2 + om**2)
+        r1 = 1.0 / (d1 - SHIFT)
         k2 = d2.shape[1]
-        schur = _rows_matmul(16.0 * nu * om**2 / (d1 - SHIFT), mf.outer).reshape(-1, k2, k2)
+        schur = _rows_matmul(16.0 * nu * om**2 * r1, mf.outer).reshape(-1, k2, k2)
         schur[:, np.arange(k2), np.arange(k2)] += d2 - SHIFT
-        return cls(mf, om, nu, d1, d2, np.linalg.inv(schur))
+        return cls(mf, om, nu, d1, d2, np.linalg.inv(schur), r1)  # LinAlgError if singular
 
     def take(self, idx: NDArray[np.int_]) -> _ShiftedModal:
         """The points `idx` only."""
         return _ShiftedModal(self.mf, self.om[idx], self.nu[idx], self.d1[idx], self.d2[idx],
-                             self.schur_inv[idx])
+                             self.schur_inv[idx], self.r1[idx])
 
     def solve(self, b: Pair) -> Pair:
         """(K - SHIFT)^{-1} b for each row b."""
-        u1 = b[0] / (self.d1 - SHIFT)
-        z2 = np.matvec(self.schur_inv, b[1] + 4.0 * self.om * _rows_matmul(u1, self.mf.g21.T))
-        z1 = u1 - 4.0 * self.nu * self.om * _rows_matmul(z2, self.mf.g12.T) / (self.d1 - SHIFT)
-        return z1, z2
+        u1 = b[0] * self.r1
+        z2 = np.matvec(self.schur_inv, b[1] + (4.0 * self.om) * _rows_matmul(u1, self.mf.g21.T))
+        return u1 - (4.0 * self.nu * self.om) * _rows_matmul(z2, self.mf.g12.T) * self.r1, z2
 
     def solve_transposed(self, b: Pair) -> Pair:
         """(K - SHIFT)^{-T} b for each row b (its Schur complement is S^T)."""
-        u1 = b[0] / (self.d1 - SHIFT)
-        t2 = b[1] - 4.0 * self.nu * self.om * _rows_matmul(u1, self.mf.g12)
-        z2 = np.vecmat(t2, self.schur_inv)
-        return u1 + 4.0 * self.om * _rows_matmul(z2, self.mf.g21) / (self.d1 - SHIFT), z2
+        u1 = b[0] * self.r1
+        z2 = np.vecmat(b[1] - (4.0 * self.nu * self.om) * _rows_matmul(u1, self.mf.g12),
+                       self.schur_inv)
+        return u1 + (4.0 * self.om) * _rows_matmul(z2, self.mf.g21) * self.r1, z2
 
     def apply(self, z: Pair) -> Pair:
         """K z for each row z."""
@@ -533,7 +536,10 @@ def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np
         return _solve_family_eig(n, family, twist, nu)
     mf = modal_family(n, family)
     op = mf.op
-    lam, z, w, ok, above = lowest_eigenpair(mf, twist, nu, rtol=rtol, ceiling=ceiling)
+    try:
+        lam, z, w, ok, above = lowest_eigenpair(mf, twist, nu, rtol=rtol, ceiling=ceiling)
+    except np.linalg.LinAlgError:  # SHIFT an eigenvalue of some point (spurious): the rule
+        return _solve_family_eig(n, family, twist, nu)
     k1 = mf.lam1.size
     vec = np.hstack([_rows_matmul(z[:, :k1], mf.u1.T), _rows_matmul(z[:, k1:], mf.u2.T)])
     # the eigenvalue from the O(1) pencil itself: the two-sided Rayleigh quotient (its error is
