@@ -68,7 +68,13 @@ import numpy as np
 import numpy.polynomial.chebyshev as C
 from numpy.typing import ArrayLike, NDArray
 
-from spectral_rod._validation import check_nu, check_resolution, check_tol, check_twist
+from spectral_rod._validation import (
+    check_nu,
+    check_resolution,
+    check_tol,
+    check_twist,
+    real_array,
+)
 from spectral_rod.chebyshev import ParityBasis, parity_basis
 
 FAMILIES = ("symmetric", "antisymmetric")
@@ -670,9 +676,13 @@ def critical_wavenumbers(p_star: float, twist_angle: float, nu: float
     When X_- < 0 (lambda/nu < Omega^2 < lambda) beta_1 is imaginary and returned as a complex
     number i sqrt(-X_-).
     """
-    lam = np.pi**2 * float(p_star)
-    om = float(twist_angle)
-    mu = lam / float(nu)
+    p = real_array(p_star, "p_star")
+    if p.shape != () or not p > 0:
+        raise ValueError(f"p_star must be a positive real number, got {p_star!r}")
+    om = float(check_twist(twist_angle))
+    nu_f = float(check_nu(nu))
+    lam = np.pi**2 * float(p)
+    mu = lam / nu_f
     s = lam + mu + 2 * om**2
     x_plus = 0.5 * (s + math.sqrt((lam - mu) ** 2 + 8 * om**2 * (lam + mu)))
     x_minus = (lam - om**2) * (mu - om**2) / x_plus

@@ -156,3 +156,15 @@ def test_no_warning_on_figure1_range():
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         critical_load(np.linspace(0, 10, 41), np.array([[1.1], [1.3], [1.5]]))
+
+
+@pytest.mark.parametrize("args,exc,word", [
+    ((float("nan"), 1.0, 1.5), ValueError, "p_star"),
+    ((-1.0, 1.0, 1.5), ValueError, "p_star"),
+    (("1", 1.0, 1.5), TypeError, "p_star"),
+    ((1.1, float("inf"), 1.5), ValueError, "twist_angle"),
+    ((1.1, 1.0, 0.5), ValueError, "nu"),
+])
+def test_wavenumbers_bad_input_names_the_argument(args, exc, word):
+    with pytest.raises(exc, match=word):
+        critical_wavenumbers(*args)
