@@ -154,7 +154,9 @@ def draw(grid: pd.DataFrame, inc: pd.DataFrame, res: pd.DataFrame, route: pd.Dat
     im = _heatmap(axes[0], grid, P_TWISTS, P_NUS,
                   "log10 rel. error of p* (critical_load)", P_LIMIT)
     axes[0].axvline(P_TWISTS.index(100.0) - 0.5, color="r", lw=1)
-    axes[0].text(P_TWISTS.index(100.0) - 0.45, -0.45, "char. eq. →", color="r", fontsize=7)
+    axes[0].text(P_TWISTS.index(100.0) - 0.45, len(P_NUS) - 0.55, "char. eq. →", color="r",
+                 fontsize=7, va="top",
+                 bbox={"facecolor": "white", "edgecolor": "none", "pad": 1})
     _heatmap(axes[1], inc, INC_TWISTS, INC_NUS, "log10 rel. error of p*-1 (increment)",
              INC_LIMIT)
     fig.colorbar(im, ax=axes[1], shrink=0.9, label="log10 relative error")
@@ -180,7 +182,8 @@ def draw(grid: pd.DataFrame, inc: pd.DataFrame, res: pd.DataFrame, route: pd.Dat
     om = np.asarray(ROUTE_TWISTS)
     ax.loglog(om, 2.2e-16 * (8 + om / 2), "k:", lw=1, label="ε (8 + Ω/2): stated bound")
     ax.axvline(TWIST_ROUTE, color="r", lw=1)
-    ax.text(TWIST_ROUTE * 1.05, 3e-10, "route →\ncharacteristic", color="r", fontsize=7)
+    ax.text(TWIST_ROUTE * 1.05, 3e-11, "routed to the\ncharacteristic eq. →", color="r",
+            fontsize=7, va="top")
     ax.set_ylim(1e-17, 1e-8)
     ax.set_xlabel("Ω(L)")
     ax.set_ylabel("relative error of p*")
