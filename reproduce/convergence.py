@@ -171,6 +171,17 @@ def _case_label(om: float, nu: float) -> str:
     return f"Ω(L) = {om:g}, ν = {nu:g}"
 
 
+def _style_error_panel(ax, om: float, nu: float, xlabel: str) -> None:
+    """Common look of an error panel: target lines, title, limits, labels, grid."""
+    for tol in TARGETS:
+        ax.axhline(tol, color="0.8", lw=0.7, zorder=0)
+    ax.set_title(_case_label(om, nu))
+    ax.set_ylim(1e-16, 1e2)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel("relative error of p*")
+    ax.grid(True, which="major", alpha=0.3)
+
+
 def draw_resolution(runs: pd.DataFrame):
     fig, axes = plt.subplots(2, 2, figsize=(10, 8), sharey=True)
     for ax, ((om, nu), case) in zip(axes.flat, runs.groupby(["twist_angle", "nu"], sort=False),
@@ -184,13 +195,8 @@ def draw_resolution(runs: pd.DataFrame):
         k = fd["unknowns_per_field"].to_numpy(dtype=float)
         anchor = fd["rel_error"].to_numpy()[-2]
         ax.loglog(k, anchor * (k / k[-2]) ** -2.0, "k:", lw=1, label="slope −2 (O(h²))")
-        for tol in TARGETS:
-            ax.axhline(tol, color="0.8", lw=0.7, zorder=0)
-        ax.set_title(_case_label(om, nu))
-        ax.set_ylim(1e-16, 1e2)
-        ax.set_xlabel("unknowns per field (n/2 collocation, N−1 finite differences)")
-        ax.set_ylabel("relative error of p*")
-        ax.grid(True, which="major", alpha=0.3)
+        _style_error_panel(ax, om, nu,
+                           "unknowns per field (n/2 collocation, N−1 finite differences)")
     handles, labels = axes.flat[0].get_legend_handles_labels()
     fig.suptitle("Error vs resolution: spectral (collocation) vs algebraic O(h²) (FD); "
                  "reference = mpmath characteristic equation")
@@ -215,13 +221,7 @@ def draw_time(runs: pd.DataFrame):
                   label="finite differences")
         ax.axvline(float(ref["seconds"].iloc[0]), color="k", ls="--", lw=1,
                    label="mpmath characteristic eq. (one call)")
-        for tol in TARGETS:
-            ax.axhline(tol, color="0.8", lw=0.7, zorder=0)
-        ax.set_title(_case_label(om, nu))
-        ax.set_ylim(1e-16, 1e2)
-        ax.set_xlabel("wall time per p* [s]")
-        ax.set_ylabel("relative error of p*")
-        ax.grid(True, which="major", alpha=0.3)
+        _style_error_panel(ax, om, nu, "wall time per p* [s]")
     handles, labels = axes.flat[0].get_legend_handles_labels()
     fig.suptitle("Error vs wall time (one p*, best of repeats; grey lines: 1e-4, 1e-8, 1e-12)")
     fig.tight_layout(rect=(0, 0.06, 1, 1))
