@@ -79,8 +79,9 @@ def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None
     shape = np.broadcast_shapes(twist.shape, nu_arr.shape)
     tw = np.abs(np.broadcast_to(twist, shape).ravel())
     nv = np.broadcast_to(nu_arr, shape).ravel()
-    routed = (tw >= TWIST_ROUTE) if n is None else np.zeros(tw.size, dtype=bool)
-    degenerate = ((nv - 1.0 <= NEAR_DEGENERATE) & ~routed) if n is None else routed
+    # an explicit degree n means: collocation everywhere
+    routed = (tw >= TWIST_ROUTE) & (n is None)
+    degenerate = (nv - 1.0 <= NEAR_DEGENERATE) & ~routed & (n is None)
     if not (routed.any() or degenerate.any()):
         return collocation_critical_load(twist_angle, nu, n=n, tol=tol,
                                          full_output=full_output)
