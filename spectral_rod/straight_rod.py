@@ -300,7 +300,8 @@ class ModalFamily:
 
     G12 = U_1^{-1} V_1^{-1} C12 U_2, G21 = U_2^{-1} V_2^{-1} C21 U_1 (C = the coupling blocks of
     :class:`FamilyOperator`): diagonal plus an Omega-proportional coupling, so shifted solves
-    need only a Schur complement of the omega2 block (half the size).
+    need only a Schur complement of one block. It is taken on the smaller block (``schur``:
+    1 or 2), because its per-point inverse is the largest single cost of the fast path.
     """
 
     op: FamilyOperator
@@ -312,7 +313,8 @@ class ModalFamily:
     left2: NDArray[np.float64]
     g12: NDArray[np.float64]  # (k1, k2)
     g21: NDArray[np.float64]  # (k2, k1)
-    outer: NDArray[np.float64]  # (k1, k2 * k2): G21[:, j] (x) G12[j, :]
+    schur: int  # the block (1 or 2) that carries the Schur complement; the other is eliminated
+    outer: NDArray[np.float64]  # (k_e, k_s^2): G_se[:, j] (x) G_es[j, :], e eliminated, s Schur
 
 
 @lru_cache(maxsize=64)
@@ -326,8 +328,10 @@ def modal_family(n: int, family: str) -> ModalFamily:
     left2 = np.linalg.solve(u2, np.linalg.inv(b2.value))
     g12 = left1 @ op.coupling12 @ u2
     g21 = left2 @ op.coupling21 @ u1
-    outer = np.einsum("ij,jk->jik", g21, g12).reshape(g12.shape[0], -1)
-    return ModalFamily(op, lam1, lam2, u1, u2, left1, left2, g12, g21, outer)
+    schur = 2 if lam2.size <= lam1.size else 1
+    g_es, g_se = (g12, g21) if schur == 2 else (g21, g12)
+    outer = np.einsum("ij,jk->jik", g_se, g_es).reshape(g_es.shape[0], -1)
+    return ModalFamily(op, lam1, lam2, u1, u2, left1, left2, g12, g21, schur, outer)
 
 
 def _real_eig(s: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
@@ -339,73 +343,78 @@ def _real_eig(s: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.f
     return lam.real[order], u.real[:, order]
 
 
-Pair = tuple[NDArray[np.float64], NDArray[np.float64]]  # (omega1 block, omega2 block) rows
-
-
 @dataclass(frozen=True)
 class _ShiftedModal:
-    """K - SHIFT at a batch of points, factorised through the omega2-block Schur complement
+    """K - SHIFT at a batch of points, factorised through a Schur complement.
 
-        S = D2 - SHIFT + 16 nu Omega^2 G21 (D1 - SHIFT)^{-1} G12   (one LAPACK inverse per point,
-                                                                     of size ~ n/2).
+    In block form K - SHIFT = [[D_e - SHIFT, a G_es], [b G_se, D_s - SHIFT]] with D_e diagonal
+    (the eliminated block), so (K - SHIFT)^{-1} needs only the inverse of
+
+        S = D_s - SHIFT - a b G_se (D_e - SHIFT)^{-1} G_es   (one LAPACK inverse per point).
+
+    Block 1 (omega1) has a = 4 nu Omega in front of G12, block 2 has -4 Omega in front of G21.
+    Vectors are rows of one array (points x (k1 + k2)), omega1 block first.
     """
 
-    mf: ModalFamily
-    om: NDArray[np.float64]  # (P, 1)
-    nu: NDArray[np.float64]  # (P, 1)
-    d1: NDArray[np.float64]  # (P, k1) diagonal of block 1 of K
-    d2: NDArray[np.float64]  # (P, k2)
-    schur_inv: NDArray[np.float64]  # (P, k2, k2)
-    r1: NDArray[np.float64]  # 1 / (D1 - SHIFT)
+    elim: slice  # columns of the eliminated block
+    kept: slice  # columns of the Schur block
+    d_e: NDArray[np.float64]  # (P, k_e) diagonal of the eliminated block of K
+    d_s: NDArray[np.float64]  # (P, k_s)
+    r_e: NDArray[np.float64]  # 1 / (D_e - SHIFT)
+    a: NDArray[np.float64]  # (P, 1)
+    b: NDArray[np.float64]  # (P, 1)
+    g_es: NDArray[np.float64]  # (k_e, k_s)
+    g_se: NDArray[np.float64]  # (k_s, k_e)
+    schur_inv: NDArray[np.float64]  # (P, k_s, k_s)
 
     @classmethod
     def at(cls, mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np.float64]
            ) -> _ShiftedModal:
         om, nu = twist[:, None], nu[:, None]
-        d1 = mf.lam1 + om**2
-        d2 = nu * (mf.lam2 + om**2)
-        r1 = 1.0 / (d1 - SHIFT)
-        k2 = d2.shape[1]
-        schur = _rows_matmul(16.0 * nu * om**2 * r1, mf.outer).reshape(-1, k2, k2)
-        schur[:, np.arange(k2), np.arange(k2)] += d2 - SHIFT
-        return cls(mf, om, nu, d1, d2, np.linalg.inv(schur), r1)  # LinAlgError if singular
+        d1, d2 = mf.lam1 + om**2, nu * (mf.lam2 + om**2)
+        a1, a2 = 4.0 * nu * om, -4.0 * om
+        k1 = mf.lam1.size
+        if mf.schur == 2:
+            elim, kept, d_e, d_s, a, b, g_es, g_se = (slice(0, k1), slice(k1, None), d1, d2,
+                                                      a1, a2, mf.g12, mf.g21)
+        else:
+            elim, kept, d_e, d_s, a, b, g_es, g_se = (slice(k1, None), slice(0, k1), d2, d1,
+                                                      a2, a1, mf.g21, mf.g12)
+        r_e = 1.0 / (d_e - SHIFT)
+        k_s = d_s.shape[1]
+        schur = _rows_matmul(-a * b * r_e, mf.outer).reshape(-1, k_s, k_s)
+        schur[:, np.arange(k_s), np.arange(k_s)] += d_s - SHIFT
+        return cls(elim, kept, d_e, d_s, r_e, a, b, g_es, g_se,
+                   np.linalg.inv(schur))  # LinAlgError if singular
 
     def take(self, idx: NDArray[np.int_]) -> _ShiftedModal:
         """The points `idx` only."""
-        return _ShiftedModal(self.mf, self.om[idx], self.nu[idx], self.d1[idx], self.d2[idx],
-                             self.schur_inv[idx], self.r1[idx])
+        return _ShiftedModal(self.elim, self.kept, self.d_e[idx], self.d_s[idx], self.r_e[idx],
+                             self.a[idx], self.b[idx], self.g_es, self.g_se,
+                             self.schur_inv[idx])
 
-    def solve(self, b: Pair) -> Pair:
-        """(K - SHIFT)^{-1} b for each row b."""
-        u1 = b[0] * self.r1
-        z2 = np.matvec(self.schur_inv, b[1] + (4.0 * self.om) * _rows_matmul(u1, self.mf.g21.T))
-        return u1 - (4.0 * self.nu * self.om) * _rows_matmul(z2, self.mf.g12.T) * self.r1, z2
+    def _assemble(self, z_e: NDArray[np.float64], z_s: NDArray[np.float64]
+                  ) -> NDArray[np.float64]:
+        out = np.empty((z_e.shape[0], z_e.shape[1] + z_s.shape[1]))
+        out[:, self.elim], out[:, self.kept] = z_e, z_s
+        return out
 
-    def solve_transposed(self, b: Pair) -> Pair:
-        """(K - SHIFT)^{-T} b for each row b (its Schur complement is S^T)."""
-        u1 = b[0] * self.r1
-        z2 = np.vecmat(b[1] - (4.0 * self.nu * self.om) * _rows_matmul(u1, self.mf.g12),
-                       self.schur_inv)
-        return u1 + (4.0 * self.om) * _rows_matmul(z2, self.mf.g21) * self.r1, z2
+    def solve(self, v: NDArray[np.float64]) -> NDArray[np.float64]:
+        """(K - SHIFT)^{-1} v for each row v."""
+        u = v[:, self.elim] * self.r_e
+        z_s = np.matvec(self.schur_inv, v[:, self.kept] - self.b * _rows_matmul(u, self.g_se.T))
+        return self._assemble(u - self.a * _rows_matmul(z_s, self.g_es.T) * self.r_e, z_s)
 
-    def apply(self, z: Pair) -> Pair:
-        """K z for each row z."""
-        return (self.d1 * z[0] + 4.0 * self.nu * self.om * _rows_matmul(z[1], self.mf.g12.T),
-                self.d2 * z[1] - 4.0 * self.om * _rows_matmul(z[0], self.mf.g21.T))
-
-    def apply_transposed(self, z: Pair) -> Pair:
-        """K^T z for each row z."""
-        return (self.d1 * z[0] - 4.0 * self.om * _rows_matmul(z[1], self.mf.g21),
-                self.d2 * z[1] + 4.0 * self.nu * self.om * _rows_matmul(z[0], self.mf.g12))
+    def solve_transposed(self, v: NDArray[np.float64]) -> NDArray[np.float64]:
+        """(K - SHIFT)^{-T} v for each row v (its Schur complement is S^T)."""
+        u = v[:, self.elim] * self.r_e
+        z_s = np.vecmat(v[:, self.kept] - self.a * _rows_matmul(u, self.g_es), self.schur_inv)
+        return self._assemble(u - self.b * _rows_matmul(z_s, self.g_se) * self.r_e, z_s)
 
 
-def _dot(a: Pair, b: Pair) -> NDArray[np.float64]:
-    return np.vecdot(a[0], b[0]) + np.vecdot(a[1], b[1])
-
-
-def _normalised(a: Pair) -> Pair:
-    s = 1.0 / np.sqrt(_dot(a, a))[:, None]
-    return a[0] * s, a[1] * s
+def _unit_rows(v: NDArray[np.float64]) -> NDArray[np.float64]:
+    """1 / |v| per row, as a column."""
+    return 1.0 / np.sqrt(np.vecdot(v, v))[:, None]
 
 
 def lowest_eigenpair(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np.float64],
@@ -420,18 +429,18 @@ def lowest_eigenpair(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np
     step is (lambda_1 - SHIFT) / (lambda_2 - SHIFT) (0.01-0.2 on Figure 1's range). The
     eigenvalue is the two-sided Rayleigh quotient w^T K z / w^T z; its error is estimated to
     first order by |r| |l| / |w^T z| with the residuals r = K z - lambda z, l = K^T w - lambda w
-    (unit z, w). A point is done when that estimate is <= rtol lambda and lambda >= SHIFT
-    (converged), or when lambda - 100 estimate is above ``ceiling`` (only needed to be shown
-    higher than another family's eigenvalue: "above", lambda approximate). Points are dropped
-    from the iteration as they finish.
+    (unit z, w). K z needs no product with K: z = (K - SHIFT)^{-1} z_prev gives
+    K z = SHIFT z + z_prev. A point is done when that estimate is <= rtol lambda and
+    lambda >= SHIFT (converged), or when lambda - 100 estimate is above ``ceiling`` (only
+    needed to be shown higher than another family's eigenvalue: "above", lambda approximate).
+    Points are dropped from the iteration as they finish.
     """
     sk = _ShiftedModal.at(mf, twist, nu)
-    k1 = mf.lam1.size
-    x = _normalised(np.split(_start_vector(k1 + mf.lam2.size)[None, :] * np.ones((twist.size, 1)),
-                             [k1], axis=1))
+    start = _start_vector(mf.lam1.size + mf.lam2.size)
+    x = np.broadcast_to(start / np.linalg.norm(start), (twist.size, start.size))
     y = x
     lam = np.full(twist.size, np.nan)
-    vec = np.zeros((twist.size, k1 + mf.lam2.size))
+    vec = np.zeros((twist.size, start.size))
     left = np.zeros_like(vec)
     ok = np.zeros(twist.size, dtype=bool)
     above = np.zeros(twist.size, dtype=bool)
@@ -439,17 +448,17 @@ def lowest_eigenpair(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np
     for step in range(1, max_steps + 1):
         # each step scales by <= ~1/(0.05 pi^2) and >= ~1/lambda_max: normalising at the
         # checks (every 2 steps) keeps the vectors far from overflow and underflow
-        x = sk.solve(x)
-        y = sk.solve_transposed(y)
+        x_prev, y_prev = x, y
+        x, y = sk.solve(x), sk.solve_transposed(y)
         if step < (FIRST_CHECK if ceiling is None else 4) or step % 2:
             continue
-        x, y = _normalised(x), _normalised(y)
-        kx, ky = sk.apply(x), sk.apply_transposed(y)
-        yx = _dot(y, x)
-        rq = _dot(y, kx) / yx
-        rx, ry = (kx[0] - rq[:, None] * x[0], kx[1] - rq[:, None] * x[1]), \
-            (ky[0] - rq[:, None] * y[0], ky[1] - rq[:, None] * y[1])
-        bound = np.sqrt(_dot(rx, rx) * _dot(ry, ry)) / np.abs(yx)
+        sx, sy = _unit_rows(x), _unit_rows(y)
+        x, y = x * sx, y * sy
+        kx, ky = SHIFT * x + x_prev * sx, SHIFT * y + y_prev * sy  # K x, K^T y
+        yx = np.vecdot(y, x)
+        rq = np.vecdot(y, kx) / yx
+        rx, ry = kx - rq[:, None] * x, ky - rq[:, None] * y
+        bound = np.sqrt(np.vecdot(rx, rx) * np.vecdot(ry, ry)) / np.abs(yx)
         conv = (bound <= rtol * np.abs(rq)) & (rq >= SHIFT)
         high = np.zeros_like(conv) if ceiling is None else \
             ~conv & (rq - 100.0 * bound > ceiling[active])
@@ -458,14 +467,13 @@ def lowest_eigenpair(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np
             done[:] = True
         fin = active[done]
         lam[fin], ok[fin], above[fin] = rq[done], conv[done], high[done]
-        vec[fin] = np.hstack([x[0][done], x[1][done]])
-        left[fin] = np.hstack([y[0][done], y[1][done]])
+        vec[fin], left[fin] = x[done], y[done]
         if done.all():
             break
         keep = np.flatnonzero(~done)
         active = active[keep]
         sk = sk.take(keep)
-        x, y = (x[0][keep], x[1][keep]), (y[0][keep], y[1][keep])
+        x, y = x[keep], y[keep]
     return lam, vec, left, ok, above
 
 
@@ -535,8 +543,8 @@ def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np
     to a real value >= SHIFT, the full ``eig`` of the inverse pencil A^{-1} B with the rule of
     the module docstring decides (tests compare both on a grid). Points whose eigenvalue is
     shown to lie above ``ceiling`` (e.g. the other family's) stop early: their lambda is then
-    only approximate (but above ``ceiling``). Returns lambda = inf where no eigenvalue passes
-    the rule.
+    only approximate (but above ``ceiling``) and their tail is not computed (inf). Returns
+    lambda = inf where no eigenvalue passes the rule.
     """
     if twist.size <= SMALL_BATCH and n <= SMALL_DEGREE:  # the full eig is cheaper here
         return _solve_family_eig(n, family, twist, nu)
@@ -550,15 +558,19 @@ def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np
     vec = np.hstack([_rows_matmul(z[:, :k1], mf.u1.T), _rows_matmul(z[:, k1:], mf.u2.T)])
     # the eigenvalue from the O(1) pencil itself: the two-sided Rayleigh quotient (its error is
     # the product of the vectors' errors; K carries round-off ~ eps n^4 in its diagonal)
+    good = np.flatnonzero(ok)
+    w = w[good]
     left = np.hstack([_rows_matmul(w[:, :k1], mf.left1), _rows_matmul(w[:, k1:], mf.left2)])
-    lam = _pencil_rayleigh_quotient(op, twist, nu, left, vec)
+    lam[good] = _pencil_rayleigh_quotient(op, twist[good], nu[good], left, vec[good])
     bad = np.flatnonzero(~(ok | above))
     if bad.size:  # the full eig with the rule decides
         a, b = op.pencil(twist[bad], nu[bad])
         theta, vec[bad] = _physical_eig(np.linalg.solve(a, b))
         valid = np.isfinite(theta) & (theta > 0)
         lam[bad] = np.where(valid, 1.0 / np.where(valid, theta, 1.0), np.inf)
-    tails = np.where(np.isfinite(lam), mode_tails(op, vec), np.inf)
+    tails = np.full(twist.size, np.inf)
+    resolved = np.flatnonzero(~above & np.isfinite(lam))
+    tails[resolved] = mode_tails(op, vec[resolved])
     return lam, tails, vec
 
 
