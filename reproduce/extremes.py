@@ -145,7 +145,7 @@ def _heatmap(ax, table: pd.DataFrame, xs, ys, title: str, limit: float):
 
 
 def _nu_label(nu: float) -> str:
-    return f"1+{nu - 1:.0e}" if nu - 1 < 1e-3 else f"{nu:g}"
+    return f"1+{nu - 1:.0e}" if 0 < nu - 1 < 1e-3 else f"{nu:g}"
 
 
 def draw(grid: pd.DataFrame, inc: pd.DataFrame, res: pd.DataFrame, route: pd.DataFrame):
@@ -196,8 +196,10 @@ def draw(grid: pd.DataFrame, inc: pd.DataFrame, res: pd.DataFrame, route: pd.Dat
 def _md(df: pd.DataFrame, cols: list[str]) -> str:
     lines = ["| " + " | ".join(cols) + " |", "|" + "---|" * len(cols)]
     for _, r in df[cols].iterrows():
-        lines.append("| " + " | ".join(f"{v:.3g}" if isinstance(v, float) else str(v)
-                                       for v in r) + " |")
+        # nu within 1e-3 of 1 would print as "1" at 3 digits: name its distance from 1
+        lines.append("| " + " | ".join(_nu_label(v) if c == "nu" else
+                                       f"{v:.3g}" if isinstance(v, float) else str(v)
+                                       for c, v in zip(cols, r, strict=True)) + " |")
     return "\n".join(lines)
 
 

@@ -80,7 +80,7 @@ def draw(table: pd.DataFrame, curves: dict[float, tuple[np.ndarray, np.ndarray]]
         sub = table[table["nu"] == nu]
         ax.plot(om, p, color=COLORS[nu], lw=1.6, label=f"curve {i}: ν = {nu} (collocation)")
         ax.plot(sub["twist_angle"], sub["p_star_digitised"], "o", ms=2.2, mfc="none",
-                color="k", mew=0.5, label="digitised Figure 1" if i == 1 else None)
+                color="k", mew=0.5, label="digitised Figure 1" if i == len(CURVE_NU) else None)
         ax.text(10.08, p[-1], f"ν = {nu}", va="center", color=COLORS[nu], fontsize=9)
         axr.plot(sub["twist_angle"], sub["deviation"] * 1e4, ".", ms=2.5, color=COLORS[nu],
                  label=f"ν = {nu}")
