@@ -673,7 +673,8 @@ def claim_wavenumbers_real(ev: StraightRodEvidence) -> Claim:
                  f"< 0 in both: {imag}. Outside the window both β are real; the mode there is "
                  f"cosh/sinh(|β1| s) and cos/sin(β2 s). For ν = 1 the window is the point π.",
         verdict=verdict, scene=NAME, figure="claims_wavenumbers.png",
-        numbers={"headline": "β1 imaginary for 2y/√(ν+3) < Ω < 2π√(ν/(3ν+1)) (e.g. ν = 1.5: "
+        numbers={"headline": "β1 imaginary for 2y/√(ν+3) < Ω < 2π√(ν/(3ν+1)), "
+                             "(ν−1) y cos y + 4 sin y = 0 (e.g. ν = 1.5: "
                              f"{_fmt_pi(w[1]['omega_a'], 4)} … {_fmt_pi(w[1]['omega_b'], 4)})",
                  "windows": [{k: r[k] for k in ("nu", "omega_a", "omega_b", "p_a", "p_b")}
                              for r in w],
