@@ -358,9 +358,7 @@ class _ShiftedModal:
 
     elim: slice  # columns of the eliminated block
     kept: slice  # columns of the Schur block
-    d_e: NDArray[np.float64]  # (P, k_e) diagonal of the eliminated block of K
-    d_s: NDArray[np.float64]  # (P, k_s)
-    r_e: NDArray[np.float64]  # 1 / (D_e - SHIFT)
+    r_e: NDArray[np.float64]  # (P, k_e): 1 / (D_e - SHIFT)
     a: NDArray[np.float64]  # (P, 1)
     b: NDArray[np.float64]  # (P, 1)
     g_es: NDArray[np.float64]  # (k_e, k_s)
@@ -384,14 +382,13 @@ class _ShiftedModal:
         k_s = d_s.shape[1]
         schur = _rows_matmul(-a * b * r_e, mf.outer).reshape(-1, k_s, k_s)
         schur[:, np.arange(k_s), np.arange(k_s)] += d_s - SHIFT
-        return cls(elim, kept, d_e, d_s, r_e, a, b, g_es, g_se,
+        return cls(elim, kept, r_e, a, b, g_es, g_se,
                    np.linalg.inv(schur))  # LinAlgError if singular
 
     def take(self, idx: NDArray[np.int_]) -> _ShiftedModal:
         """The points `idx` only."""
-        return _ShiftedModal(self.elim, self.kept, self.d_e[idx], self.d_s[idx], self.r_e[idx],
-                             self.a[idx], self.b[idx], self.g_es, self.g_se,
-                             self.schur_inv[idx])
+        return _ShiftedModal(self.elim, self.kept, self.r_e[idx], self.a[idx], self.b[idx],
+                             self.g_es, self.g_se, self.schur_inv[idx])
 
     def _assemble(self, z_e: NDArray[np.float64], z_s: NDArray[np.float64]
                   ) -> NDArray[np.float64]:
