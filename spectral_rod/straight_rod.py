@@ -539,8 +539,9 @@ def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np
     physical one unless a spurious eigenvalue is nearer; where the iteration has not converged
     to a real value >= SHIFT, the full ``eig`` of the inverse pencil A^{-1} B with the rule of
     the module docstring decides (tests compare both on a grid). Points whose eigenvalue is
-    shown to lie above ``ceiling`` (e.g. the other family's) stop early: their lambda is then
-    only approximate (but above ``ceiling``) and their tail is not computed (inf). Returns
+    shown to lie above ``ceiling`` (e.g. the other family's) stop early: their lambda and mode
+    are then only approximate (lambda above ``ceiling``) and their tail is not computed (inf),
+    as no caller uses either. Returns
     lambda = inf where no eigenvalue passes the rule.
     """
     if twist.size <= SMALL_BATCH and n <= SMALL_DEGREE:  # the full eig is cheaper here
