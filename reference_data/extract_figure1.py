@@ -3,7 +3,8 @@
     python reference_data/extract_figure1.py [PATH_TO_TEX] [OUT_CSV]
 
 Defaults: ../shared/paper/drozdov-rabin-buckling.tex (relative to the project root) and
-reference_data/figure1_digitised.csv. See figure1_digitised.md for the provenance.
+spectral_rod/data/figure1_digitised.csv (shipped with the package). See
+spectral_rod/data/figure1_digitised.md for the provenance. Only this script needs the paper.
 """
 
 from __future__ import annotations
@@ -11,12 +12,12 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
+from reproduce.io import write_with
 from spectral_rod.figure_data import parse_figure1
-from spectral_rod.io import write_with
 
 ROOT = Path(__file__).resolve().parent.parent
 DEFAULT_TEX = ROOT.parent / "shared" / "paper" / "drozdov-rabin-buckling.tex"
-DEFAULT_CSV = ROOT / "reference_data" / "figure1_digitised.csv"
+DEFAULT_CSV = ROOT / "spectral_rod" / "data" / "figure1_digitised.csv"
 
 
 def main(argv: list[str]) -> int:

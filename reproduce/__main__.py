@@ -16,12 +16,12 @@ for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_var, "1")
 
 from reproduce._runner import (  # noqa: E402 - after the BLAS thread setting
-    DEFAULT_OUT,
     SCENE_MODULES,
     load_scene,
     log_stderr,
     run_scenes,
 )
+from reproduce.paths import OUT_NAME, default_out  # noqa: E402
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -31,8 +31,8 @@ def _parser() -> argparse.ArgumentParser:
         epilog=f"scenes: {', '.join(SCENE_MODULES)}")
     p.add_argument("targets", nargs="+", metavar="TARGET",
                    help="'all', 'list', or one or more scene names")
-    p.add_argument("--out", type=Path, default=DEFAULT_OUT,
-                   help=f"output directory (default: {DEFAULT_OUT})")
+    p.add_argument("--out", type=Path, default=None,
+                   help=f"output directory (default: ./{OUT_NAME} in the current directory)")
     return p
 
 
@@ -51,19 +51,20 @@ def main(argv: list[str] | None = None) -> int:
         print(f"python -m reproduce: error: unknown target(s) {unknown or targets}; "
               f"choose 'all', 'list' or scenes from {', '.join(SCENE_MODULES)}", file=sys.stderr)
         return 2
+    out = args.out if args.out is not None else default_out()
     t0 = time.perf_counter()
     try:
-        run_scenes(names, args.out, log_stderr)
+        run_scenes(names, out, log_stderr)
     except OSError as exc:
         print(f"python -m reproduce: error: {exc}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:
-        # every output is written to a temporary file and renamed (spectral_rod.io), so files
+        # every output is written to a temporary file and renamed (reproduce.io), so files
         # from before the interrupt are whole and no partial file is left behind
         print("python -m reproduce: interrupted; previous outputs left intact, no partial "
               "files written", file=sys.stderr)
         return 130
-    log_stderr(f"all done in {time.perf_counter() - t0:.1f} s; outputs in {args.out}")
+    log_stderr(f"all done in {time.perf_counter() - t0:.1f} s; outputs in {out}")
     return 0
 
 

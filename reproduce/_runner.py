@@ -24,14 +24,13 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from types import ModuleType
 
-from spectral_rod.io import ensure_writable_dir, write_text
+from reproduce.io import ensure_writable_dir, write_text
+from reproduce.paths import CODE_DIR
 
 #: Scenes in the order `all` runs them (those whose module exists in this checkout).
 SCENE_ORDER = ("figure1", "claims", "ring", "convergence", "extremes")
 SCENE_MODULES = tuple(name for name in SCENE_ORDER
                       if importlib.util.find_spec(f"reproduce.{name}") is not None)
-ROOT = Path(__file__).resolve().parent.parent
-DEFAULT_OUT = ROOT / "paper_figures"
 
 
 @dataclass
@@ -51,10 +50,10 @@ def load_scene(name: str) -> ModuleType:
 
 def git_commit() -> str:
     try:
-        sha = subprocess.run(["git", "rev-parse", "HEAD"], cwd=ROOT, capture_output=True,
+        sha = subprocess.run(["git", "rev-parse", "HEAD"], cwd=CODE_DIR, capture_output=True,
                              text=True, timeout=10, check=True).stdout.strip()
         dirty = subprocess.run(["git", "status", "--porcelain", "--untracked-files=no"],
-                               cwd=ROOT, capture_output=True, text=True, timeout=10).stdout
+                               cwd=CODE_DIR, capture_output=True, text=True, timeout=10).stdout
         return sha + ("+uncommitted changes" if dirty.strip() else "")
     except (OSError, subprocess.SubprocessError):
         return "unknown (not a git checkout)"

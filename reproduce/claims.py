@@ -29,31 +29,36 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
-import mpmath as mp
 import numpy as np
 from numpy.typing import NDArray
-from scipy.optimize import brentq
 
 from reproduce._runner import SceneOutput
+from reproduce.io import write_text, write_with
 from reproduce.ledger import Claim, update_ledger
-from spectral_rod.asymptotics import (
+from spectral_rod import (
+    beta_difference,
+    buckling_mode,
+    characteristic_critical_load,
+    characteristic_determinant,
+    characteristic_mode,
+    collocation_crossing,
+    critical_load,
+    critical_wavenumbers,
     crossing_closed_form,
     crossing_twist_asymptotic,
+    crossing_wavenumbers,
+    family_crossing,
+    family_switches,
     imaginary_beta1_window,
+    increasing_up_to,
     large_twist_coefficients,
     large_twist_expansion,
     large_twist_limit,
     large_twist_wavenumbers,
+    local_maxima,
+    non_planarity,
+    settling_point,
 )
-from spectral_rod.characteristic import (
-    characteristic_critical_load,
-    characteristic_mode,
-    determinant,
-    family_crossing,
-)
-from spectral_rod.critical import critical_load
-from spectral_rod.io import write_text, write_with
-from spectral_rod.straight_rod import buckling_mode, solve_family
 
 NAME = "claims"
 SUMMARY = ("straight twisted rod: every claim of the paper's straight-rod section, both solvers "
@@ -84,87 +89,6 @@ DPS = 30
 NEAR = 1e-2
 COLORS = {1.1: "tab:blue", 1.3: "tab:purple", 1.5: "tab:green", 2.0: "tab:orange",
           5.0: "tab:red", 10.0: "tab:brown"}
-
-
-# ------------------------------------------------------------------------------------------
-# collocation helpers (the second solver for the decisive numbers)
-# ------------------------------------------------------------------------------------------
-
-def collocation_family_load(twist: float, nu: float, family: str, n: int) -> float:
-    """Lowest p of one parity family by collocation at degree n."""
-    lam, _, _ = solve_family(n, family, np.array([abs(twist)]), np.array([float(nu)]))
-    return float(lam[0]) / math.pi**2
-
-
-def collocation_degree(twist: float) -> int:
-    """Even Chebyshev degree resolving the critical mode to round-off at twist Omega(L)."""
-    return 2 * math.ceil(0.5 * (0.75 * (abs(twist) + math.pi) + 24))
-
-
-@dataclass(frozen=True)
-class CollocationCrossing:
-    twist: float
-    p_star: float
-    slopes: dict[str, float]
-    n: int
-
-
-def collocation_crossing(twist_guess: float, nu: float, half_width: float = 0.15
-                         ) -> CollocationCrossing:
-    """Twist where the two families' lowest collocation eigenvalues meet (Brent's method).
-
-    The degree follows the mode's largest wavenumber, beta_2 L ~ Omega + pi (Chebyshev
-    coefficients of cos(k x) are negligible beyond ~1.5 k + 24 terms at double precision);
-    :func:`collocation_degree`. Slopes dp/dOmega by central differences (h = 1e-5).
-    """
-    n = collocation_degree(twist_guess + half_width)
-
-    def diff(om: float) -> float:
-        return (collocation_family_load(om, nu, "symmetric", n)
-                - collocation_family_load(om, nu, "antisymmetric", n))
-
-    om_c = brentq(diff, twist_guess - half_width, twist_guess + half_width, xtol=1e-14,
-                  rtol=1e-15)
-    h = 1e-5
-    slopes = {f: (collocation_family_load(om_c + h, nu, f, n)
-                  - collocation_family_load(om_c - h, nu, f, n)) / (2 * h)
-              for f in ("symmetric", "antisymmetric")}
-    return CollocationCrossing(om_c, collocation_family_load(om_c, nu, "symmetric", n),
-                               slopes, n)
-
-
-def wavenumbers_np(p: NDArray[np.float64], twist: NDArray[np.float64], nu: float
-                   ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """(X_-, X_+) = (beta_1^2 L^2, beta_2^2 L^2) at loads p (vectorised, as in the paper)."""
-    lam = np.pi**2 * np.asarray(p, dtype=float)
-    mu = lam / nu
-    om = np.asarray(twist, dtype=float)
-    s = lam + mu + 2 * om**2
-    xp = 0.5 * (s + np.sqrt((lam - mu) ** 2 + 8 * om**2 * (lam + mu)))
-    return (lam - om**2) * (mu - om**2) / xp, xp
-
-
-def beta_difference(p: NDArray[np.float64], twist: NDArray[np.float64], nu: float
-                    ) -> NDArray[np.float64]:
-    """Re(beta_2 - beta_1) L (= beta_2 L where beta_1 is imaginary)."""
-    xm, xp = wavenumbers_np(p, twist, nu)
-    return np.sqrt(xp) - np.sqrt(np.clip(xm, 0.0, None))
-
-
-def _mp_beta_difference(p: mp.mpf, om: mp.mpf, nu: mp.mpf) -> mp.mpf:
-    lam = mp.pi**2 * p
-    mu = lam / nu
-    s = lam + mu + 2 * om**2
-    xp = (s + mp.sqrt((lam - mu) ** 2 + 8 * om**2 * (lam + mu))) / 2
-    xm = (lam - om**2) * (mu - om**2) / xp
-    return mp.sqrt(xp) - (mp.sqrt(xm) if xm > 0 else 0)
-
-
-def planarity(x1: NDArray[np.float64], x2: NDArray[np.float64]) -> float:
-    """sigma_min/sigma_max of the samples (x1, x2): 0 iff the centreline lies in one plane
-    through the rod's axis (a plane containing both hinged ends must contain the axis)."""
-    sv = np.linalg.svd(np.column_stack([x1, x2]), compute_uv=False)
-    return float(sv[-1] / sv[0])
 
 
 # ------------------------------------------------------------------------------------------
@@ -224,25 +148,13 @@ def _maximum(nu: float, n: int) -> MaximumRecord:
     closed = crossing_closed_form(n, nu)
     mpc = family_crossing(closed.twist, nu, p_guess=closed.p_star, dps=DPS)
     col = collocation_crossing(n * math.pi, nu)
-    with mp.workdps(DPS):
-        nuv = mp.mpf(nu)
-        dbeta = _mp_beta_difference(mpc.p_star, mpc.twist, nuv)
-        lam = mp.pi**2 * mpc.p_star
-        s_ = lam + lam / nuv + 2 * mpc.twist**2
-        xp = (s_ + mp.sqrt((lam - lam / nuv) ** 2 + 8 * mpc.twist**2 * (lam + lam / nuv))) / 2
-        xm = (lam - mpc.twist**2) * (lam / nuv - mpc.twist**2) / xp
-        gap = max(abs(mp.sqrt(xm) - (n - 1) * mp.pi), abs(mp.sqrt(xp) - (n + 1) * mp.pi))
-        dslopes = {}
-        for fam, slope in mpc.slopes.items():
-            d_om = mp.diff(lambda w: _mp_beta_difference(mpc.p_star, w, nuv), mpc.twist)
-            d_p = mp.diff(lambda q: _mp_beta_difference(q, mpc.twist, nuv), mpc.p_star)
-            dslopes[fam] = float(d_om + d_p * slope)
+    wav = crossing_wavenumbers(mpc, nu, dps=DPS)
     return MaximumRecord(
         nu=nu, n=n, twist_mp=float(mpc.twist), twist_coll=col.twist, p_mp=float(mpc.p_star),
         p_coll=col.p_star, slopes_mp={k: float(v) for k, v in mpc.slopes.items()},
         slopes_coll=col.slopes, left=mpc.left, right=mpc.right, kind=mpc.kind,
-        dbeta_mp=float(dbeta), dbeta_slopes=dslopes, twist_closed=closed.twist,
-        p_closed=closed.p_star, resonance_gap_mp=float(gap))
+        dbeta_mp=wav.difference, dbeta_slopes=wav.slopes, twist_closed=closed.twist,
+        p_closed=closed.p_star, resonance_gap_mp=wav.resonance_gap)
 
 
 def _limit_row(nu: float, j: int) -> dict[str, float]:
@@ -268,8 +180,8 @@ def _window_row(nu: float) -> dict[str, float]:
     mid = 0.5 * (w.omega_a + w.omega_b)
     r = characteristic_critical_load(mid, nu, dps=DPS)
     row["x_minus_mid_mp"] = float(r.x_minus)
-    xm, _ = wavenumbers_np(np.array([critical_load(mid, nu, tol=TOL)]), np.array([mid]), nu)
-    row["x_minus_mid_coll"] = float(xm[0])
+    b1, _ = critical_wavenumbers(critical_load(mid, nu, tol=TOL), mid, nu)
+    row["x_minus_mid_coll"] = float((b1 * b1).real)
     return row
 
 
@@ -283,8 +195,8 @@ def _mode_row(twist: float, nu: float) -> dict[str, object]:
     return {"twist": twist, "nu": nu, "family": root.family, "s": col.s,
             "x1": col.x1 * scale, "x2": col.x2 * scale,
             "x1_mp": np.array(cm.x1), "x2_mp": np.array(cm.x2),
-            "planarity_coll": planarity(col.x1, col.x2),
-            "planarity_mp": planarity(np.array(cm.x1), np.array(cm.x2)),
+            "planarity_coll": non_planarity(col.x1, col.x2),
+            "planarity_mp": non_planarity(cm.x1, cm.x2),
             "omega2_over_omega1": float(np.max(np.abs(col.omega2)) / np.max(np.abs(col.omega1))),
             "shape_mismatch": float(np.max(np.abs(xc * scale - xm)))}
 
@@ -317,15 +229,12 @@ def compute_evidence(progress: Callable[[str], None] = lambda _m: None) -> Strai
             spot.append({"nu": nu, "twist": om,
                          "p_mp": float(characteristic_critical_load(om, nu, dps=DPS).p_star),
                          "p_coll": float(critical_load(om, nu, tol=TOL))})
-    with mp.workdps(DPS):
-        zero = [{"nu": nu, "p_coll": float(critical_load(0.0, nu, tol=TOL)),
-                 "det_sym_euler": float(abs(determinant("symmetric", mp.pi**2, mp.mpf(0),
-                                                        mp.mpf(nu))))}
-                for nu in NUS]
+    zero = [{"nu": nu, "p_coll": float(critical_load(0.0, nu, tol=TOL)),
+             "det_sym_euler": abs(characteristic_determinant("symmetric", 1.0, 0.0, nu, DPS))}
+            for nu in NUS]
     iso_grid = np.linspace(0.0, 40.0, 81)
-    with mp.workdps(DPS):
-        det_iso = max(abs(determinant("symmetric", mp.pi**2, mp.mpf(float(om)), mp.mpf(1)))
-                      for om in iso_grid)
+    det_iso = max(abs(characteristic_determinant("symmetric", 1.0, float(om), 1.0, DPS))
+                  for om in iso_grid)
     isotropic = {"max_dev_coll": float(np.max(np.abs(critical_load(iso_grid, 1.0, tol=TOL)
                                                      - 1.0))),
                  "max_det_mp": float(det_iso), "points": float(iso_grid.size),
@@ -337,7 +246,7 @@ def compute_evidence(progress: Callable[[str], None] = lambda _m: None) -> Strai
     e_scale = float(euler.x1[np.argmax(np.abs(euler.x1))])
     modes.insert(0, {"twist": 0.0, "nu": MODE_CASES[0][1], "family": euler.family,
                      "s": euler.s, "x1": euler.x1 / e_scale, "x2": euler.x2 / e_scale,
-                     "planarity_coll": planarity(euler.x1, euler.x2),
+                     "planarity_coll": non_planarity(euler.x1, euler.x2),
                      "planarity_mp": 0.0,  # closed form: x = sin(pi s) e1
                      "omega2_over_omega1": float(np.max(np.abs(euler.omega2))
                                                  / np.max(np.abs(euler.omega1))),
@@ -349,7 +258,7 @@ def compute_evidence(progress: Callable[[str], None] = lambda _m: None) -> Strai
         root = characteristic_critical_load(om, DETAIL_NU, dps=DPS)
         cm = characteristic_mode(root, om, DETAIL_NU, points=121, dps=20)
         planarity_decay.append({
-            "twist": om, "planarity_mp": planarity(np.array(cm.x1), np.array(cm.x2)),
+            "twist": om, "planarity_mp": non_planarity(cm.x1, cm.x2),
             "fast_amplitude": lam_inf * 0.5 * (1 - 1 / DETAIL_NU) / (4 * om**2)})
     timings["spot checks, limit, windows, modes"] = time.perf_counter() - t2
     progress(f"spot checks, large-twist loads, windows and modes in "
@@ -373,35 +282,24 @@ def solver_agreement(ev: StraightRodEvidence) -> float:
 
 def grid_local_maxima(ev: StraightRodEvidence, nu: float) -> NDArray[np.float64]:
     """Twists of the local maxima of p* on the dense collocation grid (interior points)."""
-    p = ev.p[nu]
-    idx = np.flatnonzero((p[1:-1] > p[:-2]) & (p[1:-1] >= p[2:])) + 1
-    return ev.grid[idx]
+    return local_maxima(ev.grid, ev.p[nu])
 
 
 def rises_until_first_maximum(ev: StraightRodEvidence, nu: float) -> bool:
     """p* strictly increasing on the grid from Omega = 0 up to the first crossing."""
-    first = ev.maxima_for(nu)[0].twist_mp
-    sel = ev.grid <= first
-    return bool(np.all(np.diff(ev.p[nu][sel]) > 0))
+    return increasing_up_to(ev.grid, ev.p[nu], ev.maxima_for(nu)[0].twist_mp)
 
 
 def settling_twist(ev: StraightRodEvidence, nu: float, frac: float) -> float | None:
     """Smallest grid twist beyond which p_inf - p* < frac (p_inf - 1) everywhere on the grid
     (None if that does not happen within the grid)."""
     p_inf = large_twist_limit(nu)
-    bad = np.flatnonzero(p_inf - ev.p[nu] >= frac * (p_inf - 1.0))
-    if bad.size == 0:
-        return float(ev.grid[0])
-    if bad[-1] + 1 >= ev.grid.size:
-        return None
-    return float(ev.grid[bad[-1] + 1])
+    return settling_point(ev.grid, p_inf - ev.p[nu], frac * (p_inf - 1.0))
 
 
-def family_switches(ev: StraightRodEvidence, nu: float) -> NDArray[np.float64]:
+def critical_family_switches(ev: StraightRodEvidence, nu: float) -> NDArray[np.float64]:
     """Midpoints of the grid intervals across which the critical family changes."""
-    f = ev.family[nu]
-    idx = np.flatnonzero(f[1:] != f[:-1])
-    return 0.5 * (ev.grid[idx] + ev.grid[idx + 1])
+    return family_switches(ev.grid, ev.family[nu])
 
 
 # ------------------------------------------------------------------------------------------
@@ -558,7 +456,7 @@ def claim_further_maxima(ev: StraightRodEvidence) -> Claim:
     # every grid maximum sits next to a located crossing (no smooth maxima)
     gaps = []
     for nu in NUS:
-        sw = family_switches(ev, nu)
+        sw = critical_family_switches(ev, nu)
         for om in grid_local_maxima(ev, nu):
             gaps.append(float(np.min(np.abs(sw - om))) if sw.size else math.inf)
     step = float(ev.grid[1] - ev.grid[0])
@@ -697,7 +595,7 @@ def claim_beta_difference(ev: StraightRodEvidence) -> Claim:
         d = beta_difference(ev.p[nu], ev.grid, nu)
         idx = np.flatnonzero((d[1:-1] > d[:-2]) & (d[1:-1] >= d[2:])) + 1
         marks = np.array([m.twist_mp for m in ev.maxima_for(nu)] + [w[nu]["omega_b"]])
-        sw = family_switches(ev, nu)
+        sw = critical_family_switches(ev, nu)
         for om in ev.grid[idx]:
             near = min(np.min(np.abs(marks - om)),
                        np.min(np.abs(sw - om)) if sw.size else math.inf)
@@ -740,8 +638,7 @@ def claim_beta_difference(ev: StraightRodEvidence) -> Claim:
 def claim_resonance(ev: StraightRodEvidence) -> Claim:
     devs: dict[float, list[tuple[float, float, float]]] = {}
     for x in ev.limit:
-        xm, xp = wavenumbers_np(np.array([x["p_mp"]]), np.array([x["twist"]]), x["nu"])
-        b1, b2 = math.sqrt(float(xm[0])), math.sqrt(float(xp[0]))
+        b1, b2 = critical_wavenumbers(x["p_mp"], x["twist"], x["nu"])
         a1, a2 = large_twist_wavenumbers(x["twist"], x["nu"])
         devs.setdefault(x["nu"], []).append(
             (x["twist"], max(abs(b1 - (x["twist"] - math.pi)), abs(b2 - (x["twist"] + math.pi))),
@@ -923,7 +820,8 @@ def figure_wavenumbers(ev: StraightRodEvidence):
     ax, ax2, ax3 = axes
     nu = DETAIL_NU
     om = np.linspace(0.0, 3 * np.pi, 361)
-    xm, xp = wavenumbers_np(critical_load(om, nu, tol=CURVE_TOL), om, nu)
+    b1, b2 = critical_wavenumbers(critical_load(om, nu, tol=CURVE_TOL), om, nu)
+    xm, xp = (np.asarray(b1) ** 2).real, b2**2
     w = {r["nu"]: r for r in ev.windows}
     ax.axvspan(w[nu]["omega_a"], w[nu]["omega_b"], color="0.85", label="β₁ imaginary")
     ax.plot(om, np.sqrt(xp), color="tab:red", lw=1.3, label="β₂L")

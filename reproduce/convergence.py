@@ -3,7 +3,7 @@
 Models: the hinged straight rod with spontaneous twist (paper, Eq. ``inst1``); p* = P_cr /
 (pi^2 A1/L^2), Omega(L) = omega30 L, nu = I2/I1.
 Compares, at several (Omega(L), nu) including a large twist: (a) the Chebyshev collocation
-solver (:func:`spectral_rod.straight_rod.collocation_critical_load`) at fixed degree n and
+solver (:func:`spectral_rod.critical_load` with ``method="collocation"``) at fixed degree n and
 with automatic resolution, (b) second-order finite differences of the same equations
 (:mod:`spectral_rod.finite_difference`), (c) the cost of the extended-precision characteristic
 equation (:mod:`spectral_rod.characteristic`), which is also the reference for every error.
@@ -16,7 +16,6 @@ obvious implementation (informational; the benchmark ratio comes from pytest-ben
 
 from __future__ import annotations
 
-import sys
 import time
 import warnings
 from collections.abc import Callable
@@ -29,17 +28,17 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
 
-from reproduce._runner import ROOT, SceneOutput
-from spectral_rod.characteristic import characteristic_critical_load
-from spectral_rod.figure_data import load_figure1
-from spectral_rod.finite_difference import fd_critical_load
-from spectral_rod.io import write_with
-from spectral_rod.straight_rod import (
-    ERR_LINEAR,
+from reproduce._runner import SceneOutput
+from reproduce.io import write_with
+from spectral_rod import (
     ConvergenceWarning,
-    collocation_critical_load,
-    family_operator,
-    solve_family,
+    baseline_sweep,
+    characteristic_critical_load,
+    collocation_mode_coefficients,
+    critical_load,
+    fd_critical_load,
+    load_figure1,
+    tail_for_tolerance,
 )
 
 NAME = "convergence"
@@ -48,7 +47,6 @@ SUMMARY = ("straight rod, Eq. inst1: error vs resolution and vs time for colloca
 CASES = ((2.0, 1.5), (10.0, 1.1), (30.0, 2.0), (100.0, 1.5))
 TARGETS = (1e-4, 1e-8, 1e-12)
 FD_INTERVALS = (16, 64, 256, 1024, 4096, 16384)
-FIGURE1_CSV = ROOT / "reference_data" / "figure1_digitised.csv"
 COLORS = ("tab:blue", "tab:orange", "tab:green", "tab:red")
 
 
@@ -89,12 +87,12 @@ def study_case(twist: float, nu: float) -> tuple[pd.DataFrame, float, float]:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ConvergenceWarning)
         for n in collocation_degrees(twist):
-            dt, p = best_time(lambda n=n: collocation_critical_load(twist, nu, n=n),
+            dt, p = best_time(lambda n=n: critical_load(twist, nu, n=n, method="collocation"),
                               min_total=0.01)
             rows.append(("collocation (fixed n)", n, n // 2, abs(p / ref - 1), dt))
         for tol in TARGETS:
-            dt, res = best_time(lambda tol=tol: collocation_critical_load(
-                twist, nu, tol=tol, full_output=True))
+            dt, res = best_time(lambda tol=tol: critical_load(
+                twist, nu, tol=tol, method="collocation", full_output=True))
             rows.append((f"collocation (tol={tol:g})", int(res.n), int(res.n) // 2,
                          abs(float(res.p_star) / ref - 1), dt))
     for n in FD_INTERVALS:
@@ -142,24 +140,18 @@ def mode_coefficients(twist: float, nu: float, tol: float = 1e-12
     """Chebyshev coefficients (in x = 2s - 1) of the critical mode at the automatic degree."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ConvergenceWarning)
-        res = collocation_critical_load(twist, nu, tol=tol, full_output=True)
-    n, family = int(res.n), str(res.family)
-    _, _, vec = solve_family(n, family, np.array([abs(twist)]), np.array([nu]))
-    c1, c2 = family_operator(n, family).split(vec[0])
+        res = critical_load(twist, nu, tol=tol, method="collocation", full_output=True)
+    n, family = res.n, res.family
+    c1, c2 = collocation_mode_coefficients(twist, nu, n, family)
     scale = max(np.abs(c1).max(), np.abs(c2).max())
     return n, family, c1 / scale, c2 / scale
 
 
 def figure1_speed() -> dict[str, float]:
     """Wall time of the Figure 1 sweep (1,201 points, tol 1e-12) vs the obvious implementation."""
-    sys.path.insert(0, str(ROOT / "tests"))
-    try:
-        from baseline_solver import baseline_sweep  # the yardstick lives with the benchmarks
-    finally:
-        sys.path.remove(str(ROOT / "tests"))
-    d = load_figure1(FIGURE1_CSV)
+    d = load_figure1()
     twist, nu = d["twist_angle"].to_numpy(), d["nu"].to_numpy()
-    t_new, p_new = best_time(lambda: collocation_critical_load(twist, nu, tol=1e-12),
+    t_new, p_new = best_time(lambda: critical_load(twist, nu, tol=1e-12, method="collocation"),
                              min_total=0.3)
     t_base, p_base = best_time(lambda: baseline_sweep(twist, nu), min_total=0.0, max_repeats=1)
     return {"points": float(twist.size), "new_s": t_new, "baseline_s": t_base,
@@ -231,7 +223,7 @@ def draw_time(runs: pd.DataFrame):
 
 def draw_coefficients(modes: list[tuple[float, float, int, str, np.ndarray, np.ndarray]]):
     fig, axes = plt.subplots(2, 2, figsize=(10, 7.5), sharey=True)
-    tail_level = 1e-12 / ERR_LINEAR
+    tail_level = tail_for_tolerance(1e-12)
     for ax, (om, nu, n, family, c1, c2) in zip(axes.flat, modes, strict=False):
         for c, name, marker in ((c1, "ω₁", "o"), (c2, "ω₂", "s")):
             j = np.arange(c.size)
@@ -299,12 +291,12 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
         "![error vs time](convergence_time.png)", "",
         "Cost to reach a relative error (resolution: degree n for collocation, intervals N for "
         "finite differences; best-of-repeats wall time of one p*; 'auto' = "
-        "`collocation_critical_load(tol=target)`, which chooses n itself):", "", *table, "",
+        "`critical_load(tol=target)`, which chooses n itself):", "", *table, "",
         "![mode coefficients](convergence_coefficients.png)", "",
         f"Figure 1 sweep ({int(speed['points'])} points, tol 1e-12): "
         f"{speed['new_s'] * 1e3:.1f} ms against {speed['baseline_s'] * 1e3:.0f} ms for the "
         "obvious implementation (Trefethen `cheb`, n = 24, dense operator and `eigvals` per "
-        f"point; `tests/baseline_solver.py`): ratio {speed['ratio']:.0f} in this run "
+        f"point; `spectral_rod.baseline`): ratio {speed['ratio']:.0f} in this run "
         "(informational, wall clock on a shared machine; the benchmark ratio is "
         "`python -m pytest tests/bench -m bench`). The two agree to "
         f"{speed['max_rel_diff']:.1e}.",

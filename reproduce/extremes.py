@@ -26,12 +26,15 @@ import numpy as np
 import pandas as pd
 
 from reproduce._runner import SceneOutput
-from spectral_rod.characteristic import characteristic_critical_load
-from spectral_rod.critical import NEAR_DEGENERATE, TWIST_ROUTE, critical_load
-from spectral_rod.increment import critical_load_increment
-from spectral_rod.io import write_with
-from spectral_rod.large_twist import characteristic_double
-from spectral_rod.straight_rod import ConvergenceWarning, collocation_critical_load
+from reproduce.io import write_with
+from spectral_rod import (
+    NEAR_DEGENERATE,
+    TWIST_ROUTE,
+    ConvergenceWarning,
+    characteristic_critical_load,
+    critical_load,
+    critical_load_increment,
+)
 
 NAME = "extremes"
 SUMMARY = ("straight rod at the extremes: p* and p*-1 errors over the (Omega, nu) plane vs the "
@@ -63,16 +66,9 @@ def p_star_grid() -> pd.DataFrame:
             p = float(res.p_star[j])
             rows.append({"twist_angle": om, "nu": nu, "p_star": p, "p_ref": float(ref),
                          "rel_error": float(abs((p - ref) / ref)),
-                         "method": route_name(om, nu),
+                         "method": str(res.method[j]),
                          "n": int(res.n[j]), "family": str(res.family[j])})
     return pd.DataFrame(rows)
-
-
-def route_name(twist: float, nu: float) -> str:
-    """The method critical_load uses at (twist, nu) (see spectral_rod.critical)."""
-    if abs(twist) >= TWIST_ROUTE:
-        return "characteristic"
-    return "1+increment" if nu - 1 <= NEAR_DEGENERATE else "collocation"
 
 
 def routing_study() -> pd.DataFrame:
@@ -86,10 +82,10 @@ def routing_study() -> pd.DataFrame:
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore", ConvergenceWarning)
                 # beyond Omega ~ 300 the automatic degree would exceed the cap: measure n = 512
-                res = collocation_critical_load(om, nu, n=512 if om > 300 else None,
-                                                full_output=True)
+                res = critical_load(om, nu, n=512 if om > 300 else None,
+                                    method="collocation", full_output=True)
             t1 = time.perf_counter()
-            pc, _ = characteristic_double(om, nu)
+            pc = critical_load(om, nu, method="characteristic")
             t2 = time.perf_counter()
             rows.append({"twist_angle": om, "nu": nu,
                          "colloc_rel_error": float(abs((float(res.p_star) - ref) / ref)),
@@ -249,7 +245,7 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
         f"{NEAR_DEGENERATE:g} (|Ω| < {TWIST_ROUTE:g}) -> 1 + increment; else collocation.",
         "* Asymptote (not used for values): p* = p_inf [1 − π²(ν−1)²/(4(ν+1)²Ω²)] + "
         "O(Ω⁻³) with p_inf = 2ν/(1+ν); the O(Ω⁻³) term is the ripple "
-        "−π²(ν−1)/(ν+1) p_inf |sin Ω|/Ω³ (`spectral_rod.large_twist`).",
+        "−π²(ν−1)/(ν+1) p_inf |sin Ω|/Ω³ (`spectral_rod.asymptotics`).",
         f"* Status: {'PASS' if ok else 'FAIL'}; run time {time.perf_counter() - t0:.1f} s.",
         "", "![extremes](extremes.png)", "",
         "### p* − 1 (relative error)", "",

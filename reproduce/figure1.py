@@ -20,15 +20,13 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
 
-from reproduce._runner import ROOT, SceneOutput
-from spectral_rod.critical import critical_load
-from spectral_rod.figure_data import CURVE_NU, load_figure1
-from spectral_rod.io import write_text, write_with
+from reproduce._runner import SceneOutput
+from reproduce.io import write_text, write_with
+from spectral_rod import FIGURE1_NU, critical_load, load_figure1
 
 NAME = "figure1"
 SUMMARY = ("straight twisted rod, Eq. inst1: collocation p*(Omega) vs the digitised Figure 1 "
            "-> figure1.png/.pdf, figure1_comparison.csv")
-REFERENCE_CSV = ROOT / "reference_data" / "figure1_digitised.csv"
 TOL = 1e-12
 #: Acceptance thresholds of the reproduction (issue 2): per-curve rms and max |deviation|.
 RMS_LIMIT, MAX_LIMIT = 1.5e-4, 6e-4
@@ -75,12 +73,12 @@ def draw(table: pd.DataFrame, curves: dict[float, tuple[np.ndarray, np.ndarray]]
         for a in (ax, axr):
             a.axvline(guide, color="0.75", lw=0.8, zorder=0)
         ax.text(guide, 1.252, ["π", "2π", "3π"][k - 1], ha="center", va="bottom")
-    for i, nu in enumerate(CURVE_NU, 1):
+    for i, nu in enumerate(FIGURE1_NU, 1):
         om, p = curves[nu]
         sub = table[table["nu"] == nu]
         ax.plot(om, p, color=COLORS[nu], lw=1.6, label=f"curve {i}: ν = {nu} (collocation)")
         ax.plot(sub["twist_angle"], sub["p_star_digitised"], "o", ms=2.2, mfc="none",
-                color="k", mew=0.5, label="digitised Figure 1" if i == len(CURVE_NU) else None)
+                color="k", mew=0.5, label="digitised Figure 1" if i == len(FIGURE1_NU) else None)
         ax.text(10.08, p[-1], f"ν = {nu}", va="center", color=COLORS[nu], fontsize=9)
         axr.plot(sub["twist_angle"], sub["deviation"] * 1e4, ".", ms=2.5, color=COLORS[nu],
                  label=f"ν = {nu}")
@@ -99,13 +97,13 @@ def draw(table: pd.DataFrame, curves: dict[float, tuple[np.ndarray, np.ndarray]]
 
 def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
     t0 = time.perf_counter()
-    reference = load_figure1(REFERENCE_CSV)
-    progress(f"loaded {len(reference)} digitised points from {REFERENCE_CSV.name}")
+    reference = load_figure1()
+    progress(f"loaded {len(reference)} digitised points (spectral_rod/data/figure1_digitised.csv)")
     table = comparison_table(reference)
     t_sweep = time.perf_counter() - t0
     progress(f"collocation at all digitised points to tol {TOL:g} in {t_sweep:.2f} s")
     grid = np.linspace(0.0, 10.0, 801)
-    curves = {nu: (grid, critical_load(grid, nu, tol=TOL)) for nu in CURVE_NU}
+    curves = {nu: (grid, critical_load(grid, nu, tol=TOL)) for nu in FIGURE1_NU}
     summary = deviation_summary(table)
     fig = draw(table, curves)
     files = [write_with(out / "figure1.png", lambda p: fig.savefig(p, format="png", dpi=160)),

@@ -16,7 +16,7 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
 
-from spectral_rod.io import write_text
+from reproduce.io import write_text
 
 VERDICTS = ("holds", "holds approximately", "fails")
 

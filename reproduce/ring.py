@@ -37,10 +37,19 @@ import numpy as np
 import pandas as pd
 
 from reproduce._runner import SceneOutput
+from reproduce.io import write_text, write_with
 from reproduce.ledger import Claim, update_ledger
-from spectral_rod.io import write_text, write_with
-from spectral_rod.ring import crit2, ring_formula_load, threshold_twist
-from spectral_rod.ring_stability import LOADS, ring_buckling
+from spectral_rod import (
+    RING_LOADS,
+    crit2,
+    homogenised_limit,
+    in_plane_untwisted,
+    out_of_plane_supremum,
+    out_of_plane_untwisted,
+    ring_buckling,
+    ring_formula_load,
+    threshold_twist,
+)
 
 NAME = "ring"
 SUMMARY = ("twisted ring: Eq. crit2 vs converged Fourier-Galerkin q_cr (hydrostatic, axis) for "
@@ -71,38 +80,6 @@ class RingEvidence:
 
 
 # ------------------------------------------------------------------------------------------
-# closed forms used as independent references
-# ------------------------------------------------------------------------------------------
-
-def in_plane_untwisted(A: float, load: str) -> float:
-    """Untwisted ring, in-plane, min over n >= 2: A (n^2 - 1) (hydrostatic) and
-    A (n^2 - 1)^2/(n^2 - 2) (axis-directed); both at n = 2: 3 A and 4.5 A."""
-    n = np.arange(2, 60, dtype=float)
-    vals = A * (n**2 - 1) if load == "hydrostatic" else A * (n**2 - 1) ** 2 / (n**2 - 2)
-    return float(vals.min())
-
-
-def out_of_plane_untwisted(A: float, A3: float) -> float:
-    """Timoshenko & Gere: A (n^2 - 1)^2/(n^2 + A/A3), min over n >= 2 (both load models)."""
-    n = np.arange(2, 60, dtype=float)
-    return float(np.min(A * (n**2 - 1) ** 2 / (n**2 + A / A3)))
-
-
-def out_of_plane_supremum(A: float) -> float:
-    """sup over A3 of the out-of-plane load (A3 -> infinity): A min_n (n^2 - 1)^2/n^2 = 9A/4."""
-    n = np.arange(2, 60, dtype=float)
-    return float(np.min(A * (n**2 - 1) ** 2 / n**2))
-
-
-def homogenised_limit(nu: float, e_ratio: float, load: str) -> float:
-    """N -> infinity: the rotating bending stiffness homogenises to the isotropic harmonic mean
-    2 A1 A2/(A1 + A2) (1-D homogenisation of the curvature energy), A3 unchanged."""
-    A_h = 2.0 * nu / (1.0 + nu)
-    A3 = e_ratio * (1.0 + nu)
-    return min(in_plane_untwisted(A_h, load), out_of_plane_untwisted(A_h, A3))
-
-
-# ------------------------------------------------------------------------------------------
 # evidence
 # ------------------------------------------------------------------------------------------
 
@@ -117,7 +94,7 @@ def table_rows(nus: tuple[float, ...] = NUS, twists: tuple[int, ...] = TWISTS,
             for N in twists:
                 row: dict[str, object] = {"e_label": label, "e_ratio": e, "nu": nu, "N": N,
                                           "crit2": ring_formula_load(N, nu, e_ratio=e)}
-                for load in LOADS:
+                for load in RING_LOADS:
                     r = ring_buckling(N, nu, e_ratio=e, load=load)
                     row[f"q_{load}"] = r.load
                     row[f"kind_{load}"] = r.kind
@@ -147,7 +124,7 @@ def threshold_rows(table: pd.DataFrame, nus: tuple[float, ...] = NUS) -> pd.Data
             N = int(th.integer)
             sel = table[(table["e_label"] == label) & (table["nu"] == nu) & (table["N"] == N)]
             row[f"crit2_at_N_{label}"] = crit2(N, nu, e)
-            for load in LOADS:
+            for load in RING_LOADS:
                 row[f"q_{load}_at_N_{label}"] = (float(sel[f"q_{load}"].iloc[0]) if len(sel)
                                                 else ring_buckling(N, nu, e_ratio=e,
                                                                    load=load).load)
@@ -159,7 +136,7 @@ def untwisted_circular_rows() -> pd.DataFrame:
     """N = 0, nu = 1: solver restricted to in-plane / out-of-plane vs the closed forms."""
     rows = []
     for label, e in E_RATIOS.items():
-        for load in LOADS:
+        for load in RING_LOADS:
             full = ring_buckling(0, 1.0, e_ratio=e, load=load)
             inp = ring_buckling(0, 1.0, e_ratio=e, load=load, subspace="in-plane")
             out = ring_buckling(0, 1.0, e_ratio=e, load=load, subspace="out-of-plane")
@@ -206,7 +183,7 @@ def compute_evidence(progress: Callable[[str], None] = lambda _m: None) -> RingE
 def crit2_deviation(ev: RingEvidence) -> dict[str, dict[str, float]]:
     """Per load model: max |crit2 - q|/q over the table, where, and the sign-wrong count."""
     out = {}
-    for load in LOADS:
+    for load in RING_LOADS:
         dev = ev.table[f"rel_dev_{load}"].abs()
         k = int(dev.idxmax())
         row = ev.table.loc[k]
@@ -230,7 +207,7 @@ def verdict_for_deviation(dev: float) -> str:
 
 def claim_crit2(ev: RingEvidence) -> Claim:
     d = crit2_deviation(ev)
-    best = min(LOADS, key=lambda ld: d[ld]["max_rel_dev"])
+    best = min(RING_LOADS, key=lambda ld: d[ld]["max_rel_dev"])
     n_cases = len(ev.table)
     h, a = d["hydrostatic"], d["axis"]
     return Claim(
@@ -253,7 +230,7 @@ def claim_crit2(ev: RingEvidence) -> Claim:
                  "numerical load is never below "
                  f"{min(h['min_numerical'], a['min_numerical']):.4f}.",
         verdict=verdict_for_deviation(d[best]["max_rel_dev"]), scene=NAME, figure="ring.png",
-        numbers={ld: d[ld] for ld in LOADS})
+        numbers={ld: d[ld] for ld in RING_LOADS})
 
 
 def circular_limit_numbers(ev: RingEvidence) -> dict[str, object]:
@@ -299,7 +276,7 @@ def twist_independence_spread(ev: RingEvidence) -> float:
     t = ev.table[ev.table["nu"] == 1.0]
     spread = 0.0
     for _, g in t.groupby("e_label"):
-        for load in LOADS:
+        for load in RING_LOADS:
             q = g[f"q_{load}"]
             spread = max(spread, float((q.max() - q.min()) / q.min()))
     return spread
@@ -360,7 +337,7 @@ def monotonicity_numbers(ev: RingEvidence) -> dict[str, object]:
     drops: dict[str, list[float]] = {}
     for (label, nu), g in t.groupby(["e_label", "nu"]):
         g = g.sort_values("N")
-        for load in LOADS:
+        for load in RING_LOADS:
             q = g[f"q_{load}"].to_numpy()
             rises = np.diff(q)
             groups += 1
@@ -416,9 +393,9 @@ def spontaneous_numbers(ev: RingEvidence) -> dict[str, object]:
             continue
         rows.append({"nu": float(th["nu"]), "N_integer": int(th["N_integer"]),
                      "max_crit2": float(sel["crit2"].max()),
-                     "min_q": float(sel[[f"q_{ld}" for ld in LOADS]].min().min())})
-    min_inv = float(t[[f"min_inverse_load_{ld}" for ld in LOADS]].min().min())
-    all_pos = bool((t[[f"q_{ld}" for ld in LOADS]] > 0).all().all())
+                     "min_q": float(sel[[f"q_{ld}" for ld in RING_LOADS]].min().min())})
+    min_inv = float(t[[f"min_inverse_load_{ld}" for ld in RING_LOADS]].min().min())
+    all_pos = bool((t[[f"q_{ld}" for ld in RING_LOADS]] > 0).all().all())
     return {"beyond_threshold": rows, "min_inverse_load": min_inv, "all_positive": all_pos,
             "n_solves": 2 * len(t)}
 
@@ -453,7 +430,7 @@ def destabilising_numbers(ev: RingEvidence) -> dict[str, object]:
     below, total, exceptions = 0, 0, []
     for (label, nu), g in t.groupby(["e_label", "nu"]):
         g = g.set_index("N")
-        for load in LOADS:
+        for load in RING_LOADS:
             q0 = g.loc[0, f"q_{load}"]
             for N in g.index[g.index >= 1]:
                 total += 1
@@ -599,8 +576,8 @@ def draw(ev: RingEvidence):
 def report_section(claims: list[Claim], ev: RingEvidence, seconds: float) -> str:
     d = crit2_deviation(ev)
     h = d["hydrostatic"]
-    conv = ev.table[[f"max_frequency_{ld}" for ld in LOADS]].max().max()
-    rel = ev.table[[f"rel_change_{ld}" for ld in LOADS]].max().max()
+    conv = ev.table[[f"max_frequency_{ld}" for ld in RING_LOADS]].max().max()
+    rel = ev.table[[f"rel_change_{ld}" for ld in RING_LOADS]].max().max()
     lines = ["## Ring: Eq. crit2 against the converged answer", "",
              f"{len(ev.table)} rings (N = 0..10, ν ∈ {{{', '.join(f'{v:g}' for v in NUS)}}}, "
              f"e = 1 and isotropic) solved by Fourier-Galerkin for both load models; every "
@@ -613,7 +590,7 @@ def report_section(claims: list[Claim], ev: RingEvidence, seconds: float) -> str
              f"{h['positive_formula_rel_dev_range'][1]:+.2f}]; even at N = 0 up to "
              f"{h['max_rel_dev_N0']:.2f}. crit2 is ≤ 0 in "
              f"{h['n_formula_nonpositive']} of {len(ev.table)} cases, whereas the numerical "
-             f"load never falls below {min(d[ld]['min_numerical'] for ld in LOADS):.4f}.", "",
+             f"load never falls below {min(d[ld]['min_numerical'] for ld in RING_LOADS):.4f}.", "",
              "**Is the threshold twist physical?** No. The stress-free twisted ring minimises a "
              "non-negative energy; the numerical stiffness is positive definite in every solve "
              "and every critical load is positive (see `ring_threshold.md`).", "",

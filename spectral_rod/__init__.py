@@ -1,77 +1,112 @@
-"""spectral_rod: a verification package for Drozdov & Rabin, *Buckling of rods with
-spontaneous twist and curvature*.
+r"""spectral_rod: a verification package for Drozdov & Rabin, *Buckling of rods with spontaneous
+twist and curvature*.
 
 Straight rod (paper's Eq. ``inst1``, hinged ends), dimensionless: s/L in [0, 1], total twist
-angle Omega(L) = omega30 L, nu = I2/I1 >= 1, p* = P_cr / (pi^2 A1 / L^2).
+angle Omega(L) = omega30 L (``twist_angle``), ``nu`` = I2/I1 >= 1, p* = P_cr / (pi^2 A1 / L^2).
+Ring: loads q R^3 / (E1 I1), e = E2/E1, N turns of the section (Omega = N s/R).
 
-* :func:`critical_load` -- Chebyshev collocation with automatic resolution; very large twist is
-  routed to the characteristic equation, near-degenerate points to the increment.
-* :func:`critical_load_increment` -- p* - 1 to full relative accuracy as nu -> 1 or twist -> 0.
-* :func:`buckling_mode` -- the critical mode (omega1, omega2, centreline) and wavenumbers.
-* :func:`characteristic_critical_load` -- the paper's characteristic equation in extended
-  precision (the independent reference); :func:`family_critical_load` per mode family and
-  :func:`family_crossing`, where the families cross (the maxima of p*).
-* :func:`large_twist_limit` (2 nu/(1 + nu)), :func:`large_twist_expansion`,
-  :func:`imaginary_beta1_window`, :func:`crossing_closed_form` -- closed forms.
+>>> import spectral_rod as sr
+>>> round(sr.critical_load(5.0, 1.5), 9)
+1.164464854
+>>> sr.choose_method(5.0, 1.5)
+'collocation'
 
-Ring (paper's section "Stability of a ring"), q_cr R^3 / (E1 I1), e = E2/E1:
+From the paper to the code
+--------------------------
+==================================  ==========================================================
+paper                               implemented / checked by
+==================================  ==========================================================
+Eq. ``frenini``, ``frenet``          ring frames: ``derivations/ring_linearisation.py``; rod:
+                                    ``derivations/straight_rod.py`` (linearised curvatures)
+Eq. ``constit``                     :mod:`.ring_stability` (energy), ``derivations/``
+Eqs. ``Munder``                     ``derivations/straight_rod.py`` (linearised: ``inst1``)
+Eq. ``inst1`` (rectilinear rod)     :func:`critical_load` via :func:`choose_method`:
+                                    collocation :mod:`.straight_rod`, the characteristic
+                                    equation :mod:`.characteristic` (mpmath reference and
+                                    double precision), :func:`critical_load_increment`
+                                    (p* - 1); :mod:`.finite_difference`; :mod:`.baseline`
+hinged ends, geometric relations    :func:`buckling_mode` (:mod:`.mode`)
+wavenumbers beta_1, beta_2           :func:`critical_wavenumbers`, :func:`beta_difference`
+                                    (:mod:`.wavenumbers`); :func:`imaginary_beta1_window`
+maxima near n pi (Figure 1)         :func:`family_crossing`, :func:`collocation_crossing`
+                                    (:mod:`.crossings`), :func:`crossing_closed_form`
+limit at large twist                :func:`large_twist_limit`, :func:`large_twist_expansion`
+                                    (:mod:`.asymptotics`)
+"intrinsically three-dimensional"   :func:`non_planarity` (:mod:`.measures`)
+Figure 1                            :func:`load_figure1` (:mod:`.figure_data`, the digitised
+                                    points shipped in ``spectral_rod/data``)
+ring, q_cr = 3 E1 I1/R^3 (I1 = I2)  :mod:`.ring_closed_forms` (untwisted ring, both planes)
+Eq. ``crit2``, threshold twist      :func:`ring_formula_load`, :func:`threshold_twist`
+                                    (:mod:`.ring_formula`)
+ring stability (the truth)          :func:`ring_critical_load`, :func:`ring_buckling`
+                                    (:mod:`.ring_stability`)
+==================================  ==========================================================
 
-* :func:`ring_formula_load`, :func:`threshold_twist` -- the paper's Eq. ``crit2`` and the twist at
-  which it predicts instability without load.
-* :func:`ring_critical_load`, :func:`ring_buckling` -- the linearised ring problem solved
-  numerically (Fourier spectral), the converged answer against which ``crit2`` is judged.
+Public names are imported lazily (``import spectral_rod`` stays light; scipy and mpmath load
+when a function that needs them is first used).
 """
 
-from spectral_rod.asymptotics import (
-    crossing_closed_form,
-    imaginary_beta1_window,
-    large_twist_expansion,
-    large_twist_limit,
-)
-from spectral_rod.characteristic import (
-    characteristic_critical_load,
-    family_critical_load,
-    family_crossing,
-)
-from spectral_rod.critical import critical_load
-from spectral_rod.increment import critical_load_increment
-from spectral_rod.ring import ThresholdTwist, ring_formula_load, threshold_twist
-from spectral_rod.ring_stability import (
-    RingBuckling,
-    RingConvergenceError,
-    ring_buckling,
-    ring_critical_load,
-)
-from spectral_rod.straight_rod import (
-    BucklingMode,
-    ConvergenceWarning,
-    CriticalLoad,
-    buckling_mode,
-    critical_wavenumbers,
-)
+from __future__ import annotations
+
+import importlib
+from typing import Any
 
 __version__ = "0.1.0"
 
-__all__ = [
-    "BucklingMode",
-    "ConvergenceWarning",
-    "CriticalLoad",
-    "RingBuckling",
-    "RingConvergenceError",
-    "ThresholdTwist",
-    "buckling_mode",
-    "characteristic_critical_load",
-    "critical_load",
-    "critical_load_increment",
-    "critical_wavenumbers",
-    "crossing_closed_form",
-    "family_critical_load",
-    "family_crossing",
-    "imaginary_beta1_window",
-    "large_twist_expansion",
-    "large_twist_limit",
-    "ring_buckling",
-    "ring_critical_load",
-    "ring_formula_load",
-    "threshold_twist",
-]
+#: public name -> module that defines it
+_EXPORTS = {
+    "BucklingMode": "results", "CriticalLoad": "results",
+    "ConvergenceError": "errors", "ConvergenceWarning": "errors",
+    "RingConvergenceError": "errors", "RootNotFoundError": "errors",
+    "SpectralRodError": "errors",
+    "FAMILIES": "families", "p_star_bounds": "families",
+    "ROD_METHODS": "router", "choose_method": "router",
+    "TWIST_ROUTE": "router", "NEAR_DEGENERATE": "router",
+    "critical_load": "critical", "buckling_mode": "mode",
+    "collocation_mode_coefficients": "straight_rod",
+    "tail_for_tolerance": "straight_rod.resolution",
+    "critical_load_increment": "increment",
+    "CharacteristicRoot": "characteristic", "characteristic_critical_load": "characteristic",
+    "family_critical_load": "characteristic", "determinant": "characteristic",
+    "characteristic_determinant": "characteristic",
+    "CharacteristicMode": "closed_form", "characteristic_mode": "closed_form",
+    "boundary_determinant_4x4": "closed_form",
+    "characteristic_roots": "wavenumbers", "critical_wavenumbers": "wavenumbers",
+    "beta_difference": "wavenumbers",
+    "FamilyCrossing": "crossings", "CollocationCrossing": "crossings",
+    "family_crossing": "crossings", "collocation_crossing": "crossings",
+    "family_slope": "crossings", "CrossingWavenumbers": "crossings",
+    "crossing_wavenumbers": "crossings",
+    "BetaWindow": "asymptotics", "CrossingClosedForm": "asymptotics",
+    "LargeTwistCoefficients": "asymptotics", "crossing_closed_form": "asymptotics",
+    "crossing_twist_asymptotic": "asymptotics", "imaginary_beta1_window": "asymptotics",
+    "large_twist_coefficients": "asymptotics", "large_twist_expansion": "asymptotics",
+    "large_twist_limit": "asymptotics", "large_twist_wavenumbers": "asymptotics",
+    "fd_critical_load": "finite_difference",
+    "baseline_critical_load": "baseline", "baseline_sweep": "baseline",
+    "FIGURE1_NU": "figure_data", "load_figure1": "figure_data",
+    "ThresholdTwist": "ring_formula", "crit2": "ring_formula", "ring_formula_load": "ring_formula",
+    "threshold_twist": "ring_formula",
+    "RingBuckling": "ring_stability", "RING_LOADS": "ring_stability",
+    "homogenised_limit": "ring_closed_forms", "in_plane_untwisted": "ring_closed_forms",
+    "out_of_plane_supremum": "ring_closed_forms", "out_of_plane_untwisted": "ring_closed_forms",
+    "non_planarity": "measures", "local_maxima": "measures", "family_switches": "measures",
+    "increasing_up_to": "measures", "settling_point": "measures",
+    "ring_buckling": "ring_stability", "ring_critical_load": "ring_stability",
+}
+
+__all__ = sorted(_EXPORTS)
+
+
+def __getattr__(name: str) -> Any:
+    """Import the defining module of a public name on first use (PEP 562)."""
+    module = _EXPORTS.get(name)
+    if module is None:
+        raise AttributeError(f"module 'spectral_rod' has no attribute {name!r}")
+    value = getattr(importlib.import_module(f"spectral_rod.{module}"), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_EXPORTS))

@@ -72,3 +72,11 @@ def check_tol(tol: object, name: str = "tol") -> float:
     if not (1.0e-14 <= tol <= 1.0e-2):
         raise ValueError(f"{name} must be in [1e-14, 1e-2], got {tol!r}")
     return tol
+
+
+def scalar_value(arr: NDArray[np.float64], name: str) -> float:
+    """The float in a 0-d array; TypeError naming the argument for an array of any other shape."""
+    if arr.ndim != 0:
+        raise TypeError(f"{name} must be a scalar (a real number), got an array of shape "
+                        f"{arr.shape}")
+    return float(arr)

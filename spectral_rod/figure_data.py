@@ -1,5 +1,9 @@
 """Figure 1 of the paper as data: parse the LaTeX `picture`, load and validate the CSV.
 
+The digitised points ship with the package (``spectral_rod/data/figure1_digitised.csv``, with
+its provenance ``figure1_digitised.md``); :func:`load_figure1` reads them through
+``importlib.resources``, so an installed package needs no source checkout and no paper.
+
 The figure is drawn with ``\\put(x, y){\\circle*{1.0}}`` in a 100 x 100 box: Omega(L) = x/10
 (0..10) and p* = 1 + y/400 (1.00..1.25). The three curves follow each other in the source;
 a new curve starts where x falls back to the left edge. Curves 1, 2, 3 are nu = 1.1, 1.3, 1.5.
@@ -8,12 +12,13 @@ a new curve starts where x falls back to the left edge. Curves 1, 2, 3 are nu = 
 from __future__ import annotations
 
 import re
+from importlib import resources
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
 
-CURVE_NU = (1.1, 1.3, 1.5)
+FIGURE1_NU = (1.1, 1.3, 1.5)
 COLUMNS = ("curve", "nu", "picture_x", "picture_y", "twist_angle", "p_star")
 _PUT = re.compile(r"\\put\(\s*([-+0-9.]+)\s*,\s*([-+0-9.]+)\s*\)\s*\{\\circle\*")
 
@@ -40,18 +45,29 @@ def parse_figure1(tex: str) -> pd.DataFrame:
             curve += 1
         last_x = x
         rows.append((curve, x, y))
-    if curve != len(CURVE_NU):
-        raise ValueError(f"expected {len(CURVE_NU)} curves in Figure 1, found {curve}")
+    if curve != len(FIGURE1_NU):
+        raise ValueError(f"expected {len(FIGURE1_NU)} curves in Figure 1, found {curve}")
     df = pd.DataFrame(rows, columns=["curve", "picture_x", "picture_y"])
-    df["nu"] = np.asarray(CURVE_NU)[df["curve"] - 1]
+    df["nu"] = np.asarray(FIGURE1_NU)[df["curve"] - 1]
     df["twist_angle"] = twist_from_picture(df["picture_x"])
     df["p_star"] = p_star_from_picture(df["picture_y"])
     return df[list(COLUMNS)]
 
 
-def load_figure1(path: str | Path) -> pd.DataFrame:
-    """Read ``figure1_digitised.csv`` and check it; errors name the file and the problem."""
-    path = Path(path)
+def figure1_path() -> Path:
+    """The packaged digitised Figure 1 (a file inside the installed package: read it only)."""
+    return Path(str(resources.files("spectral_rod") / "data" / "figure1_digitised.csv"))
+
+
+def load_figure1(path: str | Path | None = None) -> pd.DataFrame:
+    """The digitised Figure 1 (default: the packaged CSV), checked; errors name the file and
+    the problem.
+
+    >>> df = load_figure1()
+    >>> len(df), sorted(df["nu"].unique().tolist())
+    (1201, [1.1, 1.3, 1.5])
+    """
+    path = figure1_path() if path is None else Path(path)
     if not path.exists():
         raise FileNotFoundError(f"reference data file {path} is missing; regenerate it with "
                                 f"`python reference_data/extract_figure1.py`")
@@ -68,8 +84,8 @@ def load_figure1(path: str | Path) -> pd.DataFrame:
         raise ValueError(f"{path}: non-numeric or empty value in data row {bad + 1}")
     if not set(num["curve"].unique()) <= {1, 2, 3}:
         raise ValueError(f"{path}: column 'curve' must be 1, 2 or 3")
-    if not np.allclose(num["nu"], np.asarray(CURVE_NU)[num["curve"].astype(int) - 1]):
-        raise ValueError(f"{path}: column 'nu' does not match curves 1,2,3 = nu {CURVE_NU}")
+    if not np.allclose(num["nu"], np.asarray(FIGURE1_NU)[num["curve"].astype(int) - 1]):
+        raise ValueError(f"{path}: column 'nu' does not match curves 1,2,3 = nu {FIGURE1_NU}")
     if not (np.allclose(num["twist_angle"], twist_from_picture(num["picture_x"]))
             and np.allclose(num["p_star"], p_star_from_picture(num["picture_y"]))):
         raise ValueError(f"{path}: twist_angle/p_star do not follow from picture_x/picture_y "

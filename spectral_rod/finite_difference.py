@@ -48,7 +48,7 @@ def fd_operator(twist_angle: float, nu: float, intervals: int) -> sp.csc_matrix:
     d1 = sp.diags([-ones, ones], [-1, 1]) / (2.0 * h)
     eye = sp.identity(m)
     om, root_nu = float(twist_angle), math.sqrt(float(nu))
-    return sp.block_array([[-d2 + om**2 * eye, 2.0 * root_nu * om * d1],
+    return sp.bmat([[-d2 + om**2 * eye, 2.0 * root_nu * om * d1],
                            [-2.0 * root_nu * om * d1, nu * (-d2 + om**2 * eye)]],
                           format="csc")
 

@@ -68,7 +68,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.linalg import cho_factor, cho_solve
 
 from spectral_rod._validation import check_nu, check_twist
-from spectral_rod.large_twist import characteristic_double
+from spectral_rod.characteristic import characteristic_double
 
 __all__ = ["INCREMENT_MAX_TWIST", "critical_load_increment", "galerkin_increment",
            "galerkin_increment_family"]

@@ -68,9 +68,10 @@ import numpy as np
 import scipy.linalg
 from numpy.typing import NDArray
 
-from spectral_rod.ring import check_e_ratio, check_scalar_nu, check_twist_count
+from spectral_rod.errors import RingConvergenceError
+from spectral_rod.ring_formula import check_e_ratio, check_scalar_nu, check_twist_count
 
-LOADS = ("hydrostatic", "axis")
+RING_LOADS = ("hydrostatic", "axis")
 #: Largest twist accepted by the numerical solver (cost grows like N).
 MAX_SOLVER_TWIST = 60
 #: Fields of the unknown vector, in order.
@@ -85,16 +86,12 @@ KIND_TOL = 1.0e-8
 EIGH_DRIVER = "gv"
 
 
-class RingConvergenceError(RuntimeError):
-    """The critical load did not converge to the requested tolerance within the allowed modes."""
-
-
 def check_load(load: object, name: str = "load") -> str:
-    """One of :data:`LOADS`."""
+    """One of :data:`RING_LOADS`."""
     if not isinstance(load, str):
-        raise TypeError(f"{name} must be one of {LOADS}, got {type(load).__name__}")
-    if load not in LOADS:
-        raise ValueError(f"{name} must be one of {LOADS}, got {load!r}")
+        raise TypeError(f"{name} must be one of {RING_LOADS}, got {type(load).__name__}")
+    if load not in RING_LOADS:
+        raise ValueError(f"{name} must be one of {RING_LOADS}, got {load!r}")
     return load
 
 

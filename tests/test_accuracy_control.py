@@ -13,16 +13,17 @@ import warnings
 import numpy as np
 import pytest
 
-from spectral_rod.straight_rod import (
-    FAMILIES,
-    ConvergenceWarning,
-    _physical_eig,
-    collocation_critical_load,
-    error_estimate,
-    family_operator,
-    roundoff_floor,
-    solve_family,
-)
+from spectral_rod import ConvergenceWarning, critical_load
+from spectral_rod.families import FAMILIES
+from spectral_rod.straight_rod.discretisation import family_operator
+from spectral_rod.straight_rod.eigensolver import physical_eig, solve_family
+from spectral_rod.straight_rod.resolution import error_estimate, roundoff_floor
+
+
+def collocation_load(*args, **kwargs):
+    """The collocation method of the router (forced)."""
+    return critical_load(*args, method="collocation", **kwargs)
+
 
 TWISTS = (0.0, 0.7, 3.1, 9.5, 24.0, 55.0, 100.0)
 NUS = (1.0, 1.3, 4.0, 17.0, 100.0)
@@ -35,7 +36,7 @@ def _check_grid(reference, twists, nus, tols):
     for tol in tols:
         with warnings.catch_warnings():
             warnings.simplefilter("error", ConvergenceWarning)  # tol must be reachable here
-            res = collocation_critical_load(tw, nv, tol=tol, full_output=True)
+            res = collocation_load(tw, nv, tol=tol, full_output=True)
         err = np.abs(res.p_star / ref - 1)
         assert res.converged.all()
         bad = np.flatnonzero(err > tol)
@@ -55,10 +56,10 @@ def test_tol_met_on_dense_grid(reference):
 
 
 def test_resolution_grows_with_twist_and_tolerance():
-    res = collocation_critical_load(np.array([0.0, 10.0, 100.0]), 1.5, tol=1e-12,
+    res = collocation_load(np.array([0.0, 10.0, 100.0]), 1.5, tol=1e-12,
                                     full_output=True)
     assert res.n[0] < res.n[1] < res.n[2]
-    coarse = collocation_critical_load(100.0, 1.5, tol=1e-4, full_output=True)
+    coarse = collocation_load(100.0, 1.5, tol=1e-4, full_output=True)
     assert int(coarse.n) < int(res.n[2])
 
 
@@ -66,13 +67,13 @@ def test_round_off_floor_warns_instead_of_returning_silently():
     # at Omega = 300 the round-off floor eps (32 + 0.3 Omega^2) ~ 6e-12 exceeds tol = 1e-12
     assert roundoff_floor(300.0) > 1e-12
     with pytest.warns(ConvergenceWarning, match="not met"):
-        res = collocation_critical_load(300.0, 1.5, tol=1e-12, full_output=True)
+        res = collocation_load(300.0, 1.5, tol=1e-12, full_output=True)
     assert not bool(res.converged)
     assert float(res.error_estimate) > 1e-12
     # and a tolerance above the floor is met there without a warning
     with warnings.catch_warnings():
         warnings.simplefilter("error", ConvergenceWarning)
-        assert bool(collocation_critical_load(300.0, 1.5, tol=1e-9, full_output=True).converged)
+        assert bool(collocation_load(300.0, 1.5, tol=1e-9, full_output=True).converged)
 
 
 def test_error_estimate_model():
@@ -88,7 +89,7 @@ def test_error_estimate_bounds_the_error_at_fixed_degree(reference):
     for twist, nu in [(1.3, 1.2), (6.5, 2.5), (17.0, 1.05), (42.0, 7.0), (80.0, 30.0)]:
         ref = reference(twist, nu)
         for n in range(8, int(twist / 2) + 60, 2):
-            res = collocation_critical_load(twist, nu, n=n, full_output=True)
+            res = collocation_load(twist, nu, n=n, full_output=True)
             err = abs(float(res.p_star) / ref - 1)
             if float(res.error_estimate) < 1e-2:
                 worst = max(worst, err / float(res.error_estimate))
@@ -103,7 +104,7 @@ def test_fast_path_picks_the_rule_eigenvalue(n):
         nv = np.full(twist.size, nu)
         lam, _, _ = solve_family(n, family, twist, nv)
         a, b = family_operator(n, family).pencil(twist, nv)
-        theta, _ = _physical_eig(np.linalg.solve(a, b))
+        theta, _ = physical_eig(np.linalg.solve(a, b))
         rule = 1.0 / theta
         # both are computed in double precision; the full eig loses ~eps Omega^2 at large twist
         assert np.all(np.abs(lam / rule - 1) <= 1e-13 + 1e-15 * twist**2), (nu, family)

@@ -21,11 +21,8 @@ from spectral_rod.asymptotics import (
     large_twist_limit,
     large_twist_wavenumbers,
 )
-from spectral_rod.characteristic import (
-    characteristic_critical_load,
-    family_critical_load,
-    family_crossing,
-)
+from spectral_rod.characteristic import characteristic_critical_load, family_critical_load
+from spectral_rod.crossings import family_crossing
 
 
 @pytest.mark.parametrize("nu", [1.0, 1.1, 1.5, 3.0, 10.0, 1e3])

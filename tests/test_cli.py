@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 import reproduce.__main__ as cli
-from spectral_rod.io import write_text, write_with
+from reproduce.io import write_text, write_with
 
 ROOT = Path(__file__).resolve().parent.parent
 

@@ -8,11 +8,9 @@ import warnings
 import numpy as np
 import pytest
 
+from spectral_rod import TWIST_ROUTE, ConvergenceWarning, critical_load
 from spectral_rod.asymptotics import large_twist_expansion, large_twist_limit
-from spectral_rod.characteristic import characteristic_critical_load
-from spectral_rod.critical import TWIST_ROUTE, critical_load
-from spectral_rod.large_twist import characteristic_double
-from spectral_rod.straight_rod import ConvergenceWarning, collocation_critical_load
+from spectral_rod.characteristic import characteristic_critical_load, characteristic_double
 
 
 def ref(twist: float, nu: float, dps: int = 40):
@@ -37,7 +35,7 @@ def test_large_twist(twist):
     nus = (1 + 1e-9, 1.5, 10.0, 1e4)
     tol = 1e-12 if twist <= 1000 else 1e-10
     res = critical_load(np.full(4, twist), np.asarray(nus), tol=tol, full_output=True)
-    assert np.all(res.n == 0) and np.all(res.converged)  # routed to the characteristic equation
+    assert np.all(res.method == "characteristic") and np.all(res.converged)
     for p, nu in zip(res.p_star, nus, strict=True):
         r = float(ref(twist, nu, dps=30).p_star)
         assert abs(p / r - 1) <= (1e-12 if twist <= 1000 else 1e-10), (twist, nu)
@@ -47,7 +45,7 @@ def test_routes_agree_where_both_work():
     # two independent methods (collocation, double-precision characteristic equation)
     for om in (30.0, 50.0, 100.0):
         for nu in (1.2, 50.0):
-            a = float(collocation_critical_load(om, nu))
+            a = float(critical_load(om, nu, method="collocation"))
             b = characteristic_double(om, nu)[0]
             assert abs(a / b - 1) <= 2e-12
     assert TWIST_ROUTE == 50.0
@@ -95,7 +93,7 @@ def test_negative_twist_is_even():
 
 
 def test_unreachable_tolerance_at_large_twist_warns():
-    with pytest.warns(ConvergenceWarning, match="large-twist"):
+    with pytest.warns(ConvergenceWarning, match="method characteristic"):
         res = critical_load(1e4, 1.5, tol=1e-14, full_output=True)
     assert not bool(res.converged)
 
@@ -122,6 +120,6 @@ def test_near_degenerate_route_reports_the_right_family():
     twists = np.array([0.5, 2.0, 5.0, 8.0, 12.0, 20.0])
     for e in (1e-3, 1e-6):
         res = critical_load(twists, np.full(twists.size, 1 + e), full_output=True)
-        assert np.all(res.n == 0) and np.all(res.converged)
+        assert np.all(res.method == "increment") and np.all(res.converged)
         for om, fam in zip(twists, res.family, strict=True):
             assert fam == ref(float(om), 1 + e).family, (om, e)

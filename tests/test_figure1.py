@@ -12,10 +12,10 @@ import pytest
 
 from reproduce import figure1
 from reproduce.__main__ import main
-from spectral_rod.figure_data import load_figure1, parse_figure1
+from spectral_rod.figure_data import figure1_path, load_figure1, parse_figure1
 
 ROOT = Path(__file__).resolve().parent.parent
-CSV = ROOT / "reference_data" / "figure1_digitised.csv"
+CSV = figure1_path()
 TEX = ROOT.parent / "shared" / "paper" / "drozdov-rabin-buckling.tex"
 
 

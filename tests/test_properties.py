@@ -22,7 +22,8 @@ import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from spectral_rod.critical import characteristic_error_estimate, critical_load
+from spectral_rod import critical_load
+from spectral_rod.characteristic import double_error_estimate
 from spectral_rod.increment import critical_load_increment
 
 SETTINGS = settings(max_examples=25, deadline=None)
@@ -47,14 +48,14 @@ def test_even_in_twist(om, nu):
 @given(twists)
 def test_isotropic_section_is_euler(om):
     # accuracy target 1e-12 (issue 6); eps (8 + Omega/2) on the characteristic route
-    tol = max(1e-12, characteristic_error_estimate(np.array(om)))
+    tol = max(1e-12, double_error_estimate(np.array(om)))
     assert abs(_quiet(critical_load, om, 1.0) - 1.0) <= tol
 
 
 @SETTINGS
 @given(twists, st.floats(min_value=1.0, max_value=1e4))
 def test_at_least_euler(om, nu):
-    tol = max(1e-12, characteristic_error_estimate(np.array(om)))  # accuracy of the route
+    tol = max(1e-12, double_error_estimate(np.array(om)))  # accuracy of the route
     assert _quiet(critical_load, om, nu) >= 1.0 - tol
 
 
@@ -84,7 +85,7 @@ def test_below_large_twist_limit_at_large_twist(om, nu):
     # the true margin is ~ p_inf pi^2 ((nu-1)/(nu+1))^2 / (4 Omega^2); assert the strict
     # inequality where it exceeds the route's accuracy, and never more than that above p_inf
     p_inf = 2 * nu / (1 + nu)
-    est = float(characteristic_error_estimate(np.array(om)))
+    est = float(double_error_estimate(np.array(om)))
     p = _quiet(critical_load, om, nu)
     assert p <= p_inf * (1 + est)
     margin = np.pi**2 * ((nu - 1) / (nu + 1)) ** 2 / (4 * om**2)

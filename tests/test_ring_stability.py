@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from spectral_rod.ring import ring_formula_load
+from spectral_rod.ring_formula import ring_formula_load
 from spectral_rod.ring_stability import (
     RingConvergenceError,
     assemble,

@@ -15,7 +15,6 @@ from spectral_rod import (
     critical_load,
     critical_wavenumbers,
 )
-from spectral_rod.straight_rod import collocation_critical_load
 
 TWISTS = [0.0, 0.3, 1.0, 2.0, 2.8, np.pi, 4.0, 5.5, 2 * np.pi, 7.0, 8.5, 3 * np.pi, 10.0]
 NUS = [1.0, 1.05, 1.1, 1.3, 1.5, 1.8, 2.0]
@@ -93,7 +92,7 @@ def test_unreachable_tolerance_warns():
     # collocation alone (the public critical_load routes this twist to the characteristic
     # equation): n would have to exceed the cap of 512
     with pytest.warns(ConvergenceWarning):
-        res = collocation_critical_load(2000.0, 1.5, tol=1e-12, full_output=True)
+        res = critical_load(2000.0, 1.5, method="collocation", tol=1e-12, full_output=True)
     assert not bool(res.converged)
 
 

@@ -11,17 +11,16 @@ import mpmath as mp
 import numpy as np
 import pytest
 
+from spectral_rod import buckling_mode
 from spectral_rod.characteristic import (
-    boundary_determinant_4x4,
     characteristic_critical_load,
-    characteristic_mode,
     determinant,
     family_critical_load,
-    family_crossing,
-    family_slope,
 )
+from spectral_rod.closed_form import boundary_determinant_4x4, characteristic_mode
 from spectral_rod.critical import critical_load
-from spectral_rod.straight_rod import buckling_mode, solve_family
+from spectral_rod.crossings import family_crossing, family_slope
+from spectral_rod.straight_rod.eigensolver import solve_family
 
 #: Omega(L) in [0, 40] (with the special twists pi, 2 pi, 3 pi and the window around pi) and
 #: nu in [1, 10]

@@ -3,7 +3,7 @@
     python -m pytest -m bench
 
 Groups: single point, Figure 1 sweep, large twist, baseline (the obvious implementation of
-``tests/baseline_solver.py``). Each records the resolution and the achieved accuracy (against
+``spectral_rod.baseline``). Each records the resolution and the achieved accuracy (against
 the mpmath characteristic equation) in ``extra_info``; the terminal summary prints the
 baseline/new ratio of the Figure 1 sweep (same run, same points), from the minimum over rounds
 of the wall-clock time (on a shared machine the minimum is the round least disturbed by other
@@ -14,21 +14,11 @@ are there so that a fast wrong answer cannot pass.
 
 from __future__ import annotations
 
-import sys
-from pathlib import Path
-
 import numpy as np
 import pytest
 
-from spectral_rod import critical_load
-from spectral_rod.figure_data import load_figure1
-from spectral_rod.straight_rod import collocation_critical_load
+from spectral_rod import baseline_sweep, critical_load, load_figure1
 
-TESTS = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(TESTS))
-from baseline_solver import baseline_sweep  # noqa: E402
-
-CSV = TESTS.parent / "reference_data" / "figure1_digitised.csv"
 SAMPLE = 61  # every 61st point of the sweep is checked against the mpmath reference
 
 pytestmark = pytest.mark.bench
@@ -36,7 +26,7 @@ pytestmark = pytest.mark.bench
 
 @pytest.fixture(scope="module")
 def sweep_points():
-    d = load_figure1(CSV)
+    d = load_figure1()
     return d["twist_angle"].to_numpy(), d["nu"].to_numpy()
 
 
@@ -93,7 +83,8 @@ def test_single_point(benchmark, reference):
 def test_large_twist_collocation(benchmark, reference):
     twist = np.array([50.0, 100.0, 100.0, 100.0])
     nu = np.array([1.5, 1.5, 10.0, 100.0])
-    res = benchmark(collocation_critical_load, twist, nu, tol=1e-12, full_output=True)
+    res = benchmark(critical_load, twist, nu, tol=1e-12, method="collocation",
+                    full_output=True)
     ref = np.array([reference(float(a), float(b)) for a, b in zip(twist, nu, strict=True)])
     err = float(np.max(np.abs(res.p_star / ref - 1)))
     benchmark.extra_info.update(n=[int(v) for v in res.n], max_rel_error=err,

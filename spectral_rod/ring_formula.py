@@ -24,6 +24,9 @@ import math
 import numbers
 from typing import NamedTuple
 
+import numpy as np
+from numpy.typing import ArrayLike
+
 from spectral_rod._validation import check_nu, real_array
 
 #: Largest twist (number of turns N) accepted by the ring functions.
@@ -71,9 +74,22 @@ def check_e_ratio(e_ratio: object, name: str = "e_ratio") -> float:
     return value
 
 
-def crit2(N: float, nu: float, e_ratio: float = 1.0) -> float:
-    """Eq. ``crit2`` for real (unchecked) arguments, q_cr R^3/(E1 I1); used for smooth curves."""
+def _crit2(N, nu: float, e_ratio: float):
     return 0.5 * e_ratio * (3.0 * (1.0 + nu) - (nu - 1.0) * (N * N + 1.0))
+
+
+def crit2(N: ArrayLike, nu: object, e_ratio: object = 1.0):
+    """Eq. ``crit2``, q_cr R^3/(E1 I1), as a function of a *real* N >= 0 (an array for smooth
+    curves; the ring closes only for integer N, see :func:`ring_formula_load`).
+
+    >>> crit2([0.0, 1.5], 1.5).tolist()
+    [3.5, 2.96875]
+    """
+    n = real_array(N, "N")
+    if np.any(n < 0):
+        raise ValueError(f"N must be >= 0, got min N = {np.min(n):g}")
+    out = _crit2(n, check_scalar_nu(nu), check_e_ratio(e_ratio))
+    return float(out) if out.ndim == 0 else out
 
 
 def ring_formula_load(N: object, nu: object, *, e_ratio: object = 1.0) -> float:
@@ -95,7 +111,7 @@ def ring_formula_load(N: object, nu: object, *, e_ratio: object = 1.0) -> float:
         threshold twist (:func:`threshold_twist`); the value is returned as the formula gives it.
     """
     n = check_twist_count(N)
-    return crit2(float(n), check_scalar_nu(nu), check_e_ratio(e_ratio))
+    return float(_crit2(float(n), check_scalar_nu(nu), check_e_ratio(e_ratio)))
 
 
 class ThresholdTwist(NamedTuple):

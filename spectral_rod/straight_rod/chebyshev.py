@@ -1,4 +1,5 @@
-"""Chebyshev collocation pieces on x in [-1, 1], split by parity, in an integration basis.
+"""The Chebyshev kernel of the collocation solver (Eq. ``inst1``): points and parity bases on
+x in [-1, 1], in an integration basis.
 
 The hinged rod is symmetric under s -> 1 - s, so every mode has a definite parity about the
 mid-point and each field is an even or an odd polynomial. Following Greengard's spectral
@@ -70,16 +71,3 @@ def parity_basis(n: int, parity: int, points: str) -> ParityBasis:
     d1 = C.chebval(x, C.chebder(coef, 1, axis=0)).T
     d2 = C.chebval(x, C.chebder(coef, 2, axis=0)).T
     return ParityBasis(parity, coef, value, d1, d2)
-
-
-def tail(coefficients: NDArray[np.generic], parity: int, count: int = 2) -> float:
-    """Largest |a_j| among the last `count` coefficients of the given parity, relative to max|a|.
-
-    This is how resolution is judged (Chebfun's rule, simplified): a resolved function has
-    coefficients that have decayed to the tolerance by the end of the expansion.
-    """
-    a = np.abs(np.asarray(coefficients))[parity::2]
-    scale = a.max()
-    if scale == 0.0:
-        return 0.0
-    return float(a[-count:].max() / scale)

@@ -1,4 +1,4 @@
-"""The obvious implementation of p*(Omega, nu) -- the speed baseline of the benchmarks (issue 5).
+"""The obvious implementation of p*(Omega, nu) for Eq. ``inst1`` -- the speed baseline.
 
 What an engineer writes first from Trefethen's *Spectral Methods in MATLAB*: the differentiation
 matrix of ``cheb.m`` at degree n = 24, the dense 2-field operator of Eq. ``inst1`` in
@@ -6,7 +6,9 @@ matrix of ``cheb.m`` at degree n = 24, the dense 2-field operator of Eq. ``inst1
 columns), ``numpy.linalg.eigvals`` on it, and the lowest positive real eigenvalue
 lambda = pi^2 p* taken. No parity split, no reuse between points, no resolution control.
 
-Kept out of the package on purpose: it is the yardstick, not a method we offer.
+It is the yardstick of the benchmarks and of the ``convergence`` scene, not a method we
+recommend; it lives in the library so that both (and users) can run it from an installed
+package.
 """
 
 from __future__ import annotations

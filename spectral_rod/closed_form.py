@@ -1,0 +1,121 @@
+r"""The closed-form solution of Eq. ``inst1``: the paper's 4x4 boundary determinant and the
+buckling mode as sums of cos/sin(beta_k s) (section "Stability of a rectilinear rod").
+
+Notation and derivation: :mod:`spectral_rod.characteristic` (body-frame displacements xi, eta;
+omega1 = -lambda xi, omega2 = -mu eta) and :mod:`spectral_rod.wavenumbers` (X_k = beta_k^2 L^2).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import mpmath as mp
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from spectral_rod.characteristic import CharacteristicRoot, entire_cs, entire_cs_double
+from spectral_rod.wavenumbers import characteristic_roots
+
+__all__ = ["CharacteristicMode", "boundary_determinant_4x4", "characteristic_mode",
+           "mode_fields"]
+
+
+def boundary_determinant_4x4(lam: mp.mpf, om: mp.mpf, nu: mp.mpf) -> mp.mpf:
+    """The paper's 4x4 boundary determinant, literally: s in [0, 1], four fundamental solutions.
+
+    Solutions of Eq. ``inst1`` (body-frame displacements) for each root X_k = beta_k^2 of the
+    characteristic equation, written with entire functions of X_k:
+
+        u_k: xi = 2 Omega cos(beta_k s),  eta = (lambda - Omega^2 - X_k) sin(beta_k s)/beta_k,
+        v_k: eta = 2 Omega cos(beta_k s),  xi = -(mu - Omega^2 - X_k) sin(beta_k s)/beta_k.
+
+    Rows: xi(0), eta(0), xi(1), eta(1) (hinged ends). Its zeros are the loads of both families;
+    exactly, det = 16 Omega^2 D_sym D_anti (tested), so it vanishes identically at Omega = 0
+    (the removable singularity the 2x2 reduction divides out).
+    """
+    mu = lam / nu
+    xm, xp = characteristic_roots(lam, mu, om, sqrt=mp.sqrt)
+    one = mp.mpf(1)
+    cols = []
+    for x in (xp, xm):
+        c1, s1 = entire_cs(x, one)
+        cols.append([2 * om, mp.mpf(0), 2 * om * c1, (lam - om**2 - x) * s1])
+    for x in (xp, xm):
+        c1, s1 = entire_cs(x, one)
+        cols.append([mp.mpf(0), 2 * om, -(mu - om**2 - x) * s1, 2 * om * c1])
+    return mp.det(mp.matrix([[col[i] for col in cols] for i in range(4)]))
+
+
+@dataclass(frozen=True)
+class CharacteristicMode:
+    """The buckling mode in closed form (sums of cos/sin(beta_k t)) at a characteristic root.
+
+    s: grid on [0, 1]; xi, eta: body-frame displacements along (u0, v0); x1, x2: the centreline
+    displacement in the fixed frame, x = R(Omega s) (xi, eta); all scaled to max |x| = 1.
+    """
+
+    s: NDArray[np.float64]
+    xi: NDArray[np.float64]
+    eta: NDArray[np.float64]
+    x1: NDArray[np.float64]
+    x2: NDArray[np.float64]
+
+
+def _amplitudes(family: str, lam: mp.mpf, mu: mp.mpf, om: mp.mpf, xs: tuple[mp.mpf, mp.mpf]
+                ) -> list[tuple[mp.mpf, mp.mpf]]:
+    """(xi, eta) amplitude vectors of each root's solution in the family
+    (:mod:`spectral_rod.characteristic`): xi ~ cos, eta ~ sin/beta (symmetric) or the reverse."""
+    if family == "symmetric":
+        return [(2 * om, lam - om**2 - x) for x in xs]
+    return [(mu - om**2 - x, -2 * om) for x in xs]
+
+
+def _null_coefficients(family: str, amp: list[tuple[mp.mpf, mp.mpf]],
+                       half: list[tuple[mp.mpf, mp.mpf]]) -> tuple[mp.mpf, mp.mpf]:
+    """Null vector of the family's 2x2 boundary system at t = 1/2, from its larger row."""
+    cos_first = family == "symmetric"
+    rows = [[a[0] * (h[0] if cos_first else h[1]) for a, h in zip(amp, half, strict=True)],
+            [a[1] * (h[1] if cos_first else h[0]) for a, h in zip(amp, half, strict=True)]]
+    r = max(rows, key=lambda row: abs(row[0]) + abs(row[1]))
+    return r[1], -r[0]
+
+
+def mode_fields(root: CharacteristicRoot, twist_angle: float, nu: float, s: ArrayLike,
+                dps: int = 30) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Body-frame displacements (xi, eta) of the mode of ``root`` at the points s (unscaled).
+
+    The amplitudes and the null vector of the family's 2x2 boundary system are computed in
+    mpmath (they involve differences such as lambda - Omega^2 - X_k), the sums of cos/sin(beta_k
+    t) (t = s - 1/2) in double precision. Symmetric family: xi = sum_k c_k 2 Omega cos(beta_k t),
+    eta = sum_k c_k (lambda - Omega^2 - X_k) sin(beta_k t)/beta_k; antisymmetric: xi = sum_k c_k
+    (mu - Omega^2 - X_k) sin(beta_k t)/beta_k, eta = -sum_k c_k 2 Omega cos(beta_k t). Needs
+    Omega != 0 (at zero twist the mode is Euler's planar sin(pi s)).
+    """
+    if float(twist_angle) == 0.0:
+        raise ValueError("the closed-form mode needs a non-zero twist (Euler's mode otherwise)")
+    with mp.workdps(dps):
+        om, nuv = mp.mpf(abs(float(twist_angle))), mp.mpf(nu)
+        lam = mp.pi**2 * root.p_star
+        xs = (root.x_plus, root.x_minus)
+        amp = _amplitudes(root.family, lam, lam / nuv, om, xs)
+        c = _null_coefficients(root.family, amp, [entire_cs(x) for x in xs])
+        weights = [[float(ck * ak[j]) for ck, ak in zip(c, amp, strict=True)] for j in (0, 1)]
+    t = np.asarray(s, dtype=float) - 0.5
+    cs = [entire_cs_double(float(x), t) for x in xs]
+    first, second = (0, 1) if root.family == "symmetric" else (1, 0)
+    xi = sum(w * f[first] for w, f in zip(weights[0], cs, strict=True))
+    eta = sum(w * f[second] for w, f in zip(weights[1], cs, strict=True))
+    return np.asarray(xi), np.asarray(eta)
+
+
+def characteristic_mode(root: CharacteristicRoot, twist_angle: float, nu: float,
+                        points: int = 201, dps: int = 30) -> CharacteristicMode:
+    """The mode of ``root`` on a uniform grid of `points` in [0, 1] (:func:`mode_fields`), with
+    the fixed-frame centreline x = R(Omega s)(xi, eta), scaled to max |x| = 1."""
+    s = np.linspace(0.0, 1.0, points)
+    xi, eta = mode_fields(root, twist_angle, nu, s, dps)
+    om = abs(float(twist_angle))
+    x1 = xi * np.cos(om * s) - eta * np.sin(om * s)
+    x2 = xi * np.sin(om * s) + eta * np.cos(om * s)
+    scale = float(np.max(np.hypot(x1, x2)))
+    return CharacteristicMode(s, xi / scale, eta / scale, x1 / scale, x2 / scale)

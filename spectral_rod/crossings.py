@@ -1,0 +1,180 @@
+r"""Where the two mode families cross: the maxima of p*(Omega(L)) (paper, section "Stability of a
+rectilinear rod", Eq. ``inst1``; "additional maxima at integer multiples of pi").
+
+p* is the smaller of the two families' lowest loads, so where they cross p* has a corner. Two
+independent finders:
+
+* :func:`family_crossing` -- D_sym(pi^2 p, Omega) = D_anti(pi^2 p, Omega) = 0 by 2-D Newton in
+  mpmath (the characteristic equation, :mod:`spectral_rod.characteristic`), verified lowest in
+  each family by the sign scans; with :func:`family_slope`, dp/dOmega along each family;
+* :func:`collocation_crossing` -- Brent's method on the difference of the two families' lowest
+  collocation eigenvalues (:mod:`spectral_rod.straight_rod`), slopes by central differences.
+
+The closed form of the crossings (beta_1 L = (n - 1) pi, beta_2 L = (n + 1) pi exactly) is
+:func:`spectral_rod.asymptotics.crossing_closed_form`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import mpmath as mp
+
+from spectral_rod.characteristic import (
+    characteristic_critical_load,
+    determinant,
+    family_critical_load,
+)
+from spectral_rod.families import FAMILIES
+from spectral_rod.wavenumbers import characteristic_roots
+
+__all__ = ["CollocationCrossing", "CrossingWavenumbers", "FamilyCrossing", "collocation_crossing",
+           "crossing_wavenumbers", "family_crossing", "family_slope"]
+
+
+def family_slope(family: str, p: mp.mpf, twist_angle: mp.mpf, nu: mp.mpf) -> mp.mpf:
+    """dp/dOmega(L) along the family's root curve D(pi^2 p, Omega) = 0 (implicit function rule)."""
+    d_om = mp.diff(lambda w: determinant(family, mp.pi**2 * p, w, nu), twist_angle)
+    d_p = mp.diff(lambda q: determinant(family, mp.pi**2 * q, twist_angle, nu), p)
+    return -d_om / d_p
+
+
+@dataclass(frozen=True)
+class FamilyCrossing:
+    """A twist at which the lowest symmetric and antisymmetric roots coincide.
+
+    twist: Omega(L) at the crossing; p_star: the common (and lowest) root there; slopes:
+    dp/dOmega of each family's root curve; left/right: the family that is critical just below /
+    above the crossing; kind: 'corner maximum' when p* rises into the crossing and falls out of it
+    (p* = min of two smooth branches has a concave corner there, not a smooth maximum), else
+    'corner' (a kink on a monotone stretch).
+    """
+
+    twist: mp.mpf
+    p_star: mp.mpf
+    slopes: dict[str, mp.mpf]
+    left: str
+    right: str
+    kind: str
+
+
+def _check_on_lowest_branches(p_c: mp.mpf, om_c: mp.mpf, nu: float, dps: int,
+                              twist_guess: float) -> None:
+    """Both families' sign scans must return p_c as their *lowest* root (else RuntimeError)."""
+    tol = mp.mpf(10) ** (-(dps - 8))
+    for fam in FAMILIES:
+        low = family_critical_load(fam, float(om_c), nu, dps=dps).p_star
+        # the scan works at the float-rounded twist: allow for that rounding
+        slope_scale = 1 + abs(family_slope(fam, p_c, om_c, mp.mpf(nu)))
+        if abs(low - p_c) > tol + slope_scale * abs(om_c) * mp.mpf(2) ** -52:
+            raise RuntimeError(f"crossing near Omega={twist_guess} (nu={nu}) is not on the "
+                               f"lowest {fam} branch: {low} vs {p_c}")
+
+
+def family_crossing(twist_guess: float, nu: float, *, p_guess: float | None = None,
+                    dps: int = 30) -> FamilyCrossing:
+    """Solve D_sym(pi^2 p, Omega) = D_anti(pi^2 p, Omega) = 0 for (Omega, p) by 2-D Newton.
+
+    The start is (twist_guess, p*(twist_guess)) from :func:`characteristic_critical_load` unless
+    ``p_guess`` is given. The result is verified independently: the sign scan of each family
+    must return the crossing load as that family's *lowest* root, so the crossing lies on the
+    critical curve p*(Omega). Raises RuntimeError otherwise.
+    """
+    with mp.workdps(dps):
+        nuv = mp.mpf(nu)
+        if p_guess is None:
+            p_guess = characteristic_critical_load(twist_guess, nu, dps=dps).p_star
+
+        def system(p: mp.mpf, om: mp.mpf) -> list[mp.mpf]:
+            return [determinant(f, mp.pi**2 * p, om, nuv) for f in FAMILIES]
+
+        p_c, om_c = mp.findroot(system, (mp.mpf(p_guess), mp.mpf(twist_guess)))
+        _check_on_lowest_branches(p_c, om_c, nu, dps, twist_guess)
+        slopes = {f: family_slope(f, p_c, om_c, nuv) for f in FAMILIES}
+        left = max(slopes, key=lambda f: slopes[f])   # steeper rise => lower just to the left
+        right = min(slopes, key=lambda f: slopes[f])
+        kind = "corner maximum" if slopes[left] > 0 > slopes[right] else "corner"
+        return FamilyCrossing(om_c, p_c, slopes, left, right, kind)
+
+
+@dataclass(frozen=True)
+class CollocationCrossing:
+    """A family crossing located by collocation: twist, p* there, slopes per family, degree."""
+
+    twist: float
+    p_star: float
+    slopes: dict[str, float]
+    n: int
+
+
+def _resolving_degree(twist_angle: float) -> int:
+    """Even degree resolving the critical mode to round-off at this twist: the mode's largest
+    wavenumber is beta_2 L ~ Omega + pi, and Chebyshev coefficients of cos(k x) are negligible
+    beyond ~1.5 k + 24 terms in double precision (empirical)."""
+    return 2 * math.ceil(0.5 * (0.75 * (abs(twist_angle) + math.pi) + 24))
+
+
+def collocation_crossing(twist_guess: float, nu: float, half_width: float = 0.15
+                         ) -> CollocationCrossing:
+    """Twist where the two families' lowest collocation eigenvalues meet (Brent's method) in
+    [twist_guess - half_width, twist_guess + half_width]; slopes dp/dOmega by central
+    differences (h = 1e-5)."""
+    from scipy.optimize import brentq
+
+    from spectral_rod.straight_rod import collocation_family_load
+
+    n = _resolving_degree(twist_guess + half_width)
+
+    def diff(om: float) -> float:
+        return (collocation_family_load(om, nu, FAMILIES[0], n)
+                - collocation_family_load(om, nu, FAMILIES[1], n))
+
+    om_c = brentq(diff, twist_guess - half_width, twist_guess + half_width, xtol=1e-14,
+                  rtol=1e-15)
+    h = 1e-5
+    slopes = {f: (collocation_family_load(om_c + h, nu, f, n)
+                  - collocation_family_load(om_c - h, nu, f, n)) / (2 * h) for f in FAMILIES}
+    return CollocationCrossing(float(om_c), collocation_family_load(om_c, nu, FAMILIES[0], n),
+                               {k: float(v) for k, v in slopes.items()}, n)
+
+
+@dataclass(frozen=True)
+class CrossingWavenumbers:
+    """The wavenumbers at a family crossing (computed at the crossing's working precision).
+
+    beta1, beta2: beta_k L; difference: Re(beta2 - beta1) L; resonance_gap: max_k |beta_k L -
+    (n -+ 1) pi| with n the nearest integer to (beta1 + beta2)/(2 pi) (0 up to the precision
+    when the crossing theorem of :mod:`spectral_rod.asymptotics` holds); slopes: d(beta2 -
+    beta1)/dOmega along each family's root curve.
+    """
+
+    beta1: float
+    beta2: float
+    difference: float
+    resonance_gap: float
+    slopes: dict[str, float]
+
+
+def _mp_difference(p: mp.mpf, om: mp.mpf, nu: mp.mpf) -> mp.mpf:
+    lam = mp.pi**2 * p
+    xm, xp = characteristic_roots(lam, lam / nu, om, sqrt=mp.sqrt)
+    return mp.sqrt(xp) - (mp.sqrt(xm) if xm > 0 else 0)
+
+
+def crossing_wavenumbers(crossing: FamilyCrossing, nu: float, dps: int = 30
+                         ) -> CrossingWavenumbers:
+    """beta_1 L, beta_2 L and beta_2 - beta_1 at a crossing, with the slopes of beta_2 - beta_1
+    along both branches (chain rule with :attr:`FamilyCrossing.slopes`)."""
+    with mp.workdps(dps):
+        nuv, p, om = mp.mpf(nu), crossing.p_star, crossing.twist
+        lam = mp.pi**2 * p
+        xm, xp = characteristic_roots(lam, lam / nuv, om, sqrt=mp.sqrt)
+        b1, b2 = mp.sqrt(xm), mp.sqrt(xp)
+        n = int(mp.nint((b1 + b2) / (2 * mp.pi)))
+        gap = max(abs(b1 - (n - 1) * mp.pi), abs(b2 - (n + 1) * mp.pi))
+        d_om = mp.diff(lambda w: _mp_difference(p, w, nuv), om)
+        d_p = mp.diff(lambda q: _mp_difference(q, om, nuv), p)
+        slopes = {f: float(d_om + d_p * s) for f, s in crossing.slopes.items()}
+        return CrossingWavenumbers(float(b1), float(b2), float(_mp_difference(p, om, nuv)),
+                                   float(gap), slopes)

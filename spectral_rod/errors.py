@@ -1,0 +1,48 @@
+"""The package's exceptions and warnings, in one hierarchy.
+
+Every error the package raises on purpose is a :class:`SpectralRodError`; bad input raises the
+built-in ``ValueError``/``TypeError`` (with the argument's name and allowed range), as Python
+users expect. A result that misses its tolerance is either flagged and warned about
+(:class:`ConvergenceWarning`) or, where no usable value exists, raised
+(:class:`ConvergenceError` and its subclasses).
+
+Example
+-------
+>>> import warnings, spectral_rod
+>>> with warnings.catch_warnings():
+...     warnings.simplefilter("error", spectral_rod.ConvergenceWarning)
+...     spectral_rod.critical_load(5.0, 1.5)   # converges: no warning
+... # doctest: +ELLIPSIS
+1.1...
+"""
+
+from __future__ import annotations
+
+__all__ = [
+    "ConvergenceError",
+    "ConvergenceWarning",
+    "RingConvergenceError",
+    "RootNotFoundError",
+    "SpectralRodError",
+]
+
+
+class SpectralRodError(Exception):
+    """Base class of the errors raised by spectral_rod (other than bad input)."""
+
+
+class ConvergenceError(SpectralRodError, RuntimeError):
+    """A computation did not reach its tolerance and has no usable result."""
+
+
+class RingConvergenceError(ConvergenceError):
+    """The ring's critical load did not converge to the requested tolerance."""
+
+
+class RootNotFoundError(SpectralRodError, RuntimeError):
+    """No sign change of a characteristic determinant in the scanned load range."""
+
+
+class ConvergenceWarning(RuntimeWarning):
+    """The requested tolerance was not met (resolution cap or round-off); the result is flagged
+    ``converged=False`` in the full output."""

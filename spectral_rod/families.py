@@ -1,0 +1,41 @@
+"""The two mode families of the hinged straight rod (Eq. ``inst1``), and the rigorous bounds.
+
+Reflection about mid-span, s -> 1 - s, maps solutions of Eq. ``inst1`` to solutions with
+(omega1, omega2)(s) -> (omega1, -omega2)(1 - s). Every mode therefore has a definite parity:
+
+* ``"symmetric"``: omega1 even, omega2 odd about s = 1/2 (the family of Euler's mode);
+* ``"antisymmetric"``: omega1 odd, omega2 even.
+
+Bounds (Rayleigh quotient of the energy, A1 <= A2): 1 <= p* <= (1 + nu)/2 (Wirtinger below,
+planar trial modes above), and each family's lowest load lies in [1, nu]. Every physical
+eigenvalue lambda = pi^2 p is therefore >= pi^2, and :data:`SHIFT` = 0.95 pi^2 lies below all of
+them: the shift of every shift-and-invert iteration in the package.
+"""
+
+from __future__ import annotations
+
+import math
+
+__all__ = ["FAMILIES", "SHIFT", "check_family", "p_star_bounds"]
+
+FAMILIES = ("symmetric", "antisymmetric")
+#: Shift below every physical eigenvalue lambda = pi^2 p >= pi^2 (shift-and-invert iterations).
+SHIFT = 0.95 * math.pi**2
+
+
+def check_family(family: object, name: str = "family") -> str:
+    """`family` if it is one of :data:`FAMILIES`, else TypeError/ValueError naming them."""
+    if not isinstance(family, str):
+        raise TypeError(f"{name} must be one of {FAMILIES}, got {type(family).__name__}")
+    if family not in FAMILIES:
+        raise ValueError(f"{name} must be one of {FAMILIES}, got {family!r}")
+    return family
+
+
+def p_star_bounds(nu: float) -> tuple[float, float]:
+    """The rigorous bounds (1, (1 + nu)/2) of p* for nu = I2/I1 >= 1.
+
+    >>> p_star_bounds(1.5)
+    (1.0, 1.25)
+    """
+    return 1.0, (1.0 + float(nu)) / 2.0

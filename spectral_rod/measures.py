@@ -1,0 +1,60 @@
+"""Measures of computed curves and modes that the paper's sentences are judged on.
+
+Each takes sampled data (a grid and values on it, or a centreline) and returns a number; the
+claims ledger states its verdict rules in terms of them.
+
+>>> import numpy as np
+>>> s = np.linspace(0, 1, 101)
+>>> round(non_planarity(np.sin(np.pi * s), 0.5 * np.sin(np.pi * s)), 12)  # a plane: 0
+0.0
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+__all__ = ["family_switches", "increasing_up_to", "local_maxima", "non_planarity",
+           "settling_point"]
+
+
+def non_planarity(x1: ArrayLike, x2: ArrayLike) -> float:
+    """sigma_min/sigma_max of the samples (x1, x2) of a centreline's lateral displacement: 0 iff
+    the centreline lies in one plane through the rod's axis (a plane containing both hinged ends
+    must contain the axis), up to 1 for a circular helix-like spread."""
+    sv = np.linalg.svd(np.column_stack([np.asarray(x1, float), np.asarray(x2, float)]),
+                       compute_uv=False)
+    return float(sv[-1] / sv[0])
+
+
+def local_maxima(grid: ArrayLike, values: ArrayLike) -> NDArray[np.float64]:
+    """Grid points of the interior local maxima of `values` (strictly above the left neighbour,
+    not below the right one)."""
+    g, v = np.asarray(grid, float), np.asarray(values, float)
+    idx = np.flatnonzero((v[1:-1] > v[:-2]) & (v[1:-1] >= v[2:])) + 1
+    return g[idx]
+
+
+def family_switches(grid: ArrayLike, family: ArrayLike) -> NDArray[np.float64]:
+    """Midpoints of the grid intervals across which the labels `family` change."""
+    g, f = np.asarray(grid, float), np.asarray(family)
+    idx = np.flatnonzero(f[1:] != f[:-1])
+    return 0.5 * (g[idx] + g[idx + 1])
+
+
+def increasing_up_to(grid: ArrayLike, values: ArrayLike, end: float) -> bool:
+    """Whether `values` increase strictly on the grid points <= `end`."""
+    g, v = np.asarray(grid, float), np.asarray(values, float)
+    return bool(np.all(np.diff(v[g <= end]) > 0))
+
+
+def settling_point(grid: ArrayLike, gap: ArrayLike, level: float) -> float | None:
+    """Smallest grid point beyond which |gap| < level everywhere on the grid (the first point if
+    it holds throughout; None if it does not hold at the end of the grid)."""
+    g, d = np.asarray(grid, float), np.abs(np.asarray(gap, float))
+    bad = np.flatnonzero(d >= level)
+    if bad.size == 0:
+        return float(g[0])
+    if bad[-1] + 1 >= g.size:
+        return None
+    return float(g[bad[-1] + 1])

@@ -1,0 +1,85 @@
+"""The one router: which method answers p* at each point, for every straight-rod entry point.
+
+:func:`spectral_rod.critical_load`, :func:`spectral_rod.buckling_mode` and the scenes all ask
+:func:`choose_method`. The automatic choice (``method="auto"``), measured against the mpmath
+characteristic equation (tests/test_extremes.py and the ``extremes`` scene):
+
+* an explicit degree ``n``: Chebyshev collocation everywhere (``n`` is its parameter);
+* |Omega(L)| >= :data:`TWIST_ROUTE` = 50: the characteristic equation in double precision
+  (:func:`spectral_rod.characteristic.characteristic_double`): its cost does not grow with the
+  twist and its relative error is ~eps |Omega| (<= 2.5e-14 at Omega(L) = 1000, 7e-13 at 1e4),
+  whereas collocation needs n ~ 2.7 |Omega|^0.8 (n capped at 512) and loses accuracy to
+  round-off (1e-12 at Omega(L) = 200);
+* nu - 1 <= :data:`NEAR_DEGENERATE` = 1e-3 (and |Omega(L)| < 50): p* = 1 + the increment of
+  :mod:`spectral_rod.increment` (the lowest eigenvalue is nearly double there and collocation's
+  p* - 1 loses its relative accuracy; the increment keeps ~1e-14 of p* - 1);
+* otherwise Chebyshev collocation (:mod:`spectral_rod.straight_rod`, <= ~3e-14 relative).
+
+A method can also be forced (``method=`` one of :data:`ROD_METHODS`), e.g. to cross-check.
+
+>>> choose_method([10.0, 100.0, 10.0], [1.5, 1.5, 1.0001]).tolist()
+['collocation', 'characteristic', 'increment']
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from spectral_rod._validation import check_nu, check_resolution, check_twist
+
+__all__ = ["INCREMENT_MAX_TWIST", "NEAR_DEGENERATE", "ROD_METHODS", "TWIST_ROUTE",
+           "check_method", "choose_method", "route"]
+
+#: The methods that compute p* (``method=`` of :func:`spectral_rod.critical_load`).
+ROD_METHODS = ("collocation", "characteristic", "increment")
+#: |Omega(L)| from which the characteristic equation (double precision) is used.
+TWIST_ROUTE = 50.0
+#: nu - 1 up to which p* = 1 + increment (for |Omega(L)| < TWIST_ROUTE).
+NEAR_DEGENERATE = 1.0e-3
+#: |Omega(L)| limit of the increment (its sine basis needs N ~ 2|Omega|/pi + 48 modes).
+INCREMENT_MAX_TWIST = 1.0e3
+
+
+def check_method(method: object) -> str:
+    """`method` if it is "auto" or one of :data:`ROD_METHODS`."""
+    if not isinstance(method, str):
+        raise TypeError(f"method must be 'auto' or one of {ROD_METHODS}, "
+                        f"got {type(method).__name__}")
+    if method != "auto" and method not in ROD_METHODS:
+        raise ValueError(f"method must be 'auto' or one of {ROD_METHODS}, got {method!r}")
+    return method
+
+
+def route(twist: NDArray[np.float64], nu: NDArray[np.float64], n: int | None = None,
+          method: str = "auto") -> NDArray[np.str_]:
+    """The method per point for flat, validated arrays (module docstring); raises ValueError
+    where a forced method is outside its range."""
+    if method == "increment":
+        bad = (nu - 1.0 > NEAR_DEGENERATE) | (np.abs(twist) > INCREMENT_MAX_TWIST)
+        if bad.any():
+            raise ValueError(f"method='increment' needs nu - 1 <= {NEAR_DEGENERATE:g} and "
+                             f"|twist_angle| <= {INCREMENT_MAX_TWIST:g} (use "
+                             f"critical_load_increment for p* - 1 elsewhere)")
+    if method != "auto":
+        return np.full(twist.shape, method, dtype=f"<U{max(map(len, ROD_METHODS))}")
+    if n is not None:
+        return np.full(twist.shape, "collocation", dtype="<U14")
+    out = np.full(twist.shape, "collocation", dtype="<U14")
+    large = np.abs(twist) >= TWIST_ROUTE
+    out[large] = "characteristic"
+    out[~large & (nu - 1.0 <= NEAR_DEGENERATE)] = "increment"
+    return out
+
+
+def choose_method(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None,
+                  method: str = "auto"):
+    """The method :func:`spectral_rod.critical_load` uses at each point (a str for scalars, an
+    array of str otherwise); arguments as there."""
+    twist, nu_arr = check_twist(twist_angle), check_nu(nu)
+    if n is not None:
+        check_resolution(n)
+    shape = np.broadcast_shapes(twist.shape, nu_arr.shape)
+    out = route(np.broadcast_to(twist, shape).ravel(), np.broadcast_to(nu_arr, shape).ravel(),
+                n, check_method(method)).reshape(shape)
+    return str(out) if shape == () else out

@@ -1,0 +1,114 @@
+r"""p* of Eq. ``inst1`` by Chebyshev collocation for arrays of points, with automatic resolution.
+
+For each point: an a priori degree from the mode's wavenumber, the lowest eigenvalue of both
+mode families at that degree (:mod:`.eigensolver`), the error estimate from the computed mode's
+Chebyshev coefficients (:mod:`.resolution`); where it misses the tolerance the degree is raised
+by ~12 % until it is met or n = :data:`N_MAX` (no raise where the round-off floor alone exceeds
+the tolerance). Inputs are validated by the caller (:func:`spectral_rod.critical_load`).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import NDArray
+
+from spectral_rod.families import FAMILIES
+from spectral_rod.straight_rod.discretisation import family_operator
+from spectral_rod.straight_rod.eigensolver import POWER_RTOL, physical_eig, solve_family
+from spectral_rod.straight_rod.resolution import (
+    N_MAX,
+    N_MIN,
+    error_estimate,
+    initial_degree,
+    roundoff_floor,
+)
+
+__all__ = ["N_MAX", "N_MIN", "CollocationResult", "collocation_critical_load",
+           "collocation_family_load", "collocation_mode_coefficients"]
+
+
+class CollocationResult(NamedTuple):
+    """Flat arrays per point: p*, degree n, error estimate, family index (0 symmetric)."""
+
+    p_star: NDArray[np.float64]
+    n: NDArray[np.int_]
+    error_estimate: NDArray[np.float64]
+    family: NDArray[np.int_]
+
+
+def _solve_points(twist: NDArray[np.float64], nu: NDArray[np.float64], n: NDArray[np.int_],
+                  tol: float = 1e-12):
+    """p*, family index and tail for flat arrays of points at the given degrees.
+
+    The symmetric family first; the antisymmetric one then only has to be resolved where it
+    is not clearly above (1 + 1e-6 times) the symmetric eigenvalue.
+    """
+    p = np.empty(twist.size)
+    fam = np.empty(twist.size, dtype=int)
+    tails = np.empty(twist.size)
+    rtol = max(0.01 * tol, POWER_RTOL)
+    for deg in np.unique(n):
+        sel = np.flatnonzero(n == deg)
+        lam = np.empty((2, sel.size))
+        tl = np.empty((2, sel.size))
+        lam[0], tl[0], _ = solve_family(int(deg), FAMILIES[0], twist[sel], nu[sel], rtol=rtol)
+        lam[1], tl[1], _ = solve_family(int(deg), FAMILIES[1], twist[sel], nu[sel], rtol=rtol,
+                                        ceiling=lam[0] * (1 + 1e-6))
+        # a tie to round-off (e.g. nu = 1 at zero twist: the Euler mode in either plane) goes
+        # to the symmetric family, whose mode is the planar one in the (u0) plane
+        best = (lam[1] < lam[0] * (1.0 - 1e-14)).astype(int)
+        cols = np.arange(sel.size)
+        p[sel] = lam[best, cols] / np.pi**2
+        fam[sel] = best
+        # if the two families are within 1e-6 of each other either could be lowest;
+        # both must then be resolved
+        tails[sel] = np.where(np.abs(lam[0] - lam[1]) <= 1e-6 * lam.min(axis=0),
+                              tl.max(axis=0), tl[best, cols])
+    return p, fam, tails
+
+
+def collocation_critical_load(twist: NDArray[np.float64], nu: NDArray[np.float64], *,
+                              n: int | None = None, tol: float = 1e-12) -> CollocationResult:
+    """p* at flat arrays of points (|Omega|, nu), at degree ``n`` or chosen automatically for
+    relative accuracy ``tol`` (module docstring); validated input expected."""
+    tw = np.abs(twist)
+    if n is not None:
+        deg = np.full(tw.size, int(n))
+        p, fam, tails = _solve_points(tw, nu, deg, tol)
+        return CollocationResult(p, deg, error_estimate(tails, tw), fam)
+    deg = initial_degree(tw, nu, tol)
+    p, fam, tails = _solve_points(tw, nu, deg, tol)
+    err = error_estimate(tails, tw)
+    # raise the degree where the estimate misses tol, unless round-off alone does
+    todo = np.flatnonzero((err > tol) & (deg < N_MAX) & (roundoff_floor(tw) < tol))
+    while todo.size:
+        deg[todo] = np.minimum(N_MAX, deg[todo] + 2 * np.ceil(0.06 * deg[todo] + 1).astype(int))
+        p[todo], fam[todo], tails[todo] = _solve_points(tw[todo], nu[todo], deg[todo], tol)
+        err[todo] = error_estimate(tails[todo], tw[todo])
+        todo = todo[(err[todo] > tol) & (deg[todo] < N_MAX)]
+    return CollocationResult(p, deg, err, fam)
+
+
+def collocation_family_load(twist_angle: float, nu: float, family: str, n: int) -> float:
+    """Lowest p of one mode family by collocation at degree n (one point; no resolution loop).
+
+    Used where the two families are needed separately, e.g. to locate their crossings
+    (:func:`spectral_rod.crossings.collocation_crossing`).
+    """
+    lam, _, _ = solve_family(n, family, np.array([abs(float(twist_angle))]),
+                             np.array([float(nu)]))
+    return float(lam[0]) / math.pi**2
+
+
+def collocation_mode_coefficients(twist_angle: float, nu: float, n: int, family: str
+                                  ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Chebyshev coefficients (in x = 2 s - 1) of (omega1, omega2) of the family's lowest mode at
+    degree n, from the full ``eig`` (an exact eigenvector of the discrete pencil), for
+    Omega(L) >= 0 (the mode of -Omega is the mirror image, omega2 -> -omega2)."""
+    op = family_operator(n, family)
+    a, b = op.pencil(abs(float(twist_angle)), float(nu))
+    _, vec = physical_eig(np.linalg.solve(a, b)[None])
+    return op.split(vec[0])
