@@ -69,7 +69,6 @@ import math
 import warnings
 from collections.abc import Sequence
 from functools import lru_cache
-from pathlib import Path
 from typing import NamedTuple
 
 import numpy as np
@@ -415,7 +414,6 @@ N_DEFAULT, N_CHECK = 32, 12
 #: The band of Figure 1's digitisation (``reference_data/figure1_digitised.md``): a change of
 #: p* below this cannot be seen in the figure.
 FIGURE_RESOLUTION = 5.0e-4
-FIGURE1_CSV = Path(__file__).resolve().parent.parent / "reference_data" / "figure1_digitised.csv"
 
 
 def variant_coefficients(name: str, nu: float) -> tuple[float, float, float, float]:
@@ -568,7 +566,7 @@ def figure1_deviation(name: str, nu: float, digitised: pd.DataFrame | None = Non
                       every: int = 3) -> dict[str, float] | None:
     """Deviation of a variant's p* from the digitised Figure 1 curve of this nu: max |dp|, rms
     and the twist angle of the max, over every ``every``-th digitised point (None if Figure 1
-    has no curve for nu). ``digitised`` defaults to ``reference_data/figure1_digitised.csv``."""
+    has no curve for nu). ``digitised`` defaults to the packaged digitised Figure 1."""
     if digitised is None:
         digitised = _digitised()
     g = digitised[np.isclose(digitised["nu"], nu, rtol=0, atol=1e-12)].iloc[::every]
@@ -583,9 +581,9 @@ def figure1_deviation(name: str, nu: float, digitised: pd.DataFrame | None = Non
 
 @lru_cache(maxsize=1)
 def _digitised() -> pd.DataFrame:
-    from spectral_rod.figure_data import load_figure1
+    from spectral_rod import load_figure1
 
-    return load_figure1(FIGURE1_CSV)
+    return load_figure1()
 
 
 def variant_table(twist_angles: Sequence[float] | None = None,
