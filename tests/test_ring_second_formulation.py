@@ -1,0 +1,260 @@
+"""The second ring formulation (:mod:`spectral_rod.ring_munder`): Eq. ``Munder`` linearised
+numerically, against closed forms independent of both formulations, against the energy
+formulation (:func:`spectral_rod.ring_critical_load`), and against itself (Kirchhoff balances,
+resolution, blocking, complex step).  Loads q R^3/(E1 I1); A1 = 1, A2 = nu, A3 = e (1 + nu)."""
+
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+import pytest
+
+import spectral_rod.ring_munder as rm
+from spectral_rod import RingConvergenceError
+from spectral_rod.ring_munder import (
+    AGREEMENT_CASES,
+    E_ISOTROPIC,
+    MUNDER_TERMS,
+    base_residual,
+    block_loads,
+    munder_buckling,
+    munder_critical_load,
+    ring_formulation_agreement,
+    rotate,
+)
+
+# ---------------------------------------------------------------- closed forms (by hand)
+
+def in_plane_closed(A: float, load: str) -> float:
+    """Untwisted ring in plane, min over n >= 2: hydrostatic A (n^2 - 1) (Timoshenko & Gere),
+    axis A (n^2 - 1)^2 / (n^2 - 2) (hand computation, y_phi = sin(n s))."""
+    ns = np.arange(2, 40)
+    vals = A * (ns**2 - 1) if load == "hydrostatic" else A * (ns**2 - 1) ** 2 / (ns**2 - 2)
+    return float(np.min(vals))
+
+
+def out_of_plane_closed(A: float, A3: float) -> float:
+    """Timoshenko & Gere out-of-plane ring: A (n^2 - 1)^2 / (n^2 + A/A3), min over n >= 2."""
+    ns = np.arange(2, 40)
+    return float(np.min(A * (ns**2 - 1) ** 2 / (ns**2 + A / A3)))
+
+
+@pytest.mark.parametrize(("load", "expected"), [("hydrostatic", 3.0), ("axis", 4.5)])
+def test_untwisted_in_plane_closed_form(load: str, expected: float) -> None:
+    assert in_plane_closed(1.0, load) == expected
+    # nu = 1, N = 0: the in-plane blocks (measured from the Jacobian's pattern) give 3 / 4.5
+    bl, _ = block_loads(0, 1.0, 1.0, load, 10)
+    assert min(b.load for b in bl if b.kind == "in-plane") == pytest.approx(expected, rel=1e-12)
+    # nu = 4: the in-plane mode is the lowest of all
+    assert munder_critical_load(0, 4.0, load=load) == pytest.approx(expected, rel=1e-12)
+
+
+@pytest.mark.parametrize("e", [1.0, E_ISOTROPIC, 10.0])
+@pytest.mark.parametrize("load", ["hydrostatic", "axis"])
+def test_untwisted_out_of_plane_timoshenko_gere(e: float, load: str) -> None:
+    A3 = 2.0 * e
+    bl, _ = block_loads(0, 1.0, e, load, 10)
+    out = min(b.load for b in bl if b.kind == "out-of-plane")
+    assert out == pytest.approx(out_of_plane_closed(1.0, A3), rel=1e-12)
+    assert not any(b.kind == "coupled" for b in bl)  # N = 0: in/out of plane decouple
+    full = munder_critical_load(0, 1.0, e_ratio=e, load=load)
+    assert full == pytest.approx(min(in_plane_closed(1.0, load), out_of_plane_closed(1.0, A3)),
+                                 rel=1e-12)
+
+
+@pytest.mark.parametrize(("N", "e", "load"), [(3, 1.0, "hydrostatic"), (5, E_ISOTROPIC, "axis")])
+def test_circular_section_independent_of_twist(N: int, e: float, load: str) -> None:
+    """nu = 1: the twisted frame is only a relabelling, q is the isotropic ring's."""
+    ref = min(in_plane_closed(1.0, load), out_of_plane_closed(1.0, 2.0 * e))
+    assert munder_critical_load(N, 1.0, e_ratio=e, load=load) == pytest.approx(ref, rel=1e-11)
+
+
+# ---------------------------------------------------------------- agreement with the energy form
+
+FAST_CASES = [(1, 1.3, 1.0, "hydrostatic"), (2, 2.0, 1.0, "axis"),
+              (3, 2.0, E_ISOTROPIC, "axis")]
+
+
+def _check_rows(rows: list[dict]) -> None:
+    for r in rows:
+        assert r["rel_diff"] <= 1e-9, r
+        assert np.isfinite(r["q_munder"]) and r["q_munder"] > 0
+        assert r["t_munder"] >= 0 and r["max_frequency"] >= 2 * r["N"] + 8
+
+
+def test_agreement_fast_cases() -> None:
+    rows = ring_formulation_agreement(FAST_CASES)
+    assert [(r["N"], r["load"]) for r in rows] == [(c[0], c[3]) for c in FAST_CASES]
+    _check_rows(rows)
+
+
+@pytest.mark.slow
+def test_agreement_all_cases() -> None:
+    cases = list(AGREEMENT_CASES)
+    assert len(cases) >= 12
+    assert {c[0] for c in cases} == set(range(9))
+    assert {c[3] for c in cases} == {"hydrostatic", "axis"}
+    assert {c[2] for c in cases} == {1.0, E_ISOTROPIC}
+    _check_rows(ring_formulation_agreement(cases))
+
+
+def test_agreement_accepts_dicts_and_short_tuples() -> None:
+    rows = ring_formulation_agreement([{"N": 1, "nu": 2.0, "load": "axis"}, (0, 1.0)])
+    assert rows[0]["load"] == "axis" and rows[0]["e_ratio"] == 1.0
+    assert rows[1]["load"] == "hydrostatic"
+    assert set(rows[0]) >= {"q_galerkin", "q_munder", "rel_diff", "max_frequency", "n_unknowns",
+                            "t_galerkin", "t_munder"}
+
+
+# ---------------------------------------------------------------- Eq. Munder itself
+
+@pytest.mark.parametrize(("N", "nu", "e", "load", "M"), [(2, 2.0, 1.0, "axis", 16),
+                                                         (3, 4.0, E_ISOTROPIC, "hydrostatic", 20)])
+def test_munder_as_printed_equals_kirchhoff_balances(N: int, nu: float, e: float, load: str,
+                                                     M: int) -> None:
+    """M' + t x F = 0, F' + q = 0 with the full force as unknown (no Munder) give the same
+    load: the elimination of F_u, F_v in Eq. ``Munder`` is right as printed."""
+    a, wa = block_loads(N, nu, e, load, M)
+    b, wb = block_loads(N, nu, e, load, M, "kirchhoff")
+    qa, qb = min(x.load for x in a), min(x.load for x in b)
+    assert qa == pytest.approx(qb, rel=1e-10)
+    assert qa == pytest.approx(munder_critical_load(N, nu, e_ratio=e, load=load), rel=1e-10)
+    assert wa < 1e-8 and wb < 1e-8  # conservative: the spectrum is real
+
+
+@pytest.mark.parametrize("equations", ["munder", "kirchhoff"])
+@pytest.mark.parametrize("load", ["hydrostatic", "axis"])
+def test_loaded_circle_is_an_equilibrium(equations: str, load: str) -> None:
+    """Hoop force F_t = -q R, no moments: the residual vanishes (section "Stability of a ring")."""
+    for N, q in ((0, 1.0), (3, 2.5)):
+        assert base_residual(N, 2.0, load=load, q=q, equations=equations) < 1e-12
+
+
+SENSITIVE_FAST = ["1:qt", "2:w2*Mv", "3:w3*w1*Mt", "4:w3*w2*Mt"]
+
+
+def _flip_changes(load: str, terms: list[str]) -> dict[str, float]:
+    ref = min(b.load for b in block_loads(2, 2.0, 1.0, load, 10)[0])
+    return {t: abs(min(b.load for b in block_loads(2, 2.0, 1.0, load, 10, flip=t)[0]) - ref)
+            / ref for t in terms}
+
+
+def test_every_printed_term_matters_fast() -> None:
+    """Reversing one term of Munder moves q by > 1 %: the agreement is not insensitive to it."""
+    changes = _flip_changes("axis", SENSITIVE_FAST)
+    assert all(c > 1e-2 for c in changes.values()), changes
+
+
+@pytest.mark.slow
+def test_every_printed_term_matters_all() -> None:
+    changes = _flip_changes("axis", list(MUNDER_TERMS))
+    assert all(c > 1e-2 for c in changes.values()), changes
+    # the hydrostatic load stays normal to the deformed centreline, so q_t = 0 identically and
+    # the sign of its term cannot matter; every other term does
+    hyd = _flip_changes("hydrostatic", list(MUNDER_TERMS))
+    assert hyd.pop("1:qt") < 1e-12
+    assert all(c > 1e-2 for c in hyd.values()), hyd
+
+
+def test_flip_is_validated() -> None:
+    with pytest.raises(ValueError, match="flip"):
+        block_loads(1, 2.0, 1.0, "axis", 8, flip="5:nothing")
+
+
+# ---------------------------------------------------------------- numerics of the formulation
+
+def test_rotation_is_exact() -> None:
+    rng = np.random.default_rng(3)
+    theta = rng.normal(size=(50, 3)) * 2.0
+    a, b = rng.normal(size=(50, 3)), rng.normal(size=(50, 3))
+    ra, rb = rotate(theta, a), rotate(theta, b)
+    assert np.allclose(np.sum(ra * rb, axis=1), np.sum(a * b, axis=1), atol=1e-12)
+    assert np.allclose(np.cross(ra, rb), rotate(theta, np.cross(a, b)), atol=1e-12)
+    assert np.allclose(rotate(theta, theta), theta, atol=1e-12)
+    # composition about one axis adds the angles
+    axis = np.array([0.3, -0.4, 0.5]) / np.linalg.norm([0.3, -0.4, 0.5])
+    assert np.allclose(rotate(0.7 * axis, rotate(0.9 * axis, a[0])), rotate(1.6 * axis, a[0]))
+
+
+def test_complex_step_matches_finite_differences() -> None:
+    """The pencil is the derivative of the real nonlinear residual (central differences)."""
+    prob = rm._problem(2, 2.0, 0.7, "axis", 6, "munder")
+    J0, J1 = rm.pencil(prob)
+    rng = np.random.default_rng(5)
+    d = rng.normal(size=prob.size)
+    q, h = 1.7, 1e-5
+    fd = (rm._residual((h * d)[None], prob, q) - rm._residual((-h * d)[None], prob, q)).real
+    fd = fd[0] / (2 * h)
+    jd = (J0 + q * J1) @ d
+    assert np.max(np.abs(fd - jd)) < 1e-6 * np.max(np.abs(jd))
+
+
+def test_blocks_are_the_twist_families_and_do_not_change_the_answer() -> None:
+    """The measured blocks hold frequencies f = +-n (mod 2N) of one n only, and solving the
+    unblocked pencil gives the same smallest load."""
+    N, M = 3, 12
+    bl, _ = block_loads(N, 2.0, 1.0, "hydrostatic", M)
+    for b in bl:
+        assert len({min(f % (2 * N), -f % (2 * N)) for f in b.frequencies}) <= 1, b
+    prob = rm._problem(N, 2.0, 1.0, "hydrostatic", M, "munder")
+    qs, _ = rm._block_loads(*rm.pencil(prob))
+    assert qs[qs > 0][0] == pytest.approx(min(b.load for b in bl), rel=1e-9)
+
+
+def test_spectral_convergence_with_resolution() -> None:
+    N, nu = 3, 4.0
+    ref = min(b.load for b in block_loads(N, nu, 1.0, "hydrostatic", 40)[0])
+    errs = [abs(min(b.load for b in block_loads(N, nu, 1.0, "hydrostatic", M)[0]) - ref) / ref
+            for M in (6, 8, 10, 14)]
+    # a new member of the critical family (f = 2, 4, 8, 10, 14, ...) enters at each step
+    assert errs[0] > 1e-3
+    assert all(b < a / 100 for a, b in itertools.pairwise(errs))
+    assert errs[-1] < 1e-12
+    r = munder_buckling(N, nu)
+    assert r.converged and r.rel_change <= r.tol
+    assert r.load == pytest.approx(ref, rel=1e-11)
+
+
+def test_not_converged_is_flagged(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(rm, "_truncations", lambda N: [2 * N + 1, 2 * N + 2])  # too coarse
+    with pytest.raises(RingConvergenceError, match="not converged"):
+        munder_critical_load(3, 4.0)
+    r = munder_buckling(3, 4.0, raise_on_failure=False)
+    assert not r.converged and r.rel_change > r.tol
+
+
+def test_non_real_spectrum_is_flagged(monkeypatch: pytest.MonkeyPatch) -> None:
+    real = rm.block_loads
+    monkeypatch.setattr(rm, "block_loads", lambda *a, **k: (real(*a, **k)[0], 0.5))
+    with pytest.warns(rm.ConvergenceWarning, match="non-real"):
+        munder_buckling(1, 2.0)
+
+
+# ---------------------------------------------------------------- input validation
+
+@pytest.mark.parametrize(("kwargs", "exc", "word"), [
+    ({"N": -2}, ValueError, "N"),
+    ({"N": 1.5}, ValueError, "N"),
+    ({"N": None}, TypeError, "N"),
+    ({"N": 31}, ValueError, "N"),
+    ({"nu": 0.99}, ValueError, "nu"),
+    ({"nu": [1.0, 2.0]}, TypeError, "nu"),
+    ({"e_ratio": 0.0}, ValueError, "e_ratio"),
+    ({"load": "pressure"}, ValueError, "load"),
+    ({"load": 3}, TypeError, "load"),
+    ({"tol": 0.5}, ValueError, "tol"),
+    ({"tol": True}, ValueError, "tol"),
+])
+def test_bad_input(kwargs: dict, exc: type[Exception], word: str) -> None:
+    args = {"N": 2, "nu": 2.0, **kwargs}
+    N, nu = args.pop("N"), args.pop("nu")
+    with pytest.raises(exc, match=word):
+        munder_critical_load(N, nu, **args)
+    with pytest.raises(exc, match=word):
+        munder_buckling(N, nu, **args)
+
+
+def test_bad_equations() -> None:
+    with pytest.raises(ValueError, match="equations"):
+        munder_buckling(1, 2.0, equations="euler")
