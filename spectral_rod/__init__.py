@@ -39,7 +39,9 @@ ring, q_cr = 3 E1 I1/R^3 (I1 = I2)  :mod:`.ring_closed_forms` (untwisted ring, b
 Eq. ``crit2``, threshold twist      :func:`ring_formula_load`, :func:`threshold_twist`
                                     (:mod:`.ring_formula`)
 ring stability (the truth)          :func:`ring_critical_load`, :func:`ring_buckling`
-                                    (:mod:`.ring_stability`)
+                                    (:mod:`.ring_stability`, the second variation) and
+                                    ``method="munder"`` (:mod:`.ring_munder`: Eqs. ``Munder``,
+                                    ``constit``, ``frenet`` linearised numerically)
 ==================================  ==========================================================
 
 Public names are imported lazily (``import spectral_rod`` stays light; scipy and mpmath load
@@ -88,6 +90,8 @@ _EXPORTS = {
     "ThresholdTwist": "ring_formula", "crit2": "ring_formula", "ring_formula_load": "ring_formula",
     "threshold_twist": "ring_formula",
     "RingBuckling": "ring_stability", "RING_LOADS": "ring_stability",
+    "RING_METHODS": "ring_stability", "munder_buckling": "ring_munder",
+    "ring_formulation_agreement": "ring_munder",
     "homogenised_limit": "ring_closed_forms", "in_plane_untwisted": "ring_closed_forms",
     "out_of_plane_supremum": "ring_closed_forms", "out_of_plane_untwisted": "ring_closed_forms",
     "non_planarity": "measures", "local_maxima": "measures", "family_switches": "measures",

@@ -94,9 +94,9 @@ import scipy.sparse
 import scipy.sparse.csgraph
 from numpy.typing import NDArray
 
-from spectral_rod.ring import check_e_ratio, check_scalar_nu, check_twist_count
-from spectral_rod.ring_stability import RingConvergenceError, check_load, stiffnesses
-from spectral_rod.straight_rod import ConvergenceWarning
+from spectral_rod.errors import ConvergenceWarning, RingConvergenceError
+from spectral_rod.ring_formula import check_e_ratio, check_scalar_nu, check_twist_count
+from spectral_rod.ring_stability import check_load, stiffnesses
 
 #: Residual systems: the paper's Eq. ``Munder`` or the Kirchhoff vector balances.
 EQUATIONS = ("munder", "kirchhoff")

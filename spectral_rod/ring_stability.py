@@ -476,14 +476,32 @@ def ring_buckling(N: object, nu: object, *, e_ratio: object = 1.0, load: object 
                         sol.basis_labels)
 
 
+#: The formulations of the ring problem (``method=`` of :func:`ring_critical_load`):
+#: "second-variation" -- this module (the sympy second variation of the energy, Fourier-Galerkin);
+#: "munder" -- :mod:`spectral_rod.ring_munder` (the paper's equilibrium equations Eq. ``Munder``
+#: with ``constit`` and ``frenet``, linearised numerically about the loaded circle).
+RING_METHODS = ("second-variation", "munder")
+
+
 def ring_critical_load(N: object, nu: object, *, e_ratio: object = 1.0,
-                       load: object = "hydrostatic", tol: float = 1.0e-12) -> float:
+                       load: object = "hydrostatic", tol: float = 1.0e-12,
+                       method: str = "second-variation") -> float:
     """Converged critical load q_cr R^3/(E1 I1) of the twisted ring (Omega = N s/R).
 
     N >= 0 integer turns of the cross-section, nu = I2/I1 >= 1, e = E2/E1 > 0 (A3 = e (1+nu)
     E1 I1), load "hydrostatic" (pressure on the ring's projection, force q e_z x R') or "axis"
     (force -q e_r at the displaced point: horizontal, toward the ring's axis); see the module
-    docstring.  Raises :class:`RingConvergenceError` if not converged to ``tol``.  Use
-    :func:`ring_buckling` for the mode, its kind and the convergence record.
+    docstring. ``method``: one of :data:`RING_METHODS` (two formulations that share no hand
+    derivation). Raises :class:`spectral_rod.RingConvergenceError` if not converged to ``tol``.
+    Use :func:`ring_buckling` for the mode, its kind and the convergence record.
+
+    >>> round(ring_critical_load(0, 1.0), 12)   # untwisted circular ring: out of plane, 2
+    2.0
     """
+    if not isinstance(method, str) or method not in RING_METHODS:
+        raise ValueError(f"method must be one of {RING_METHODS}, got {method!r}")
+    if method == "munder":
+        from spectral_rod.ring_munder import munder_critical_load
+
+        return munder_critical_load(N, nu, e_ratio=e_ratio, load=load, tol=tol)
     return ring_buckling(N, nu, e_ratio=e_ratio, load=load, tol=tol).load
