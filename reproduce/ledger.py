@@ -1,28 +1,99 @@
-"""The claims ledger: one row per statement of the paper, with its test, evidence and verdict.
+"""The claims ledger: one row per checkable statement of the paper, declared, measured, judged.
 
-Several scenes contribute rows (``claims`` the straight rod, ``ring`` the ring). Each scene
-calls :func:`update_ledger` with *its* rows; rows from other scenes already in ``claims.json``
-are kept, so the ledger is whole whichever scenes ran and in whatever order.
+A claim is *declared* (:class:`ClaimSpec`: id, where in the paper, the statement, the test, the
+methods the evidence rests on, the verdict rule), then *measured* by its scene
+(:class:`Measured`: the numbers, the cross-checks between independent methods, the evidence
+text made from the numbers), then *judged* (:func:`judge`):
 
-``claims.json`` is a list of objects with at least the keys ``id``, ``section``, ``claim``,
-``test``, ``evidence``, ``verdict`` (one of :data:`VERDICTS`), plus ``scene`` (who wrote the row),
-``figure`` (a file name or null) and ``numbers`` (the computed values behind the evidence).
+* if any cross-check failed -- two independent methods disagree beyond their stated accuracy --
+  the verdict is "inconclusive", whatever the rule would say;
+* otherwise the named rule turns the numbers into "holds", "holds approximately" or "fails".
+
+So a test can perturb the measured numbers (or a cross-check) and see the verdict change. A
+verdict backed by methods of a single formulation (e.g. two solvers of Eq. ``inst1``) says so in
+its evidence.
+
+Several scenes contribute rows; each calls :func:`update_ledger` with *its* rows, and rows from
+other scenes already in ``claims.json`` are kept. ``claims.json`` is a list of objects with the
+keys ``id``, ``section``, ``claim``, ``test``, ``evidence``, ``verdict`` (one of
+:data:`VERDICTS`), ``scene``, ``figure``, ``numbers``, ``methods`` (list of {"name",
+"formulation"}), ``rule``, ``cross_checks`` (list of {"name", "disagreement", "limit",
+"passed"}) and ``related`` (ids of rows that bear on this one).
 """
 
 from __future__ import annotations
 
 import json
+import math
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
 
 from reproduce.io import write_text
+from reproduce.tables import markdown_table
 
-VERDICTS = ("holds", "holds approximately", "fails")
+VERDICTS = ("holds", "holds approximately", "fails", "inconclusive")
+
+
+@dataclass(frozen=True)
+class Method:
+    """A method behind a verdict and the formulation it starts from (e.g. "inst1", "energy",
+    "Munder", "second variation", "closed form", "paper's figure")."""
+
+    name: str
+    formulation: str
+
+
+@dataclass(frozen=True)
+class CrossCheck:
+    """Two independent determinations of one number: their disagreement against the accuracy
+    they claim (``limit``). A non-finite disagreement fails."""
+
+    name: str
+    disagreement: float
+    limit: float
+
+    @property
+    def passed(self) -> bool:
+        return math.isfinite(self.disagreement) and self.disagreement <= self.limit
+
+
+@dataclass(frozen=True)
+class Rule:
+    """A named verdict rule: ``text`` states it, ``decide`` applies it to the numbers."""
+
+    text: str
+    decide: Callable[[Mapping[str, Any]], str]
+
+
+@dataclass(frozen=True)
+class ClaimSpec:
+    """The declaration of a claim: what the paper says and how it is judged."""
+
+    id: str
+    section: str
+    claim: str
+    test: str
+    methods: tuple[Method, ...]
+    rule: Rule
+    figure: str | None = None
+    related: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class Measured:
+    """What a scene measured for a claim: the rule's inputs, the evidence text, cross-checks."""
+
+    numbers: dict[str, Any]
+    evidence: str
+    cross_checks: tuple[CrossCheck, ...] = ()
 
 
 @dataclass(frozen=True)
 class Claim:
+    """A judged row of the ledger (what ``claims.json`` holds)."""
+
     id: str
     section: str
     claim: str
@@ -32,10 +103,42 @@ class Claim:
     scene: str
     figure: str | None = None
     numbers: dict[str, Any] = field(default_factory=dict)
+    methods: list[dict[str, str]] = field(default_factory=list)
+    rule: str = ""
+    cross_checks: list[dict[str, Any]] = field(default_factory=list)
+    related: list[str] = field(default_factory=list)
 
     def __post_init__(self) -> None:
         if self.verdict not in VERDICTS:
             raise ValueError(f"verdict must be one of {VERDICTS}, got {self.verdict!r}")
+
+
+def formulations(methods: Sequence[Method]) -> list[str]:
+    """The distinct starting points of `methods`, in order."""
+    return list(dict.fromkeys(m.formulation for m in methods))
+
+
+def judge(spec: ClaimSpec, measured: Measured, scene: str) -> Claim:
+    """The verdict of `spec` on `measured` (module docstring) as a ledger row."""
+    failed = [c for c in measured.cross_checks if not c.passed]
+    verdict = "inconclusive" if failed else spec.rule.decide(measured.numbers)
+    if verdict not in VERDICTS:
+        raise ValueError(f"rule of {spec.id} returned {verdict!r}, not one of {VERDICTS}")
+    evidence = measured.evidence
+    if failed:
+        evidence += (" INCONCLUSIVE: independent methods disagree beyond their stated accuracy: "
+                     + "; ".join(f"{c.name} {c.disagreement:.1e} > {c.limit:.1e}"
+                                 for c in failed) + ".")
+    forms = formulations(spec.methods)
+    if len(forms) < 2:
+        evidence += (f" (This verdict rests on one formulation only: {forms[0] if forms else '-'};"
+                     " no independent formulation applies to it.)")
+    return Claim(
+        id=spec.id, section=spec.section, claim=spec.claim, test=spec.test, evidence=evidence,
+        verdict=verdict, scene=scene, figure=spec.figure, numbers=measured.numbers,
+        methods=[asdict(m) for m in spec.methods], rule=spec.rule.text,
+        cross_checks=[{**asdict(c), "passed": c.passed} for c in measured.cross_checks],
+        related=list(spec.related))
 
 
 def read_ledger(path: Path) -> list[dict[str, Any]]:
@@ -51,21 +154,36 @@ def read_ledger(path: Path) -> list[dict[str, Any]]:
     return rows
 
 
+def _methods_text(row: Mapping[str, Any]) -> str:
+    return "; ".join(f"{m['name']} ({m['formulation']})" for m in row.get("methods", []))
+
+
 def _markdown(rows: list[dict[str, Any]]) -> str:
+    counts = {v: sum(r["verdict"] == v for r in rows) for v in VERDICTS}
     lines = ["# Claims ledger", "",
-             "Every statement of Drozdov & Rabin checked by this package, with the test, the "
-             "computed evidence and a verdict (*holds*, *holds approximately*, *fails*). "
-             "Generated by `python -m reproduce claims` and `python -m reproduce ring`; "
-             "nothing here is typed in by hand.", "",
-             "| id | where | claim | verdict |", "|---|---|---|---|"]
-    lines += [f"| `{r['id']}` | {r['section']} | {r['claim']} | **{r['verdict']}** |" for r in rows]
+             "Every checkable statement of Drozdov & Rabin, with the test, the methods it rests "
+             "on (and their starting formulations), the computed evidence and a verdict by a "
+             "stated rule (*holds*, *holds approximately*, *fails*, or *inconclusive* when "
+             "independent methods disagree). Generated by `python -m reproduce`; nothing here is "
+             "typed in by hand.", "",
+             ", ".join(f"{counts[v]} {v}" for v in VERDICTS) + f" ({len(rows)} rows).", "",
+             markdown_table(["id", "where", "claim", "verdict"],
+                            [[f"`{r['id']}`", r["section"], r["claim"], f"**{r['verdict']}**"]
+                             for r in rows])]
     for r in rows:
         lines += ["", f"## `{r['id']}` — {r['verdict']}", "",
                   f"*Where:* {r['section']}  ", f"*Claim:* {r['claim']}  ",
-                  f"*Test:* {r['test']}  ", f"*Evidence:* {r['evidence']}"]
+                  f"*Test:* {r['test']}  ", f"*Methods:* {_methods_text(r)}  ",
+                  f"*Rule:* {r.get('rule', '')}  ", f"*Evidence:* {r['evidence']}"]
+        if r.get("related"):
+            lines.append(f"*Related:* {', '.join(f'`{x}`' for x in r['related'])}")
         if r.get("figure"):
             lines.append(f"\n![{r['id']}]({r['figure']})")
     return "\n".join(lines) + "\n"
+
+
+#: Order of the scenes' rows in the ledger (others after them, alphabetically).
+SCENE_ORDER = ("claims", "figure1", "ring")
 
 
 def update_ledger(out_dir: Path, scene: str, claims: list[Claim]) -> list[Path]:
@@ -77,7 +195,28 @@ def update_ledger(out_dir: Path, scene: str, claims: list[Claim]) -> list[Path]:
     dupes = sorted({i for i in ids if ids.count(i) > 1})
     if dupes:
         raise ValueError(f"duplicate claim ids in the ledger: {dupes}")
-    rows.sort(key=lambda r: (r["scene"] != "claims", r["id"]))
+    order = {s: i for i, s in enumerate(SCENE_ORDER)}
+    rows.sort(key=lambda r: (order.get(r["scene"], len(order)), r["scene"], r["id"]))
     write_text(json_path, json.dumps(rows, indent=2, default=float) + "\n")
     md_path = write_text(Path(out_dir) / "claims.md", _markdown(rows))
     return [json_path, md_path]
+
+
+# ------------------------------------------------------------------------------------------
+# rules used by several claims
+# ------------------------------------------------------------------------------------------
+
+def all_of(text: str, keys: Sequence[str], otherwise: str = "fails") -> Rule:
+    """holds if every boolean ``numbers[k]`` is true, else `otherwise`."""
+    return Rule(text, lambda n: "holds" if all(bool(n[k]) for k in keys) else otherwise)
+
+
+def tiered(text: str, holds: Sequence[str], approximately: Sequence[str]) -> Rule:
+    """holds if every key of `holds` is true; holds approximately if those of `approximately`
+    are; fails otherwise."""
+    def decide(n: Mapping[str, Any]) -> str:
+        if all(bool(n[k]) for k in holds):
+            return "holds"
+        return "holds approximately" if all(bool(n[k]) for k in approximately) else "fails"
+
+    return Rule(text, decide)

@@ -12,9 +12,10 @@ import mpmath as mp
 import pytest
 
 from reproduce import claims as sc
-from reproduce.ledger import Claim, update_ledger
-from spectral_rod.asymptotics import crossing_closed_form, large_twist_limit
-from spectral_rod.characteristic import characteristic_critical_load
+from reproduce.claims import rows
+from reproduce.claims.evidence import NUS, solver_agreement
+from reproduce.ledger import VERDICTS, Claim, Measured, judge, update_ledger
+from spectral_rod import characteristic_critical_load, crossing_closed_form, large_twist_limit
 
 
 @pytest.fixture(scope="module")
@@ -22,8 +23,8 @@ def ev():
     return sc.compute_evidence()
 
 
-def _by_id(claims):
-    return {c.id: c for c in claims}
+def _claim(claim_id, ev):
+    return sc.evaluate_claim(claim_id, ev)
 
 
 def test_every_claim_has_a_verdict_and_the_expected_one(ev):
@@ -44,35 +45,44 @@ def test_every_claim_has_a_verdict_and_the_expected_one(ev):
 
 
 def test_two_solvers_agree_on_every_decisive_load(ev):
-    assert sc.solver_agreement(ev) < 1e-11
+    assert solver_agreement(ev) < 1e-11
 
 
 def test_first_maximum_numbers(ev):
-    c = sc.claim_first_maximum(ev)
+    c = _claim("rod-first-maximum", ev)
     for nu, x in c.numbers["twist_over_pi"].items():
         # closed form (crossing theorem) is an independent third determination
         assert x == pytest.approx(crossing_closed_form(2, nu).twist / math.pi, abs=1e-12)
-        assert 2.0 < x < 2.0 + 2 * sc.NEAR
+        assert 2.0 < x < 2.0 + 2 * rows.NEAR
         assert c.numbers["kind"][nu] == "corner maximum"
     assert c.numbers["local_not_global"]
     # the maximum is below the large-twist limit, which is itself never exceeded on the grid
-    for nu in sc.NUS:
+    for nu in NUS:
         assert ev.p[nu].max() < large_twist_limit(nu)
 
 
 def test_first_maximum_verdict_depends_on_the_corner_and_location(ev):
     broken = copy.deepcopy(ev)
     broken.maxima[0].kind = "corner"  # e.g. if the crossing were on a monotone stretch
-    assert sc.claim_first_maximum(broken).verdict == "fails"
+    assert _claim("rod-first-maximum", broken).verdict == "fails"
+    # moving one solver's maxima breaks the three-way cross-check: no verdict
     moved = copy.deepcopy(ev)
     for m in moved.maxima:
         if m.n == 2:
             m.twist_mp += 0.1 * math.pi
-    assert sc.claim_first_maximum(moved).verdict == "fails"
+    assert _claim("rod-first-maximum", moved).verdict == "inconclusive"
+    # the rule alone: a corner 5 % away from 2 pi is not "at 2 pi"
+    measured = rows.measure_first_maximum(ev)
+    far = Measured({**measured.numbers, "max_rel_offset": 0.05}, measured.evidence,
+                   measured.cross_checks)
+    assert judge(rows.FIRST_MAXIMUM, far, "claims").verdict == "fails"
+    exact = Measured({**measured.numbers, "max_rel_offset": 0.0}, measured.evidence,
+                     measured.cross_checks)
+    assert judge(rows.FIRST_MAXIMUM, exact, "claims").verdict == "holds"
 
 
 def test_further_maxima_numbers(ev):
-    c = sc.claim_further_maxima(ev)
+    c = _claim("rod-further-maxima", ev)
     assert c.numbers["offset_exponent"] == pytest.approx(-3.0, abs=0.1)
     assert not c.numbers["maximum_near_pi"]
     assert c.numbers["all_corners"] and c.numbers["heights_rise"]
@@ -90,7 +100,7 @@ def test_no_maximum_near_pi_by_mpmath(ev):
 
 
 def test_limit_claim_numbers(ev):
-    c = sc.claim_limit(ev)
+    c = _claim("rod-limit", ev)
     lo, hi = c.numbers["observed_order_p_minus_limit"]
     # between -3 (the |sin|/Omega^3 ripple dominates while Omega < 4/(delta p_inf), nu near 1)
     # and -2 (the smooth Omega^-2 deficit)
@@ -109,7 +119,7 @@ def test_limit_claim_numbers(ev):
 
 
 def test_beta_real_fails_in_the_window(ev):
-    c = sc.claim_wavenumbers_real(ev)
+    c = _claim("rod-beta-real", ev)
     assert c.verdict == "fails"
     assert c.numbers["max_closed_form_dev"] < 1e-12
     # independent location of the window's upper end: X_- changes sign along the mpmath curve
@@ -122,14 +132,23 @@ def test_beta_real_fails_in_the_window(ev):
     with mp.workdps(20):
         end = mp.findroot(xm, (w["omega_b"] - 0.05, w["omega_b"] + 0.05), solver="anderson")
     assert float(end) == pytest.approx(w["omega_b"], abs=1e-10)
+    # one solver contradicting the other: no verdict (was "holds" before the ledger had
+    # cross-checks); both saying beta_1 is real: the claim would hold
     flipped = copy.deepcopy(ev)
     for r in flipped.windows:
         r["x_minus_mid_mp"] = abs(r["x_minus_mid_mp"])
-    assert sc.claim_wavenumbers_real(flipped).verdict == "holds"
+    assert _claim("rod-beta-real", flipped).verdict == "inconclusive"
+    for r in flipped.windows:
+        r["x_minus_mid_coll"] = abs(r["x_minus_mid_coll"])
+    assert _claim("rod-beta-real", flipped).verdict == "holds"
+    # the closed form failing its check against the solvers: no verdict either
+    off = copy.deepcopy(ev)
+    off.windows[0]["dev_a"] = 1e-3
+    assert _claim("rod-beta-real", off).verdict == "inconclusive"
 
 
 def test_beta_difference_is_exactly_two_pi_at_the_maxima(ev):
-    c = sc.claim_beta_difference(ev)
+    c = _claim("rod-beta-difference", ev)
     assert c.numbers["corner_maxima_at_crossings"]
     assert c.numbers["resonance_gap_at_maxima"] < 1e-20
     assert c.numbers["gap_to_2pi_at_large_twist"] < 2e-5
@@ -138,34 +157,34 @@ def test_beta_difference_is_exactly_two_pi_at_the_maxima(ev):
 
 
 def test_resonance_orders(ev):
-    c = sc.claim_resonance(ev)
+    c = _claim("rod-resonance", ev)
     assert all(-3.2 < f < -2.8 for f in c.numbers["decay_order"])
     assert all(f < -3.7 for f in c.numbers["decay_order_after_prediction"])
 
 
 def test_three_dimensional_mode(ev):
-    c = sc.claim_three_dimensional(ev)
+    c = _claim("rod-three-dimensional", ev)
     assert c.numbers["min_non_planarity"] > 1e-3
     assert c.numbers["solver_shape_mismatch"] < 1e-10
     assert c.numbers["non_planarity_decay_order"] == pytest.approx(-2.0, abs=0.3)
     planar = copy.deepcopy(ev)
     for m in planar.modes[1:]:
         m["planarity_mp"] = 0.0
-    assert sc.claim_three_dimensional(planar).verdict == "fails"
+    assert _claim("rod-three-dimensional", planar).verdict == "fails"
 
 
 def test_isotropic_and_zero_twist_and_stabilising(ev):
     assert ev.isotropic["max_dev_coll"] < 1e-12
-    assert sc.claim_zero_twist(ev).numbers["max_det_mp"] < 1e-25
-    c = sc.claim_stabilising(ev)
+    assert _claim("rod-zero-twist", ev).numbers["max_det_mp"] < 1e-25
+    c = _claim("rod-stabilising", ev)
     assert c.numbers["min_excess"] > 0 and c.numbers["min_step_in_nu"] > 0
     lowered = copy.deepcopy(ev)
     lowered.p[10.0] = lowered.p[10.0] * 0 + 1.0  # a curve below its neighbour
-    assert sc.claim_stabilising(lowered).verdict == "fails"
+    assert _claim("rod-stabilising", lowered).verdict == "fails"
 
 
 def test_twist_raises_load_is_only_a_trend(ev):
-    c = sc.claim_monotone_growth(ev)
+    c = _claim("rod-twist-raises-load", ev)
     assert all(d > 1e-4 for d in c.numbers["drop_after_first_max"].values())
     assert all(0.2 < f < 0.5 for f in c.numbers["fraction_decreasing"].values())
 
@@ -179,7 +198,9 @@ def test_ledger_keeps_other_scenes_rows_and_has_the_keys(tmp_path, ev):
     assert {r["id"] for r in rows} >= {"ring-x", "rod-first-maximum"}
     for r in rows:
         assert {"id", "section", "claim", "test", "evidence", "verdict"} <= r.keys()
-        assert r["verdict"] in ("holds", "holds approximately", "fails")
+        assert r["verdict"] in VERDICTS
+        if r["scene"] == "claims":
+            assert r["methods"] and all({"name", "formulation"} <= m.keys() for m in r["methods"])
 
 
 def test_scene_writes_ledger_figures_and_report(tmp_path, ev, monkeypatch):
@@ -194,6 +215,25 @@ def test_scene_writes_ledger_figures_and_report(tmp_path, ev, monkeypatch):
 
 
 def test_further_maxima_offset_matches_its_asymptotics(ev):
-    c = sc.claim_further_maxima(ev)
+    c = _claim("rod-further-maxima", ev)
     assert c.numbers["offset_last_found"] == pytest.approx(c.numbers["offset_last_predicted"],
                                                            rel=1e-2)
+
+
+@pytest.mark.parametrize("spec_measure", rows.CLAIMS, ids=[s.id for s, _ in rows.CLAIMS])
+def test_a_failed_cross_check_makes_the_verdict_inconclusive(ev, spec_measure):
+    spec, measure = spec_measure
+    measured = measure(ev)
+    assert judge(spec, measured, "claims").verdict != "inconclusive"
+    for i, check in enumerate(measured.cross_checks):
+        broken = list(measured.cross_checks)
+        broken[i] = type(check)(check.name, 10 * check.limit + 1e-3, check.limit)
+        verdict = judge(spec, Measured(measured.numbers, measured.evidence, tuple(broken)),
+                        "claims")
+        assert verdict.verdict == "inconclusive" and check.name in verdict.evidence
+
+
+def test_single_formulation_verdicts_say_so(ev):
+    for c in sc.evaluate_claims(ev):
+        forms = {m["formulation"] for m in c.methods}
+        assert ("one formulation only" in c.evidence) == (len(forms) < 2)
