@@ -5,7 +5,7 @@ Omega = N s/R, with bending stiffnesses A1 = E1 I1 <= A2 = E1 I2 and torsion A3 
 under a uniform inward load q; loads as q R^3/(E1 I1), nu = I2/I1, e = E2/E1.
 Compares: the paper's one-mode Galerkin estimate Eq. ``crit2`` (:mod:`spectral_rod.ring`) with the
 converged Fourier-Galerkin solution of the linearised problem (:mod:`spectral_rod.ring_stability`,
-derivation checked in ``derivations/ring_linearisation.py``) for both load models
+derivation checked in ``spectral_rod/derivations/ring_linearisation.py``) for both load models
 ("hydrostatic": pressure on the projection; "axis": the paper's literal -q e_r), for N = 0..10,
 nu in {1, 1.1, 1.3, 1.5, 2, 4}, e = 1 and e = 1/(2 (1 + 0.3)) (isotropic); closed forms of the
 untwisted ring (in-plane 3 A1, 4.5 A1; Timoshenko & Gere out-of-plane) and of the rapidly twisted

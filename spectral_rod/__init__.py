@@ -16,10 +16,11 @@ From the paper to the code
 ==================================  ==========================================================
 paper                               implemented / checked by
 ==================================  ==========================================================
-Eq. ``frenini``, ``frenet``          ring frames: ``derivations/ring_linearisation.py``; rod:
-                                    ``derivations/straight_rod.py`` (linearised curvatures)
-Eq. ``constit``                     :mod:`.ring_stability` (energy), ``derivations/``
-Eqs. ``Munder``                     ``derivations/straight_rod.py`` (linearised: ``inst1``)
+Eq. ``frenini``, ``frenet``          ring frames: :mod:`.derivations.ring_linearisation`;
+                                    rod: :mod:`.derivations.straight_rod` (curvatures)
+Eq. ``constit``                     :mod:`.ring_stability` (energy), :mod:`.derivations`
+Eqs. ``Munder``                     :mod:`.derivations.straight_rod` (linearised: ``inst1``,
+                                    decoupling of F_t and alpha); ring: :mod:`.ring_munder`
 Eq. ``inst1`` (rectilinear rod)     :func:`critical_load` via :func:`choose_method`:
                                     collocation :mod:`.straight_rod`, the characteristic
                                     equation :mod:`.characteristic` (mpmath reference and

@@ -12,7 +12,8 @@ under the load q the hoop force F_t = -q R (Eq. ``Munder``, third and fourth lin
 Perturbation: the frame is rotated by a small rotation vector theta(s), d_i = exp(theta x) d_i0,
 the centreline displaced by y(s) with R' = d_3 (inextensible, unshearable).  Because the base
 state is stress-free, the second variation of the elastic energy only needs the first-order
-change of the torsions, which is (derived and checked in ``derivations/ring_linearisation.py``)
+change of the torsions, which is (derived and checked in
+:mod:`spectral_rod.derivations.ring_linearisation`)
 
     dw1 = theta'.v0,   dw2 = -theta'.u0,   dw3 = theta'.t0.
 

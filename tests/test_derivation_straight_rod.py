@@ -21,12 +21,7 @@ CHANGES_P = ("factor_one", "sign_flipped")
 
 
 def _load_derivation() -> ModuleType:
-    path = ROOT / "derivations" / "straight_rod.py"
-    spec = importlib.util.spec_from_file_location("straight_rod_derivation", path)
-    assert spec is not None and spec.loader is not None
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
+    return importlib.import_module("spectral_rod.derivations.straight_rod")
 
 
 @pytest.fixture(scope="module")

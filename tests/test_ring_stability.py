@@ -28,12 +28,7 @@ ROOT = Path(__file__).resolve().parent.parent
 
 
 def _load_derivation() -> ModuleType:
-    path = ROOT / "derivations" / "ring_linearisation.py"
-    spec = importlib.util.spec_from_file_location("ring_linearisation", path)
-    assert spec is not None and spec.loader is not None
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
+    return importlib.import_module("spectral_rod.derivations.ring_linearisation")
 
 
 @pytest.fixture(scope="module")

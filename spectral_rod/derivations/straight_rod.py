@@ -1,7 +1,7 @@
 r"""Machine-checked derivation of Eq. ``inst1`` (the twisted straight rod) and its variants.
 
-Run ``python derivations/straight_rod.py`` to print the results and the variant table; tests
-import :func:`derive` (by path) and :func:`variant_table`.
+Run ``python -m spectral_rod.derivations.straight_rod`` to print the results and the variant
+table; the tests and the claims ledger call :func:`derive` and :func:`variant_table`.
 
 Setting (Drozdov & Rabin, section "Stability of a rectilinear rod"): Eq. ``frenini`` frame
 u0 = cos(Omega) e1 + sin(Omega) e2, v0 = -sin(Omega) e1 + cos(Omega) e2, t0 = e3 with

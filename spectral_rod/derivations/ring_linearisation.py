@@ -1,7 +1,7 @@
 """Machine-checked derivation of the linearised stability problem of the twisted ring.
 
-Run ``python derivations/ring_linearisation.py`` to print the operator and the checks; tests import
-:func:`derive` (by path) and compare the numerical operator of
+Run ``python -m spectral_rod.derivations.ring_linearisation`` to print the operator and the
+checks; tests call :func:`derive` and compare the numerical operator of
 ``spectral_rod.ring_stability`` against its output at random parameter values.
 
 Setting (Drozdov & Rabin, section "Stability of a ring"): centreline R0 = R e_r, t0 = e_phi,
