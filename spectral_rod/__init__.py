@@ -95,6 +95,7 @@ _EXPORTS = {
     "ring_formulation_agreement": "ring_munder",
     "homogenised_limit": "ring_closed_forms", "in_plane_untwisted": "ring_closed_forms",
     "out_of_plane_supremum": "ring_closed_forms", "out_of_plane_untwisted": "ring_closed_forms",
+    "rectangle_torsion_ratio": "cross_section",
     "non_planarity": "measures", "local_maxima": "measures", "family_switches": "measures",
     "increasing_up_to": "measures", "settling_point": "measures",
     "ring_buckling": "ring_stability", "ring_critical_load": "ring_stability",

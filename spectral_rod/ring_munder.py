@@ -677,7 +677,8 @@ def ring_formulation_agreement(cases: Iterable[Mapping[str, object] | tuple] = A
     """Both formulations on each case (N, nu[, e_ratio[, load]]) (tuples or dicts).
 
     Returns one dict per case: N, nu, e_ratio, load, q_galerkin (the energy formulation,
-    :func:`spectral_rod.ring_critical_load`), q_munder (this module), rel_diff, max_frequency
+    :func:`spectral_rod.ring_critical_load`), q_munder (this module), rel_diff, the critical
+    mode's kind by each (kind_galerkin, kind_munder), max_frequency
     and n_unknowns (this module's final resolution), galerkin_max_frequency, t_galerkin and
     t_munder (wall-clock seconds).
     """
@@ -694,6 +695,7 @@ def ring_formulation_agreement(cases: Iterable[Mapping[str, object] | tuple] = A
         rows.append({"N": mb.N, "nu": mb.nu, "e_ratio": mb.e_ratio, "load": mb.load_model,
                      "q_galerkin": ref.load, "q_munder": mb.load,
                      "rel_diff": abs(mb.load - ref.load) / abs(ref.load),
+                     "kind_galerkin": ref.kind, "kind_munder": mb.kind,
                      "max_frequency": mb.max_frequency, "n_unknowns": mb.n_unknowns,
                      "galerkin_max_frequency": ref.max_frequency,
                      "t_galerkin": t1 - t0, "t_munder": t2 - t1})
