@@ -18,7 +18,7 @@ from typing import Any
 
 from spectral_rod.io import write_text
 
-VERDICTS = ("holds", "holds approximately", "fails")
+VERDICTS = ("holds", "holds approximately", "fails", "inconclusive")
 
 
 @dataclass(frozen=True)
@@ -32,6 +32,8 @@ class Claim:
     scene: str
     figure: str | None = None
     numbers: dict[str, Any] = field(default_factory=dict)
+    #: the independent methods behind the verdict: {"name": ..., "formulation": ...}
+    methods: list[dict[str, str]] = field(default_factory=list)
 
     def __post_init__(self) -> None:
         if self.verdict not in VERDICTS:
