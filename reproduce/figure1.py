@@ -192,7 +192,8 @@ def readme_sentence(fx: Forensics) -> str:
          f"(to the 0.01 print quantum) what the authors' procedure gives from the converged p* "
          f"-- {_run_phrase(fx)} -- so digitised − p* lies in [{ok_dev.min():.1e}, "
          f"{ok_dev.max():.1e}] there (one scan step, plus the print rounding). The other "
-         f"{len(p) - n_ok} are hand-typed where that procedure fails: straight "
+         f"{len(p) - n_ok} were inserted separately (LaTeX lines without the program's "
+         f"trailing blank) where that procedure fails: straight "
          f"lines across the imaginary-β₁ window ({sum(c['points'] for c in win)} points, up to "
          f"{max(c['max_abs_deviation'] for c in win):.1e} off)")
     if dbl:
@@ -313,13 +314,13 @@ def draw_forensics(fx: Forensics):
 
 def _hypothesis_rows(fx: Forensics) -> list[str]:
     rows = ["| hypothesis | reproduced | ν = 1.1 | ν = 1.3 | ν = 1.5 | below / in / above window "
-            "| no value (hand-typed) |", "|---|---|---|---|---|---|---|"]
+            "| no value (edited lines) |", "|---|---|---|---|---|---|---|"]
     p = fx.points
-    hand = p["hand_typed"].to_numpy(dtype=bool) if "hand_typed" in p else None
+    hand = p["edited"].to_numpy(dtype=bool) if "edited" in p else None
     for h in sorted(fx.hypotheses, key=lambda h: -int(h.ok.sum())):
         j = h.summary(p["nu"].to_numpy(), p["range"].to_numpy(), hand)
         rng = " / ".join(str(sum(j["by_range"][str(n)][r][0] for n in CURVE_NU)) for r in RANGES)
-        nv = f"{j['no_value']} ({j['no_value_hand_typed']})" if j["no_value"] else "0"
+        nv = f"{j['no_value']} ({j['no_value_edited']})" if j["no_value"] else "0"
         rows.append(f"| `{j['name']}` | {j['reproduced_exactly']} | {j['by_curve']['1.1']} | "
                     f"{j['by_curve']['1.3']} | {j['by_curve']['1.5']} | {rng} | {nv} |")
     return rows
@@ -357,7 +358,7 @@ def forensics_section(fx: Forensics, claim: Claim, seconds: float) -> list[str]:
              "", f"**Best model:** `{fx.best.name}` -- {fx.best.description}. It reproduces "
              f"**{int(p['ok'].sum())} of {len(p)}** points exactly. Where the scan yields no "
              "value it predicts a failure of the authors' procedure; a quantisation model "
-             "always yields a value, so it can also match hand-typed points by coincidence "
+             "always yields a value, so it can also match inserted points by coincidence "
              "(compare the two two-run rows).", "", *_hypothesis_rows(fx), "",
              "Where the two runs meet (the switch is fitted per curve):", "",
              "| ν | low run: last reproduced Ω | last point ≤ Ω_a | window (Ω_a, Ω_b) | "
@@ -381,13 +382,15 @@ def forensics_section(fx: Forensics, claim: Claim, seconds: float) -> list[str]:
     lat = fx.latex_summary()
     if lat:
         retyped = ", ".join(f"{r['twist_angle']:.3f} (ν = {r['nu']})"
-                            for r in lat["hand_typed_reproduced"])
-        lines += ["", f"LaTeX lines typed by hand (no trailing blank; {lat['with_trailing_blank']}"
-                  f" of {lat['lines']} lines have one): {lat['hand_typed']}, of which "
-                  f"{lat['hand_typed_in_clusters']} form the clusters; of the other "
-                  f"{len(lat['hand_typed_reproduced'])}, "
-                  f"{sum(r['reproduced'] for r in lat['hand_typed_reproduced'])} carry exactly "
-                  f"the model's value (retyped): Ω = {retyped}."]
+                            for r in lat["edited_reproduced"])
+        lines += ["", f"LaTeX lines inserted separately (no trailing blank; "
+                  f"{lat['with_trailing_blank']} of {lat['lines']} lines have one; "
+                  f"{lat['fixed_format']} of {lat['lines']} share the fixed-width format "
+                  f"`{lat['format']}`): {lat['edited']}, of which "
+                  f"{lat['edited_in_clusters']} form the clusters; of the other "
+                  f"{len(lat['edited_reproduced'])}, "
+                  f"{sum(r['reproduced'] for r in lat['edited_reproduced'])} carry exactly "
+                  f"the model's value (rewritten): Ω = {retyped}."]
     lines += ["", "**Missing grid points:**", ""]
     lines += _missing_rows(fx) or ["* none"]
     lines += ["", "Predicted failures of the procedure (grid points where the covering run's "

@@ -30,8 +30,8 @@ Models tested
 
 The *best* model is the two-run combination of scan (procedure) hypotheses that accounts for
 the most points: reproduced exactly, or -- where the scan yields no value -- the LaTeX line was
-typed by hand (:meth:`Hypothesis.credit`). A procedure must say where it fails; a quantisation
-model yields a value everywhere and so also matches hand-typed values by coincidence (its best
+inserted separately (:meth:`Hypothesis.credit`). A procedure must say where it fails; a quantisation
+model yields a value everywhere and so also matches inserted values by coincidence (its best
 two-run combination is reported alongside, with the count of such coincidences visible in the
 window column of the table).
 
@@ -43,9 +43,9 @@ picture are *missing points*. Each gets computed evidence: the imaginary-beta_1 
 (:func:`spectral_rod.imaginary_beta1_window`, and X_- < 0 at the point itself), both families'
 lowest roots in one scan step (a double sign change, invisible to a sign scan; family crossings
 :func:`spectral_rod.asymptotics.crossing_closed_form`), the scan's own result there, and the
-LaTeX lines themselves (lines typed without the trailing blank the program wrote, blank-line
+LaTeX lines themselves (lines without the trailing blank of the program's lines, blank-line
 block boundaries, off-grid x) and what was printed instead (a straight line between the
-flanking computed points to the print precision -- :func:`straight_line`, typing slips set
+flanking computed points to the print precision -- :func:`straight_line`, slips set
 aside --, a flanking value, or the lattice point below both roots).
 """
 
@@ -62,6 +62,7 @@ from numpy.typing import NDArray
 from scipy.optimize import brentq, linprog
 
 from spectral_rod.asymptotics import crossing_closed_form, imaginary_beta1_window
+from spectral_rod.critical import critical_load
 from spectral_rod.figure_data import CURVE_NU
 from spectral_rod.large_twist import determinants
 
@@ -88,6 +89,7 @@ __all__ = [
     "fit_quantisation",
     "fit_switch",
     "missing_grid_points",
+    "off_grid_runs",
     "picture_environment",
     "picture_lines",
     "point_causes",
@@ -118,13 +120,15 @@ DOT = 1.0
 ROUNDINGS = ("nearest", "floor", "ceil", "truncate")
 MANTISSAS = (1.0, 2.0, 2.5, 4.0, 5.0)
 #: Non-reproduced runs separated by at most this many reproduced points form one cluster.
-#: Why: inside a hand-typed block a model that always yields a value (a quantisation model)
-#: agrees with a typed value by chance with probability about (print quantum)/(its lattice step
+#: Why: inside an inserted block a model that always yields a value (a quantisation model)
+#: agrees with an inserted value by chance with probability about (print quantum)/(its lattice step
 #: in y), 0.01/0.04 ... 0.01/0.08, so a run can be split by one or two coincidences. For the
 #: scan model of Figure 1 the clusters are contiguous: the same clusters for gaps 0 to 5
 #: (measured when this was written).
 MERGE_GAP = 2
 _PUT_LINE = re.compile(r"^\\put\(\s*([-+0-9.]+)\s*,\s*([-+0-9.]+)\s*\)\s*\{\\circle\*")
+#: The fixed-width format of the picture's point lines (Fortran-like F7.2, F8.2 fields).
+PUT_FORMAT = "\\put(%7.2f,%8.2f){\\circle*{1.0}}"
 
 
 # ------------------------------------------------------------------------------------------
@@ -149,8 +153,9 @@ def picture_lines(tex: str) -> pd.DataFrame:
 
     Columns: curve (1..3, a new curve where x falls back), line (1-based line number within
     the picture environment), picture_x, picture_y, trailing_blank (the line ends in a blank,
-    as every line the authors' program wrote does), after_blank_line (the previous line is
-    empty: a block boundary), text (the line verbatim).
+    as most lines do), after_blank_line (the previous line is empty: a block boundary),
+    fixed_format (the line, without trailing blanks, is exactly :data:`PUT_FORMAT`), text (the
+    line verbatim).
     """
     env = picture_environment(tex).splitlines()
     rows, curve, last_x = [], 0, math.inf
@@ -163,11 +168,12 @@ def picture_lines(tex: str) -> pd.DataFrame:
             curve += 1
         last_x = x
         rows.append((curve, k + 1, x, y, text.endswith(" "), k > 0 and not env[k - 1].strip(),
-                     text))
+                     text.rstrip(" ") == PUT_FORMAT % (x, y), text))
     if curve != len(CURVE_NU):
         raise ValueError(f"expected {len(CURVE_NU)} curves in the picture, found {curve}")
     return pd.DataFrame(rows, columns=["curve", "line", "picture_x", "picture_y",
-                                       "trailing_blank", "after_blank_line", "text"])
+                                       "trailing_blank", "after_blank_line", "fixed_format",
+                                       "text"])
 
 
 def missing_grid_points(x: NDArray[np.float64], step: float | None = None
@@ -186,6 +192,28 @@ def missing_grid_points(x: NDArray[np.float64], step: float | None = None
     present = np.round(x[on] / step).astype(int)
     missing = grid[~np.isin(np.arange(1, grid.size + 1), present)]
     return missing, x[~on], step
+
+
+def off_grid_runs(x: NDArray[np.float64], step: float) -> list[dict]:
+    """Runs of consecutive off-grid x (source order) and how they subdivide their gap.
+
+    For each run: its first/last x and count, the on-grid neighbours left/right, the spacing
+    (right - left)/(count + 1) of an equal subdivision, and the largest |x - subdivision|.
+    Example: x = [0.25, 0.33, 0.42, 0.5], step 0.25 -> one run of 2 with spacing 0.0833.
+    """
+    x = np.asarray(x, dtype=float)
+    off = np.abs(x / step - np.round(x / step)) >= 1e-6
+    runs = []
+    for first, last in find_runs(off, merge_gap=0):
+        if first == 0 or last == x.size - 1:
+            continue  # no on-grid neighbour on one side
+        left, right, n = x[first - 1], x[last + 1], last - first + 1
+        sub = left + (right - left) * np.arange(1, n + 1) / (n + 1)
+        runs.append({"first": float(x[first]), "last": float(x[last]), "count": n,
+                     "left": float(left), "right": float(right),
+                     "spacing": float((right - left) / (n + 1)),
+                     "max_deviation": float(np.max(np.abs(x[first:last + 1] - sub)))})
+    return runs
 
 
 # ------------------------------------------------------------------------------------------
@@ -331,18 +359,18 @@ class Hypothesis:
     ok: NDArray[np.bool_]
     description: str = ""
 
-    def credit(self, hand_typed: NDArray[np.bool_] | None) -> NDArray[np.bool_]:
+    def credit(self, edited: NDArray[np.bool_] | None) -> NDArray[np.bool_]:
         """Points the hypothesis accounts for: reproduced, or no value predicted where the
-        LaTeX line was typed by hand (the procedure's failure seen in the source)."""
-        if hand_typed is None:
+        LaTeX line was inserted separately (the procedure's failure seen in the source)."""
+        if edited is None:
             return self.ok
-        return self.ok | (np.isnan(self.y_model) & hand_typed)
+        return self.ok | (np.isnan(self.y_model) & edited)
 
     def summary(self, nu: NDArray[np.float64], ranges: NDArray[np.str_],
-                hand_typed: NDArray[np.bool_] | None = None) -> dict:
+                edited: NDArray[np.bool_] | None = None) -> dict:
         """JSON row: name, variable, step, rounding, reproduced_exactly, points, by_curve,
         by_range (per curve: {range: [reproduced, points]}), no_value (points where the
-        procedure yields nothing), no_value_hand_typed (of those, lines typed by hand)."""
+        procedure yields nothing), no_value_edited (of those, lines inserted separately)."""
         by_curve = {str(n): int(self.ok[nu == n].sum()) for n in CURVE_NU}
         by_range = {str(n): {r: [int(self.ok[(nu == n) & (ranges == r)].sum()),
                                  int(((nu == n) & (ranges == r)).sum())] for r in RANGES}
@@ -351,8 +379,8 @@ class Hypothesis:
                 "rounding": self.rounding, "reproduced_exactly": int(self.ok.sum()),
                 "points": int(self.ok.size), "by_curve": by_curve, "by_range": by_range,
                 "no_value": int(np.isnan(self.y_model).sum()),
-                "no_value_hand_typed": (None if hand_typed is None else
-                                        int((np.isnan(self.y_model) & hand_typed).sum())),
+                "no_value_edited": (None if edited is None else
+                                        int((np.isnan(self.y_model) & edited).sum())),
                 "description": self.description}
 
 
@@ -602,23 +630,25 @@ def scan_hypotheses(twist: NDArray, nu: NDArray, picture_y: NDArray, steps: dict
     return hyps, scans
 
 
-def variant_hypotheses(best_scan: ScanResult, best_q: Hypothesis, p_true: NDArray,
+def variant_hypotheses(scans: list[ScanResult], best_q: Hypothesis, p_true: NDArray,
                        twist: NDArray, nu: NDArray, picture_y: NDArray,
                        p_star_fn: Callable[[NDArray, NDArray], NDArray]) -> list[Hypothesis]:
     """Single precision, the continued (cosh/sinh) determinant, pi approximations, twist shifts.
 
-    best_scan: the scan reproducing the most points (its upper-end report); best_q: the best
-    quantisation hypothesis (a lambda-type variable for the pi approximations).
+    scans: the scans whose upper-end report is varied (single precision, continued
+    determinant); best_q: the best quantisation hypothesis, varied in the normalisation (pi
+    approximations in p* = lambda/pi^2) and in the twist (x shifted by X_SHIFTS).
     """
-    start = best_scan.variable != "lambda"
+    starts = dict(SCAN_VARIABLES)
     out = []
-    for label, kw, note in (
-            (" single", {"dtype": np.float32}, " (single precision)"),
-            (" continued", {"real_wavenumbers": False},
-             " (determinant continued to X_- < 0 by cosh/sinh: imaginary beta_1 handled)")):
-        sc = scan_sign_change(twist, nu, best_scan.variable, best_scan.step,
-                              start_at_zero=start, **kw)
-        out.append(_scan_hypothesis(sc, "upper", twist, nu, picture_y, label, note))
+    for base in scans:
+        for label, kw, note in (
+                (" single", {"dtype": np.float32}, " (single precision)"),
+                (" continued", {"real_wavenumbers": False},
+                 " (determinant continued to X_- < 0 by cosh/sinh: imaginary beta_1 handled)")):
+            sc = scan_sign_change(twist, nu, base.variable, base.step,
+                                  start_at_zero=starts[base.variable], **kw)
+            out.append(_scan_hypothesis(sc, "upper", twist, nu, picture_y, label, note))
     var = VARIABLES[best_q.variable]
     lam = _PI2 * var.inverse(quantise(var.forward(p_true, twist, nu), best_q.step,
                                       best_q.rounding), twist, nu)
@@ -638,17 +668,17 @@ def variant_hypotheses(best_scan: ScanResult, best_q: Hypothesis, p_true: NDArra
 
 
 def best_two_runs(hyps: list[Hypothesis], twist: NDArray, curve: NDArray, label: str = "",
-                  hand_typed: NDArray[np.bool_] | None = None
+                  edited: NDArray[np.bool_] | None = None
                   ) -> tuple[Hypothesis, Hypothesis, Hypothesis, dict[int, tuple[int, int]]]:
     """The pair (low, high) of hypotheses and per-curve switch accounting for the most points.
 
     Every ordered pair is tried with :func:`fit_switch` on each curve (the earliest optimal
-    split is used); a point counts if reproduced or, with `hand_typed` given, if the model
-    yields no value where the line was typed by hand (:meth:`Hypothesis.credit`). Returns
+    split is used); a point counts if reproduced or, with `edited` given, if the model
+    yields no value where the line was inserted separately (:meth:`Hypothesis.credit`). Returns
     (composite, low, high, {curve: (s_first, s_last)}).
     """
     best = None
-    credit = {id(h): h.credit(hand_typed) for h in hyps}
+    credit = {id(h): h.credit(edited) for h in hyps}
     for lo in hyps:
         for hi in hyps:
             if lo is hi:
@@ -681,8 +711,7 @@ def best_two_runs(hyps: list[Hypothesis], twist: NDArray, curve: NDArray, label:
 # ------------------------------------------------------------------------------------------
 
 def _default_p_star(twist: NDArray, nu: NDArray) -> NDArray:
-    from spectral_rod.critical import critical_load  # the converged truth (~1e-14)
-
+    """The converged p* (collocation to 1e-12, the package's production route)."""
     return np.asarray(critical_load(twist, nu, tol=1e-12), dtype=float)
 
 
@@ -769,11 +798,11 @@ def _minimax_line(x: NDArray, y: NDArray) -> tuple[float, float, float]:
 
 def straight_line(x: NDArray, y: NDArray, flank_x: NDArray, flank_y: NDArray,
                   tol: float = PRINT_QUANTUM / 2) -> LineFit:
-    """Is the cluster a straight line (typed by hand) between its flanks, up to rounding?
+    """Is the cluster a straight line between its flanks, up to rounding?
 
     The minimax line through the cluster points and the two flanks; while its residual exceeds
     ``tol`` (+1e-9) the cluster point farthest from the chord between the flanks (computed,
-    trusted points) is set aside as a typing slip and the line refitted. Example: x = [1, 2,
+    trusted points) is set aside as a slip and the line refitted. Example: x = [1, 2,
     3], y = [1.0, 2.5, 3.0], flanks (0, 0), (4, 4) -> on_line = [True, False, True].
     """
     x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
@@ -815,14 +844,14 @@ def point_causes(rows: pd.DataFrame) -> dict[str, NDArray[np.bool_]]:
 
     'imaginary beta_1': X_- < 0 at p* *and* inside the closed-form window (both computations
     must agree); 'double root in one step': both family roots in one step of the run's lattice;
-    'no sign change': the run's real-wavenumber scan finds none; 'hand-typed': the LaTeX line
+    'no sign change': the run's real-wavenumber scan finds none; 'edited line': the LaTeX line
     lacks the program's trailing blank (if the LaTeX lines were given).
     """
     causes = {"imaginary beta_1": (rows["imaginary_beta1"] & rows["in_window"]).to_numpy(),
               "double root in one step": rows["double_root"].to_numpy(dtype=bool),
               "no sign change": ~rows["scan_found"].to_numpy(dtype=bool)}
-    if "hand_typed" in rows:
-        causes["hand-typed"] = rows["hand_typed"].to_numpy(dtype=bool)
+    if "edited" in rows:
+        causes["edited line"] = rows["edited"].to_numpy(dtype=bool)
     return causes
 
 
@@ -852,8 +881,9 @@ def _cause_sentences(rows: pd.DataFrame, causes: dict[str, NDArray[np.bool_]],
                    f"(asymptotics.imaginary_beta1_window)"
                    + (f"; outside it: Ω = {_twists(rows, ~im)}" if (~im).any() else ""))
         if "low" in runs and rows["low_root_below_start"].any():
-            out.append(f"the low-twist run scans {runs['low'].variable} upward from 0, i.e. from "
-                       f"λ = νΩ², and the root lies below that start (λ* < νΩ², μ* < Ω²) at "
+            var = VARIABLES[runs["low"].variable]
+            out.append(f"the low-twist run scans {var.name} ({var.description}) upward from 0,"
+                       f" and the root lies below that start ({var.name} < 0 at p*) at "
                        f"{int(rows['low_root_below_start'].sum())} of {n}")
     dr = causes["double root in one step"]
     if dr.any():
@@ -894,7 +924,7 @@ def _value_sentences(rows: pd.DataFrame, rules: dict[str, NDArray[np.bool_]],
         for i in np.flatnonzero(~fit.on_line):
             line_y = fit.a + fit.b * x[i]
             s += (f"; x = {x[i]:.2f} is printed {y[i]:.2f} where the line gives {line_y:.3f} "
-                  f"({(y[i] - line_y) / PRINT_QUANTUM:+.1f} quanta: a typing slip)")
+                  f"({(y[i] - line_y) / PRINT_QUANTUM:+.1f} quanta: an isolated slip)")
         out.append(s)
     low, flat = rules["lower end of the shared step"], rules["flank value"]
     if low.any():
@@ -911,15 +941,18 @@ def _value_sentences(rows: pd.DataFrame, rules: dict[str, NDArray[np.bool_]],
     return out
 
 
-def _latex_sentence(rows: pd.DataFrame, with_blank: int | None) -> str | None:
+def _latex_sentence(rows: pd.DataFrame, with_blank: int | None,
+                    off_runs: list[dict] | None = None) -> str | None:
     """The LaTeX facts of a cluster's lines; with_blank: how many lines of the whole picture
-    end in the trailing blank (the program's format)."""
-    if "hand_typed" not in rows:
+    end in the trailing blank (the program's format); off_runs: :func:`off_grid_runs` of the
+    curve."""
+    if "edited" not in rows:
         return None
-    n, h = len(rows), int(rows["hand_typed"].sum())
+    n, h = len(rows), int(rows["edited"].sum())
     first, last = int(rows["line"].iloc[0]), int(rows["line"].iloc[-1])
     s = (f"LaTeX (picture lines {first}–{last}): {h} of {n} lines lack the trailing blank "
-         f"that {with_blank} of the picture's lines end in (typed by hand)")
+         f"that {with_blank} of the picture's lines end in (inserted separately from the "
+         f"scan program's output)")
     blank = rows["after_blank_line"].to_numpy(dtype=bool)
     if blank[0]:
         s += "; a blank line precedes the block"
@@ -927,12 +960,13 @@ def _latex_sentence(rows: pd.DataFrame, with_blank: int | None) -> str | None:
         s += "; blank lines inside it before x = " + ", ".join(
             f"{v:.2f}" for v in rows["picture_x"].to_numpy()[1:][blank[1:]])
     off = int(rows["off_grid"].sum())
-    if off:
-        xs = np.sort(rows["picture_x"].to_numpy()[rows["off_grid"].to_numpy()])
-        dx = np.unique(np.round(np.diff(xs), 2))
-        s += (f"; {off} x values are off the regular grid (spacings {', '.join(map(str, dx))}, "
-              f"mean {np.mean(np.diff(xs)):.4f})" if off > 1 else
-              f"; x = {xs[0]:.2f} is off the regular grid")
+    x0, x1 = rows["picture_x"].min(), rows["picture_x"].max()
+    for r in off_runs or []:
+        if off and r["first"] <= x1 and r["last"] >= x0:
+            s += (f"; {off} x values are off the regular grid: the picture's {r['count']} "
+                  f"off-grid x ({r['first']:.2f}…{r['last']:.2f}) divide {r['left']:.2f}…"
+                  f"{r['right']:.2f} into {r['count'] + 1} equal steps of {r['spacing']:.4f} "
+                  f"(to {r['max_deviation']:.4f})")
     return s
 
 
@@ -959,25 +993,27 @@ def _cluster_kind(causes: dict[str, NDArray[np.bool_]]) -> str:
         return "double root in one scan step"
     if causes["no sign change"].any():
         return "no sign change"
-    return "hand-typed" if causes.get("hand-typed", np.zeros(1, bool)).any() else "unexplained"
+    return "edited lines" if causes.get("edited line", np.zeros(1, bool)).any() else "unexplained"
 
 
 def explain_cluster(rows: pd.DataFrame, left: pd.Series | None, right: pd.Series | None,
-                    runs: dict[str, Hypothesis], with_blank: int | None = None) -> dict:
+                    runs: dict[str, Hypothesis], with_blank: int | None = None,
+                    off_runs: list[dict] | None = None) -> dict:
     """The cluster record: where, how big, and why, from the rows' computed columns.
 
     rows: the cluster's data sites (columns of :func:`site_physics` and :func:`_run_scans`,
     plus run, double_root, scan_found, ok, p_digitised and the LaTeX columns if known);
     left/right: the flanking reproduced points; with_blank: lines of the picture in the
-    program's format (for the text). 'explained' is True iff every point has a computed cause
-    or is hand-typed; 'window_points' lists only points inside the window.
+    program's format, off_runs: the curve's :func:`off_grid_runs` (both for the text).
+    'explained' is True iff every point has a computed cause or is an edited line;
+    'window_points' lists only points inside the window.
     """
     nu = float(rows["nu"].iloc[0])
     causes = point_causes(rows)
     rules, fit = value_rules(rows, left, right, runs)
     covered = np.logical_or.reduce(list(causes.values()))
     dev = np.abs(rows["p_digitised"] - rows["p_true"]).to_numpy()
-    physics = [v for k, v in causes.items() if k != "hand-typed"]
+    physics = [v for k, v in causes.items() if k != "edited line"]
     parts = [f"ν = {nu}, Ω(L) = {rows['twist_angle'].min():.3f}…"
              f"{rows['twist_angle'].max():.3f}: {len(rows)} points, "
              f"{int((~rows['ok']).sum())} not reproduced by the best model, "
@@ -987,7 +1023,8 @@ def explain_cluster(rows: pd.DataFrame, left: pd.Series | None, right: pd.Series
     values = _value_sentences(rows, rules, fit, left, right)
     if values:
         parts.append("Printed instead: " + "; ".join(values) + ".")
-    for extra in (_uncaused_sentence(rows, causes, runs), _latex_sentence(rows, with_blank)):
+    for extra in (_uncaused_sentence(rows, causes, runs),
+                  _latex_sentence(rows, with_blank, off_runs)):
         if extra:
             parts.append(extra if extra.endswith(".") else extra + ".")
     return {"nu": nu, "twist_from": float(rows["twist_angle"].min()),
@@ -998,8 +1035,8 @@ def explain_cluster(rows: pd.DataFrame, left: pd.Series | None, right: pd.Series
             "window_points": _twists(rows, causes["imaginary beta_1"]),
             "double_root_points": _twists(rows, causes["double root in one step"]),
             "no_sign_change_points": _twists(rows, causes["no sign change"]),
-            "hand_typed_points": (_twists(rows, causes["hand-typed"])
-                                  if "hand-typed" in causes else None),
+            "edited_points": (_twists(rows, causes["edited line"])
+                                  if "edited line" in causes else None),
             "crossing": (_nearest_crossing(nu, float(rows["twist_angle"].min()),
                                            float(rows["twist_angle"].max()))
                          if causes["double root in one step"].any() else None),
@@ -1020,7 +1057,7 @@ def explain_missing(row: pd.Series, sites: pd.DataFrame, runs: dict[str, Hypothe
     one = row.to_frame().T.reset_index(drop=True)
     for c in ("imaginary_beta1", "in_window", "double_root", "scan_found"):
         one[c] = one[c].astype(bool)
-    causes = point_causes(one.assign(hand_typed=False))
+    causes = point_causes(one.assign(edited=False))
     parts = _cause_sentences(one, causes, runs, nu)
     p_s, p_a = float(row["p_sym"]), float(row["p_anti"])
     text = (f"ν = {nu}, Ω(L) = {t:.3f} (x = {row['picture_x']:.2f}) is absent from the picture. "
@@ -1039,13 +1076,13 @@ def explain_missing(row: pd.Series, sites: pd.DataFrame, runs: dict[str, Hypothe
         text += (f"The picture has {len(off)} off-grid points of this curve within 0.25 rad "
                  f"(x = {off['picture_x'].min():.2f}…{off['picture_x'].max():.2f}) instead.")
     else:
-        text += "No line was written for it (no hand-typed substitute)."
+        text += "No line was written for it (no inserted substitute)."
     return {"nu": nu, "twist_angle": t, "picture_x": float(row["picture_x"]),
             "explanation": text.strip(),
-            "causes": [k for k, v in causes.items() if v.any() and k != "hand-typed"],
+            "causes": [k for k, v in causes.items() if v.any() and k != "edited line"],
             "crossing": (_nearest_crossing(nu, t, t) if causes["double root in one step"].any()
                          else None),
-            "explained": bool(any(v.any() for k, v in causes.items() if k != "hand-typed"))}
+            "explained": bool(any(v.any() for k, v in causes.items() if k != "edited line"))}
 
 
 def _attach_lines(points: pd.DataFrame, lines: pd.DataFrame | None) -> pd.DataFrame:
@@ -1060,8 +1097,9 @@ def _attach_lines(points: pd.DataFrame, lines: pd.DataFrame | None) -> pd.DataFr
                          "(different file or order)")
     out = points.copy()
     out["line"] = lines["line"].to_numpy()
-    out["hand_typed"] = ~lines["trailing_blank"].to_numpy(dtype=bool)
+    out["edited"] = ~lines["trailing_blank"].to_numpy(dtype=bool)
     out["after_blank_line"] = lines["after_blank_line"].to_numpy(dtype=bool)
+    out["fixed_format"] = lines["fixed_format"].to_numpy(dtype=bool)
     return out
 
 
@@ -1128,16 +1166,17 @@ class Forensics:
         return p[~p["ok"] & (p["cluster"] < 0)]
 
     def latex_summary(self) -> dict | None:
-        """How many lines were typed by hand, and where those not in a cluster are."""
+        """How many lines were inserted separately, and where those not in a cluster are."""
         p = self.points
-        if "hand_typed" not in p:
+        if "edited" not in p:
             return None
-        hand = p["hand_typed"].to_numpy(dtype=bool)
+        hand = p["edited"].to_numpy(dtype=bool)
         rest = p[hand & (p["cluster"] < 0)]
         return {"lines": len(p), "with_trailing_blank": int((~hand).sum()),
-                "hand_typed": int(hand.sum()),
-                "hand_typed_in_clusters": int((hand & (p["cluster"] >= 0)).sum()),
-                "hand_typed_reproduced": [{"nu": float(r["nu"]),
+                "format": PUT_FORMAT, "fixed_format": int(p["fixed_format"].sum()),
+                "edited": int(hand.sum()),
+                "edited_in_clusters": int((hand & (p["cluster"] >= 0)).sum()),
+                "edited_reproduced": [{"nu": float(r["nu"]),
                                            "twist_angle": float(r["twist_angle"]),
                                            "reproduced": bool(r["ok"])}
                                           for _, r in rest.iterrows()]}
@@ -1145,7 +1184,7 @@ class Forensics:
     def to_json(self) -> dict:
         p = self.points
         nu, ranges = p["nu"].to_numpy(), p["range"].to_numpy()
-        hand = p["hand_typed"].to_numpy(dtype=bool) if "hand_typed" in p else None
+        hand = p["edited"].to_numpy(dtype=bool) if "edited" in p else None
         return {"hypotheses": [h.summary(nu, ranges, hand) for h in self.hypotheses],
                 "best": self.best.name, "best_description": self.best.description,
                 "runs": {r: h.name for r, h in self.runs.items()},
@@ -1215,15 +1254,18 @@ def _cluster_all(sites: pd.DataFrame, runs: dict[str, Hypothesis]) -> list[dict]
     """Find and explain the clusters of every curve; sets sites['cluster'] in place."""
     clusters = []
     sites["cluster"] = -1
-    with_blank = (int((~sites.loc[sites["in_data"], "hand_typed"].astype(bool)).sum())
-                  if "hand_typed" in sites else None)
+    with_blank = (int((~sites.loc[sites["in_data"], "edited"].astype(bool)).sum())
+                  if "edited" in sites else None)
     for c in range(1, len(CURVE_NU) + 1):
         idx = np.flatnonzero(sites["in_data"].to_numpy() & (sites["curve"] == c).to_numpy())
         rows = sites.iloc[idx]
         ok = rows["ok"].to_numpy(dtype=bool)
+        x = rows["picture_x"].to_numpy()
+        off_runs = off_grid_runs(x, missing_grid_points(x)[2])
         for first, last in find_runs(~ok):
             left, right = _flanks(rows, first, last, ok)
-            rec = explain_cluster(rows.iloc[first:last + 1], left, right, runs, with_blank)
+            rec = explain_cluster(rows.iloc[first:last + 1], left, right, runs, with_blank,
+                                  off_runs)
             sites.iloc[idx[first:last + 1], sites.columns.get_loc("cluster")] = len(clusters)
             clusters.append(rec)
     return clusters
@@ -1250,15 +1292,16 @@ def analyse_figure1(points: pd.DataFrame, lines: pd.DataFrame | None = None, *,
     ceil_steps = {v: next(h.step for h in quant if h.variable == v and h.rounding == "ceil")
                   for v, _ in SCAN_VARIABLES}
     scan_h, scans = scan_hypotheses(t, nu, y, ceil_steps)
-    best_scan = max((h for h in scan_h if h.rounding == "bracket upper"), key=lambda h: h.ok.sum())
+    upper = sorted((h for h in scan_h if h.rounding == "bracket upper"),
+                   key=lambda h: -int(h.ok.sum()))
     best_q = max(quant, key=lambda h: h.ok.sum())
-    singles = quant + scan_h + variant_hypotheses(scans[best_scan.variable], best_q, p, t, nu, y,
-                                                  p_star_fn)
+    singles = quant + scan_h + variant_hypotheses([scans[h.variable] for h in upper[:2]],
+                                                  best_q, p, t, nu, y, p_star_fn)
     curve = pts["curve"].to_numpy()
-    hand = pts["hand_typed"].to_numpy(dtype=bool) if "hand_typed" in pts else None
+    hand = pts["edited"].to_numpy(dtype=bool) if "edited" in pts else None
     comp_all = best_two_runs(singles, t, curve, " (any hypotheses)")[0]
     # the best model is a *procedure*: it also says where no value can be produced, and is
-    # credited where that coincides with a line typed by hand
+    # credited where that coincides with a line inserted separately
     procedures = [h for h in singles if h.rounding.startswith("bracket")]
     best, lo, hi, splits = best_two_runs(procedures, t, curve, " (sign-change scans)", hand)
     hyps = [*singles, comp_all, best]

@@ -35,6 +35,7 @@ from spectral_rod.figure1_forensics import (
     fit_quantisation,
     fit_switch,
     missing_grid_points,
+    off_grid_runs,
     picture_environment,
     picture_lines,
     printed,
@@ -252,7 +253,7 @@ def test_cluster_finder_recovers_inserted_patches():
     assert step == 0.25 and np.allclose(missing, [10 * om[200]]) and off.size == 0
 
 
-def test_straight_line_finds_a_chord_and_its_typing_slip():
+def test_straight_line_finds_a_chord_and_its_slip():
     x = np.arange(1.0, 11.0)
     y = np.round(2.0 + 0.3 * x, 2)
     y[4] += 0.05
@@ -266,6 +267,9 @@ def test_fit_switch_and_missing_grid():
     assert step == 0.25 and list(missing) == [0.75] and list(off) == [1.1]
     with pytest.raises(ValueError, match="sorted"):
         fit_switch(np.array([1.0, 0.0]), np.ones(2), np.ones(2))
+    (run,) = off_grid_runs(np.array([0.25, 0.33, 0.42, 0.5]), 0.25)
+    assert run["count"] == 2 and run["spacing"] == pytest.approx(0.25 / 3)
+    assert run["max_deviation"] < 0.005
 
 
 # ------------------------------------------------------------------------------------------
