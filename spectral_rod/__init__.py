@@ -35,7 +35,9 @@ limit at large twist                :func:`large_twist_limit`, :func:`large_twis
                                     (:mod:`.asymptotics`)
 "intrinsically three-dimensional"   :func:`non_planarity` (:mod:`.measures`)
 Figure 1                            :func:`load_figure1` (:mod:`.figure_data`, the digitised
-                                    points shipped in ``spectral_rod/data``)
+                                    points shipped in ``spectral_rod/data``);
+                                    :func:`analyse_figure1` (:mod:`.figure1_forensics`: how
+                                    every printed point was made)
 ring, q_cr = 3 E1 I1/R^3 (I1 = I2)  :mod:`.ring_closed_forms` (untwisted ring, both planes)
 Eq. ``crit2``, threshold twist      :func:`ring_formula_load`, :func:`threshold_twist`
                                     (:mod:`.ring_formula`)
@@ -56,7 +58,7 @@ from typing import Any
 
 __version__ = "0.1.0"
 
-#: public name -> module that defines it
+#: public name -> module that defines it ("module:attribute" where the names differ)
 _EXPORTS = {
     "BucklingMode": "results", "CriticalLoad": "results",
     "ConvergenceError": "errors", "ConvergenceWarning": "errors",
@@ -96,6 +98,14 @@ _EXPORTS = {
     "homogenised_limit": "ring_closed_forms", "in_plane_untwisted": "ring_closed_forms",
     "out_of_plane_supremum": "ring_closed_forms", "out_of_plane_untwisted": "ring_closed_forms",
     "rectangle_torsion_ratio": "cross_section",
+    "figure1_picture": "figure_data",
+    "Forensics": "figure1_forensics", "analyse_figure1": "figure1_forensics",
+    "picture_lines": "figure1_forensics",
+    "FORENSICS_DOT": "figure1_forensics:DOT",
+    "FORENSICS_PRINT_QUANTUM": "figure1_forensics:PRINT_QUANTUM",
+    "FORENSICS_RANGES": "figure1_forensics:RANGES",
+    "FORENSICS_VARIABLES": "figure1_forensics:VARIABLES",
+    "FORENSICS_Y_PER_P": "figure1_forensics:Y_PER_P",
     "non_planarity": "measures", "local_maxima": "measures", "family_switches": "measures",
     "increasing_up_to": "measures", "settling_point": "measures",
     "ring_buckling": "ring_stability", "ring_critical_load": "ring_stability",
@@ -106,10 +116,11 @@ __all__ = sorted(_EXPORTS)
 
 def __getattr__(name: str) -> Any:
     """Import the defining module of a public name on first use (PEP 562)."""
-    module = _EXPORTS.get(name)
-    if module is None:
+    target = _EXPORTS.get(name)
+    if target is None:
         raise AttributeError(f"module 'spectral_rod' has no attribute {name!r}")
-    value = getattr(importlib.import_module(f"spectral_rod.{module}"), name)
+    module, _, attr = target.partition(":")
+    value = getattr(importlib.import_module(f"spectral_rod.{module}"), attr or name)
     globals()[name] = value
     return value
 

@@ -71,6 +71,7 @@ __all__ = [
     "characteristic_critical_load",
     "characteristic_determinant",
     "characteristic_double",
+    "combine_determinant",
     "determinant",
     "determinants",
     "double_error_estimate",
@@ -107,7 +108,7 @@ def entire_cs_double(x: ArrayLike, t: ArrayLike = 0.5
     return c, np.where(r == 0, t, s)
 
 
-def _combine(family: str, lam: Any, mu: Any, om2: Any, roots: tuple[Any, Any],
+def combine_determinant(family: str, lam: Any, mu: Any, om2: Any, roots: tuple[Any, Any],
              cs: tuple[tuple[Any, Any], tuple[Any, Any]]) -> Any:
     """D_sym or D_anti from the roots (X_-, X_+) and their (C, S) (module docstring)."""
     (xm, xp), ((cm, sm), (cp, sp)) = roots, cs
@@ -121,7 +122,8 @@ def determinant(family: str, lam: mp.mpf, om: mp.mpf, nu: mp.mpf) -> mp.mpf:
     check_family(family)
     mu = lam / nu
     roots = characteristic_roots(lam, mu, om, sqrt=mp.sqrt)
-    return _combine(family, lam, mu, om**2, roots, (entire_cs(roots[0]), entire_cs(roots[1])))
+    cs = (entire_cs(roots[0]), entire_cs(roots[1]))
+    return combine_determinant(family, lam, mu, om**2, roots, cs)
 
 
 def determinants(p: ArrayLike, twist_angle: float, nu: float
@@ -132,7 +134,8 @@ def determinants(p: ArrayLike, twist_angle: float, nu: float
     roots = characteristic_roots(lam, mu, float(twist_angle))
     cs = (entire_cs_double(roots[0]), entire_cs_double(roots[1]))
     om2 = float(twist_angle) ** 2
-    return tuple(_combine(f, lam, mu, om2, roots, cs) for f in FAMILIES)  # type: ignore[return-value]
+    return tuple(combine_determinant(f, lam, mu, om2, roots, cs)  # type: ignore[return-value]
+                 for f in FAMILIES)
 
 
 @dataclass(frozen=True)

@@ -59,6 +59,13 @@ def figure1_path() -> Path:
     return Path(str(resources.files("spectral_rod") / "data" / "figure1_digitised.csv"))
 
 
+def figure1_picture() -> str:
+    """The paper's Figure 1 picture environment, verbatim (shipped with the package: the
+    formatting of its lines is evidence for :mod:`spectral_rod.figure1_forensics`)."""
+    return (resources.files("spectral_rod") / "data" / "figure1_picture.tex").read_text(
+        encoding="utf-8")
+
+
 def load_figure1(path: str | Path | None = None) -> pd.DataFrame:
     """The digitised Figure 1 (default: the packaged CSV), checked; errors name the file and
     the problem.

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import subprocess
 import sys
 from pathlib import Path
@@ -64,8 +65,14 @@ def test_missing_or_corrupt_reference_data_is_named(tmp_path, digitised):
 
 def test_scene_writes_figures_csv_and_report(tmp_path):
     assert main(["figure1", "--out", str(tmp_path)]) == 0
-    for name in ("figure1.png", "figure1.pdf", "figure1_comparison.csv", "report.md"):
+    for name in ("figure1.png", "figure1.pdf", "figure1_comparison.csv", "report.md",
+                 "figure1_forensics.png", "figure1_forensics.json", "claims.json"):
         assert (tmp_path / name).stat().st_size > 0, name
+    fx = json.loads((tmp_path / "figure1_forensics.json").read_text())
+    assert {"hypotheses", "best", "clusters", "missing_points"} <= set(fx)
+    rows = json.loads((tmp_path / "claims.json").read_text())
+    row = next(r for r in rows if r["id"].startswith("fig1-"))
+    assert row["scene"] == "figure1" and row["methods"] and row["verdict"]
     table = pd.read_csv(tmp_path / "figure1_comparison.csv")
     assert len(table) == len(load_figure1(CSV))
     report = (tmp_path / "report.md").read_text()
