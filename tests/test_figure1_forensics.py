@@ -356,11 +356,12 @@ def test_picture_lines_parser_on_a_snippet():
 def test_verdict_rule_branches(fx):
     assert figure1.figure1_verdict(figure1.accounting(fx)) == "holds approximately"
     bad = [dict(c, explained=False) for c in fx.clusters]
-    assert figure1.figure1_verdict(figure1.accounting(dataclasses.replace(fx, clusters=bad))) == "inconclusive"
+    verdict = figure1.figure1_verdict
+    assert verdict(figure1.accounting(dataclasses.replace(fx, clusters=bad))) == "inconclusive"
     sites = fx.sites.copy()
     i = sites.index[sites["in_data"] & sites["ok"]][0]
     sites.loc[i, "p_digitised"] += 2 * figure1.VISIBLE
-    assert figure1.figure1_verdict(figure1.accounting(dataclasses.replace(fx, sites=sites))) == "fails"
+    assert verdict(figure1.accounting(dataclasses.replace(fx, sites=sites))) == "fails"
     clean = fx.sites.assign(ok=True)
     assert figure1.figure1_verdict(figure1.accounting(dataclasses.replace(
         fx, sites=clean, clusters=[], missing_points=[]))) == "holds"
