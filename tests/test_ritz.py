@@ -196,6 +196,23 @@ def test_unreachable_tol_warns_instead_of_running_to_the_cap():
 # Building blocks: quadrature, basis, stiffness
 # --------------------------------------------------------------------------------------------
 
+@pytest.mark.parametrize("twist,nu,n", [(7.0, 3.0, 40), (30.0, 10.0, 80)])
+def test_moment_free_ends_emerge_without_being_imposed(twist, nu, n):
+    # only x = 0 is built into the basis; x'' = 0 at the hinges (no end moment) is the natural
+    # boundary condition of the energy and must come out of the minimisation
+    from scipy.linalg import eigh, qr, solve_triangular
+    t = np.array([-1.0, -0.5, 0.0, 0.3, 1.0])
+    for fam in FAMILIES:
+        r = qr(stiffness_root(twist, nu, n, fam), mode="r")[0][: n + 1]
+        zt = solve_triangular(r, mass_root(n).T, trans="T")
+        _, v = eigh(zt @ zt.T, subset_by_index=[n, n])
+        coef = solve_triangular(r, v[:, 0])
+        first = (np.arange(n + 1) % 2) == (0 if fam == "symmetric" else 1)
+        p = legendre_values(t, n)
+        curv = np.hypot(p[:, first] @ coef[first], p[:, ~first] @ coef[~first])
+        assert curv[[0, -1]].max() <= 1e-12 * curv.max(), (fam, curv)
+
+
 @pytest.mark.parametrize("q", [2, 7, 120, 401])
 def test_gauss_legendre_integrates_legendre_products_exactly(q):
     t, w = gauss_legendre(q)
