@@ -26,6 +26,8 @@ Eq. ``inst1`` (rectilinear rod)     :func:`critical_load` via :func:`choose_meth
                                     equation :mod:`.characteristic` (mpmath reference and
                                     double precision), :func:`critical_load_increment`
                                     (p* - 1); :mod:`.finite_difference`; :mod:`.baseline`
+the energy (no ``inst1``)            Rayleigh-Ritz :mod:`.ritz` (``method="ritz"``): upper
+                                    bounds per mode family
 hinged ends, geometric relations    :func:`buckling_mode` (:mod:`.mode`)
 wavenumbers beta_1, beta_2           :func:`critical_wavenumbers`, :func:`beta_difference`
                                     (:mod:`.wavenumbers`); :func:`imaginary_beta1_window`
@@ -88,6 +90,7 @@ _EXPORTS = {
     "large_twist_coefficients": "asymptotics", "large_twist_expansion": "asymptotics",
     "large_twist_limit": "asymptotics", "large_twist_wavenumbers": "asymptotics",
     "fd_critical_load": "finite_difference",
+    "RitzLoad": "ritz", "ritz_critical_load": "ritz",
     "baseline_critical_load": "baseline", "baseline_sweep": "baseline",
     "FIGURE1_NU": "figure_data", "load_figure1": "figure_data",
     "ThresholdTwist": "ring_formula", "crit2": "ring_formula", "ring_formula_load": "ring_formula",

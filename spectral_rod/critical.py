@@ -64,8 +64,16 @@ def _increment(tw, nv, n, tol):
             np.array(fam))
 
 
+def _ritz(tw, nv, n, tol):
+    from spectral_rod.ritz import ritz_point
+
+    p, deg, err, fam = zip(*(ritz_point(a, b, None, tol, None)
+                             for a, b in zip(tw, nv, strict=True)), strict=True)
+    return np.array(p), np.array(deg), np.array(err), np.array(fam)
+
+
 _SOLVERS = {"collocation": _collocation, "characteristic": _characteristic,
-            "increment": _increment}
+            "increment": _increment, "ritz": _ritz}
 assert set(_SOLVERS) == set(ROD_METHODS)
 
 

@@ -9,6 +9,8 @@ relations x'' = R(Omega s) omega), computed by the method that computed p*.
   x'' = R(Omega s) omega with x = 0 at both ends;
 * ``characteristic``: the closed form of :mod:`spectral_rod.closed_form` at that p*
   (sums of cos/sin(beta_k s)); omega1 = -lambda xi, omega2 = -mu eta and x = R(Omega s)(xi, eta);
+* ``ritz`` (forced only): the closed form at the Ritz p* (the Ritz basis carries the mode too,
+  but the closed form is exact, so nothing is gained from a second representation);
 * ``increment``: the increment method yields p* - 1 only (its 2x2 Schur complement carries the
   sin(pi s) part of the mode, not the mode), so the mode is the closed form at its p*. The
   families are separated by parity, so this is well conditioned even where the two families'

@@ -156,7 +156,8 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.linalg import blas, eigh, qr, solve_triangular
 
 from spectral_rod._validation import check_nu, check_resolution, check_tol, check_twist
-from spectral_rod.straight_rod import ConvergenceWarning
+from spectral_rod.errors import ConvergenceWarning
+from spectral_rod.families import FAMILIES, check_family
 
 __all__ = [
     "FAMILIES",
@@ -169,7 +170,6 @@ __all__ = [
     "ritz_critical_load",
 ]
 
-FAMILIES = ("symmetric", "antisymmetric")
 #: Degree range of y_tt (even): n + 1 unknowns per family.
 N_MIN, N_MAX = 4, 1280
 #: |Omega(L)| limit, by cost: n ~ |Omega| + 66 at tol 1e-12, ~0.5 s per point at 1000.
@@ -299,16 +299,6 @@ def _half_rule(q: int) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
 # ---------------------------------------------------------------------------------------------
 # The Ritz pencil of one family
 # ---------------------------------------------------------------------------------------------
-
-def _check_family(family: object) -> str:
-    """`family` if it names a family; TypeError/ValueError naming the argument otherwise."""
-    if not isinstance(family, str):
-        raise TypeError(f"family must be a string {FAMILIES} or None, "
-                        f"got {type(family).__name__}")
-    if family not in FAMILIES:
-        raise ValueError(f"family must be one of {FAMILIES} (or None for p*), got {family!r}")
-    return family
-
 
 def stiffness_root(twist_angle: float, nu: float, n: int, family: str) -> NDArray[np.float64]:
     """F with F^T F = K = int y_tt^T S(t) y_tt dt for the family at degree n (module docstring).
@@ -457,7 +447,7 @@ class RitzLoad:
     tol: float
 
 
-def _point(twist_angle: float, nu: float, family: str | None, tol: float,
+def ritz_point(twist_angle: float, nu: float, family: str | None, tol: float,
            n: int | None) -> tuple[float, int, float, str]:
     """(p, n, estimate, family) at one point; p* = the smaller family value."""
     fams = FAMILIES if family is None else (family,)
@@ -490,13 +480,13 @@ def ritz_critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None =
     if n is not None:
         n = check_resolution(n, minimum=N_MIN, maximum=N_MAX)
     if family is not None:
-        family = _check_family(family)
+        family = check_family(family)
     if not isinstance(full_output, (bool, np.bool_)):
         raise TypeError(f"full_output must be True or False, got {type(full_output).__name__}")
     shape = np.broadcast_shapes(twist.shape, nu_arr.shape)
     tw = np.broadcast_to(twist, shape).ravel()
     nv = np.broadcast_to(nu_arr, shape).ravel()
-    rows = [_point(float(a), float(b), family, tol, n) for a, b in zip(tw, nv, strict=True)]
+    rows = [ritz_point(float(a), float(b), family, tol, n) for a, b in zip(tw, nv, strict=True)]
     p = np.array([r[0] for r in rows])
     deg = np.array([r[1] for r in rows], dtype=int)
     err = np.array([r[2] for r in rows])

@@ -15,7 +15,10 @@ characteristic equation (tests/test_extremes.py and the ``extremes`` scene):
   p* - 1 loses its relative accuracy; the increment keeps ~1e-14 of p* - 1);
 * otherwise Chebyshev collocation (:mod:`spectral_rod.straight_rod`, <= ~3e-14 relative).
 
-A method can also be forced (``method=`` one of :data:`ROD_METHODS`), e.g. to cross-check.
+A method can also be forced (``method=`` one of :data:`ROD_METHODS`), e.g. to cross-check:
+``"ritz"`` is the Rayleigh-Ritz discretisation of the lab-frame *energy*
+(:mod:`spectral_rod.ritz`): it does not start from Eq. ``inst1``, and each family's value is an
+upper bound.
 
 >>> choose_method([10.0, 100.0, 10.0], [1.5, 1.5, 1.0001]).tolist()
 ['collocation', 'characteristic', 'increment']
@@ -32,13 +35,15 @@ __all__ = ["INCREMENT_MAX_TWIST", "NEAR_DEGENERATE", "ROD_METHODS", "TWIST_ROUTE
            "check_method", "choose_method", "route"]
 
 #: The methods that compute p* (``method=`` of :func:`spectral_rod.critical_load`).
-ROD_METHODS = ("collocation", "characteristic", "increment")
+ROD_METHODS = ("collocation", "characteristic", "increment", "ritz")
 #: |Omega(L)| from which the characteristic equation (double precision) is used.
 TWIST_ROUTE = 50.0
 #: nu - 1 up to which p* = 1 + increment (for |Omega(L)| < TWIST_ROUTE).
 NEAR_DEGENERATE = 1.0e-3
 #: |Omega(L)| limit of the increment (its sine basis needs N ~ 2|Omega|/pi + 48 modes).
 INCREMENT_MAX_TWIST = 1.0e3
+#: |Omega(L)| limit of Rayleigh-Ritz (degree ~ |Omega| + 66, cost ~ |Omega|^3).
+RITZ_MAX_TWIST = 1.0e3
 
 
 def check_method(method: object) -> str:
@@ -61,6 +66,9 @@ def route(twist: NDArray[np.float64], nu: NDArray[np.float64], n: int | None = N
             raise ValueError(f"method='increment' needs nu - 1 <= {NEAR_DEGENERATE:g} and "
                              f"|twist_angle| <= {INCREMENT_MAX_TWIST:g} (use "
                              f"critical_load_increment for p* - 1 elsewhere)")
+    if method == "ritz" and np.any(np.abs(twist) > RITZ_MAX_TWIST):
+        raise ValueError(f"method='ritz' needs |twist_angle| <= {RITZ_MAX_TWIST:g} (its cost grows "
+                         "like |Omega|^3)")
     if method != "auto":
         return np.full(twist.shape, method, dtype=f"<U{max(map(len, ROD_METHODS))}")
     if n is not None:
