@@ -98,6 +98,7 @@ _EXPORTS = {
     "RingBuckling": "ring_stability", "RING_LOADS": "ring_stability",
     "RING_METHODS": "ring_stability", "munder_buckling": "ring_munder",
     "ring_formulation_agreement": "ring_munder",
+    "munder_base_residual": "ring_munder:base_residual",
     "homogenised_limit": "ring_closed_forms", "in_plane_untwisted": "ring_closed_forms",
     "out_of_plane_supremum": "ring_closed_forms", "out_of_plane_untwisted": "ring_closed_forms",
     "rectangle_torsion_ratio": "cross_section",

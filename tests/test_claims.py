@@ -41,6 +41,10 @@ def test_every_claim_has_a_verdict_and_the_expected_one(ev):
         "rod-beta-difference": "holds approximately",
         "rod-resonance": "holds",
         "rod-three-dimensional": "holds",
+        "eq-inst1": "holds",
+        "rod-decoupling": "holds",
+        "rod-end-alignment": "fails",
+        "rod-two-mode-interplay": "holds",
     }
 
 
@@ -237,3 +241,30 @@ def test_single_formulation_verdicts_say_so(ev):
     for c in sc.evaluate_claims(ev):
         forms = {m["formulation"] for m in c.methods}
         assert ("one formulation only" in c.evidence) == (len(forms) < 2)
+
+
+def test_fails_and_approximate_verdicts_rest_on_two_formulations(ev):
+    for c in sc.evaluate_claims(ev):
+        if c.verdict in ("fails", "holds approximately"):
+            assert len({m["formulation"] for m in c.methods}) >= 2, c.id
+
+
+def test_derivation_failure_makes_inst1_fail(ev):
+    broken = copy.deepcopy(ev)
+    broken.derivation["straight_rod"] = "a step failed: AssertionError()"
+    assert _claim("eq-inst1", broken).verdict == "fails"
+    assert _claim("rod-decoupling", broken).verdict == "fails"
+
+
+def test_ritz_disagreement_makes_the_load_claims_inconclusive(ev):
+    broken = copy.deepcopy(ev)
+    broken.ritz["spot"][0] = 1e-6  # the energy formulation contradicting inst1 at one point
+    assert _claim("rod-stabilising", broken).verdict == "inconclusive"
+
+
+def test_end_alignment_would_hold_if_maxima_sat_at_k_pi(ev):
+    measured = rows.measure_end_alignment(ev)
+    assert judge(rows.END_ALIGNMENT, measured, "claims").verdict == "fails"
+    at_k_pi = Measured({**measured.numbers, "max_offset_over_pi": 0.0, "none_near_pi": False},
+                       measured.evidence, measured.cross_checks)
+    assert judge(rows.END_ALIGNMENT, at_k_pi, "claims").verdict == "holds"

@@ -52,10 +52,11 @@ def test_all_verdicts_valid_and_ids_prefixed(claims: dict) -> None:
                            "ring-spontaneous-instability", "ring-destabilises",
                            "ring-three-dimensional", "intro-three-dimensional",
                            "ring-gt97-comparison", "ring-two-formulations",
-                           "caveat-torsional-stiffness", "caveat-load-model"}
+                           "caveat-torsional-stiffness", "caveat-load-model", "eq-munder",
+                           "ring-hoop-force"}
     for c in claims.values():
         assert c.verdict in VERDICTS and c.scene == "ring" and c.evidence and c.numbers
-        assert c.id.split("-")[0] in ("ring", "intro", "caveat")
+        assert c.id.split("-")[0] in ("ring", "intro", "caveat", "eq")
 
 
 def test_gt97_and_two_formulations_recomputed(evidence: scene.RingEvidence,

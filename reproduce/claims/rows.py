@@ -43,6 +43,13 @@ COLLOCATION = Method("Chebyshev collocation (spectral_rod.straight_rod)", "inst1
 CHARACTERISTIC = Method("characteristic equation in mpmath (spectral_rod.characteristic)",
                         "inst1")
 CLOSED_FORM = Method("closed forms and asymptotics (spectral_rod.asymptotics)", "closed form")
+RITZ = Method("Rayleigh-Ritz on the lab-frame energy (spectral_rod.ritz)", "energy")
+SYMPY_ENERGY = Method("sympy: Euler-Lagrange equations of the energy "
+                      "(spectral_rod.derivations.straight_rod)", "energy")
+SYMPY_MUNDER = Method("sympy: Eqs. Munder with constit linearised about the compressed rod "
+                      "(spectral_rod.derivations.straight_rod)", "Munder")
+#: Rayleigh-Ritz (energy) must agree with the mpmath characteristic equation (inst1) to this.
+RITZ_LIMIT = 1e-11
 
 
 def _fmt_pi(x: float, digits: int = 7) -> str:
@@ -64,6 +71,12 @@ def _maxima_cross_checks(ev: StraightRodEvidence) -> tuple[CrossCheck, ...]:
             CrossCheck("maxima twist: mpmath vs closed form", a["twist_mp_vs_closed"], 1e-7),
             CrossCheck("maxima twist: collocation vs closed form", a["twist_coll_vs_closed"],
                        1e-7))
+
+
+def _ritz_check(ev: StraightRodEvidence, key: str) -> CrossCheck:
+    """The energy formulation against the inst1 one at the claim's points."""
+    return CrossCheck(f"{key} p*: Rayleigh-Ritz (energy) vs mpmath (inst1)",
+                      float(max(ev.ritz[key])), RITZ_LIMIT)
 
 
 def _spot_cross_check(rows: list[dict[str, float]], name: str, limit: float) -> CrossCheck:
@@ -133,7 +146,7 @@ STABILISING = ClaimSpec(
          f"{', '.join(map(str, SPOT_TWISTS))}. Proof: the Rayleigh quotient ∫(A1 ω1² + A2 ω2²)/"
          "(P_E ∫|x'|²) is ≥ 1 (A2 ≥ A1, Wirtinger) and non-decreasing in A2 for every trial "
          "mode.",
-    methods=(COLLOCATION, CHARACTERISTIC),
+    methods=(COLLOCATION, CHARACTERISTIC, RITZ),
     rule=_rule("holds if min (p* − 1) > 0 for Ω > 0, p* increases with ν at every twist, and every "
                "mpmath spot value is > 1 and increasing in ν; fails otherwise",
                lambda n: "holds" if n["min_excess"] > 0 and n["min_step_in_nu"] > 0
@@ -156,7 +169,8 @@ def measure_stabilising(ev: StraightRodEvidence) -> Measured:
                  f"between consecutive ν = {min_step:.3e}; all {len(ev.spot)} mpmath spot values "
                  f"> 1: {spot_ok}, increasing in ν: {spot_mono}. (p* is not monotone in Ω: see "
                  "rod-further-maxima.)",
-        cross_checks=(_spot_cross_check(ev.spot, "spot p*: collocation vs mpmath", 1e-11),))
+        cross_checks=(_spot_cross_check(ev.spot, "spot p*: collocation vs mpmath", 1e-11),
+                      _ritz_check(ev, "spot")))
 
 
 FIRST_MAXIMUM = ClaimSpec(
@@ -168,7 +182,7 @@ FIRST_MAXIMUM = ClaimSpec(
          "closed form of asymptotics.crossing_closed_form (at a crossing β1 L = (n−1)π, β2 L = "
          "(n+1)π exactly). Slopes dp/dΩ of both branches; p* increasing on the collocation grid "
          "before it.",
-    methods=(CHARACTERISTIC, COLLOCATION, CLOSED_FORM),
+    methods=(CHARACTERISTIC, COLLOCATION, CLOSED_FORM, RITZ),
     rule=_rule(f"holds if p* rises up to a corner maximum at exactly 2π (to 1e-9); holds "
                f"approximately if the corner is within {NEAR:g} relative of 2π; fails otherwise",
                lambda n: ("holds" if n["max_rel_offset"] < 1e-9 else "holds approximately")
@@ -207,7 +221,7 @@ def measure_first_maximum(ev: StraightRodEvidence) -> Measured:
                  f"{rises}. Only a local maximum: the next one (near 3π) is higher and p* → "
                  f"2ν/(1+ν) > p*(Ω₂) ({later_higher and below_limit}). Distance from 2π: "
                  f"{min(rel):.1e} … {max(rel):.1e} relative, growing with ν.",
-        cross_checks=_maxima_cross_checks(ev))
+        cross_checks=(*_maxima_cross_checks(ev), _ritz_check(ev, "maxima")))
 
 
 FURTHER_MAXIMA = ClaimSpec(
@@ -219,7 +233,7 @@ FURTHER_MAXIMA = ClaimSpec(
          "/((3ν+1)(ν+3)), N = n²+1, M = (n²−1)², p*_n = 2ν(N − Ω_n²/π²)/(ν+1)); every local "
          "maximum of the dense collocation curve must sit at a family switch; fit of the offset "
          "Ω_n − nπ against n; is there a maximum near π?",
-    methods=(CHARACTERISTIC, COLLOCATION, CLOSED_FORM),
+    methods=(CHARACTERISTIC, COLLOCATION, CLOSED_FORM, RITZ),
     rule=_rule(f"holds approximately if every maximum is a family-crossing corner within {NEAR:g} "
                "relative of nπ and every grid maximum sits at a family switch (the maxima are "
                "near, not at, nπ, and there is none near π); fails otherwise",
@@ -275,7 +289,7 @@ def measure_further_maxima(ev: StraightRodEvidence) -> Measured:
                  f"offset |Ω_n − nπ|/(nπ) = {rel:.1e}. There is no maximum near π: p* rises "
                  f"monotonically up to the 2π crossing for every ν ({no_max_near_pi}); the end "
                  "sections are aligned at Ω = nπ, but the maxima are where β_k L = (n ∓ 1)π.",
-        cross_checks=_maxima_cross_checks(ev))
+        cross_checks=(*_maxima_cross_checks(ev), _ritz_check(ev, "maxima")))
 
 
 LIMIT = ClaimSpec(
@@ -285,7 +299,7 @@ LIMIT = ClaimSpec(
          "p∞ = 2ν/(1+ν); expansion p* = p∞ + a2/Ω² − b3|sin Ω|/Ω³ + a4/Ω⁴ + O(Ω⁻⁵). Compared "
          f"with p* from both solvers at Ω = π/2 + 2πj, j = {LIMIT_J}; observed decay order of "
          "p* − p∞ and of the expansion error.",
-    methods=(CHARACTERISTIC, COLLOCATION, CLOSED_FORM),
+    methods=(CHARACTERISTIC, COLLOCATION, CLOSED_FORM, RITZ),
     rule=_rule("holds if p∞ − p* decays faster than Ω^-1.8 and the 4-term expansion's error "
                "faster than Ω^-4.5 for every ν; fails otherwise",
                lambda n: "holds" if n["observed_order_p_minus_limit"][1] < -1.8
@@ -328,7 +342,8 @@ def measure_limit(ev: StraightRodEvidence) -> Measured:
                  f"Ω^{orders[4][1]:.2f} (expected −5), {worst4:.1e} at Ω = {om_max:.0f}. The "
                  f"deficit p∞ − p* stays below 1 % / 0.1 % of the total rise p∞ − 1 beyond Ω = "
                  f"{settle_txt} (ν as listed; collocation grid). Solvers agree to {agree:.1e}.",
-        cross_checks=(_spot_cross_check(rows, "large-twist p*: collocation vs mpmath", 1e-9),))
+        cross_checks=(_spot_cross_check(rows, "large-twist p*: collocation vs mpmath", 1e-9),
+                      _ritz_check(ev, "limit")))
 
 
 WAVENUMBERS_REAL = ClaimSpec(
@@ -531,7 +546,7 @@ TWIST_RAISES_LOAD = ClaimSpec(
     claim="An increase in the spontaneous twist angle leads to the growth of the critical force.",
     test="Sign of dp*/dΩ on the dense collocation grid in [0, 20π]; the largest fall of p* after "
          "the first maximum (between the crossings near 2π and 3π).",
-    methods=(COLLOCATION, CHARACTERISTIC),
+    methods=(COLLOCATION, CHARACTERISTIC, RITZ),
     rule=_rule("holds if p* > 1 for Ω > 0 and never falls; holds approximately if p* > 1 but "
                "falls somewhere (true as a trend, not as monotonicity); fails if p* ≤ 1 "
                "anywhere",
@@ -558,7 +573,133 @@ def measure_monotone_growth(ev: StraightRodEvidence) -> Measured:
                  "on " + ", ".join(f"{100 * fracs[nu]:.0f} %" for nu in NUS)
                  + " of the grid (ν as in rod-stabilising); the drop after the 2π maximum is "
                  + ", ".join(f"{drops[nu]:.2e}" for nu in NUS)
-                 + ". True as a trend (towards p∞ > p*(Ω) for all Ω), not as monotonicity.")
+                 + ". True as a trend (towards p∞ > p*(Ω) for all Ω), not as monotonicity.",
+        cross_checks=(_ritz_check(ev, "maxima"),))
+
+
+INST1 = ClaimSpec(
+    id="eq-inst1", section=SECTION + ", Eq. inst1",
+    claim="Eq. inst1 governs bending of the hinged, spontaneously twisted, compressed rod (with "
+          "the geometric relations x'' = R(Ω) ω and hinged ends x = x'' = 0).",
+    test="(a) sympy: the Euler-Lagrange equations of the energy ½A₁ω₁² + ½A₂ω₂² − (P/2)|x'|² "
+         "in the twisted frame of Eq. frenini, projected on u₀, v₀, are inst1 identically; "
+         "(b) sympy: Eqs. Munder with constit linearised about the straight compressed rod give "
+         "inst1 as their lines 3 and 4; (c) numbers: Rayleigh-Ritz on the energy (which never "
+         "sees inst1) against the mpmath characteristic equation of inst1; (d) the misprints a "
+         "reader might suspect (coupling factor 1, one sign flipped, the A's exchanged) against "
+         "Figure 1.",
+    methods=(SYMPY_ENERGY, SYMPY_MUNDER, RITZ, CHARACTERISTIC),
+    rule=_rule("holds if both derivations reproduce inst1 exactly; fails if either finds "
+               "another equation",
+               lambda n: "holds" if n["derivation"] == "all steps checked" else "fails"),
+    related=("rod-decoupling", "eq-munder", "fig1-curves"))
+
+
+def measure_inst1(ev: StraightRodEvidence) -> Measured:
+    var = ev.derivation["variants"]
+    by = {}
+    for r in var:
+        by.setdefault(r["variant"], []).append(r)
+    worst = {k: max(r["figure_max"] for r in v) for k, v in by.items()}
+    change = {k: max(r["max_change"] for r in v) for k, v in by.items()}
+    ritz = max(max(v) for v in ev.ritz.values())
+    return Measured(
+        numbers={"derivation": ev.derivation["straight_rod"], "variant_figure_max": worst,
+                 "variant_max_change": change, "ritz_vs_inst1": ritz},
+        evidence=f"Derivations: {ev.derivation['straight_rod']} (energy route: E·u₀ = I₁, "
+                 "E·v₀ = I₂ identically; Munder route: lines 3, 4 = I₁, −I₂). Rayleigh-Ritz on "
+                 f"the energy agrees with the inst1 reference to {ritz:.1e} at "
+                 f"{sum(len(v) for v in ev.ritz.values())} points. Misprints against Figure 1 "
+                 "(largest |p* − digitised|): " + ", ".join(f"{k} {v:.2g}" for k, v in
+                                                           worst.items())
+                 + " — the printed equation fits the figure; a factor 1 or a flipped sign would "
+                 "be off by O(1) (and the flipped sign has complex eigenvalues); exchanging the "
+                 "A's is a similarity transformation (ω₂ → νω₂) with the same p*, so neither "
+                 "Figure 1 nor p* can tell it apart — only the derivation does.",
+        cross_checks=(CrossCheck("p*: Rayleigh-Ritz (energy) vs inst1", ritz, RITZ_LIMIT),))
+
+
+DECOUPLING = ClaimSpec(
+    id="rod-decoupling", section=SECTION + ", para. 'Substituting these expressions ...'",
+    claim="The equations for the perturbation of the longitudinal force and for the rotation α "
+          "decouple from the equations for the curvatures ω₁, ω₂.",
+    test="sympy: the first-order lines of Eqs. Munder (with constit) about the compressed "
+         "twisted rod, with F_t = −P + f: lines 1 and 2 contain no ω and lines 3 and 4 no f, α; "
+         "the energy's torsion term gives the same A₃α'' = 0.",
+    methods=(SYMPY_MUNDER, SYMPY_ENERGY),
+    rule=_rule("holds if the derivation's decoupling checks pass; fails otherwise",
+               lambda n: "holds" if n["derivation"] == "all steps checked" else "fails"),
+    related=("eq-inst1",))
+
+
+def measure_decoupling(ev: StraightRodEvidence) -> Measured:
+    return Measured(
+        numbers={"derivation": ev.derivation["straight_rod"]},
+        evidence=f"{ev.derivation['straight_rod']}: line 1 of Munder is f' = 0 (the force "
+                 "perturbation is a constant, a change of the end load), line 2 is A₃α'' = 0 "
+                 "(α linear in s, constant without end torque), and lines 3, 4 contain neither; "
+                 "so the perturbed torsion ω₃ − ω₃₀ = α' vanishes at buckling.")
+
+
+END_ALIGNMENT = ClaimSpec(
+    id="rod-end-alignment", section=SECTION + ", para. 'To understand the origin ...'",
+    claim="Whenever the total twist is an integer multiple of π the end sections are aligned, "
+          "as in the twist-free case (offered alongside the maxima at integer multiples of π).",
+    test="Geometry: u₀(L)·u₀(0) = cos Ω(L). As an explanation of the maxima: are the maxima of "
+         "p* exactly at kπ, and is there one at every kπ (k ≥ 1)?",
+    methods=(CHARACTERISTIC, COLLOCATION, CLOSED_FORM),
+    rule=_rule("holds if the maxima sit at kπ (to 1e-9) for every k ≥ 1 — i.e. alignment "
+               "locates them; fails otherwise (the geometric statement is then true but does "
+               "not explain the maxima)",
+               lambda n: "holds" if n["max_offset_over_pi"] < 1e-9 and not n["none_near_pi"]
+               else "fails"),
+    related=("rod-first-maximum", "rod-further-maxima", "rod-two-mode-interplay"))
+
+
+def measure_end_alignment(ev: StraightRodEvidence) -> Measured:
+    offs = [abs(m.offset) for m in ev.maxima]
+    none_near_pi = all(rises_until_first_maximum(ev, nu) for nu in NUS)
+    return Measured(
+        numbers={"max_offset_over_pi": max(offs), "min_offset_over_pi": min(offs),
+                 "none_near_pi": none_near_pi},
+        evidence=f"The geometric statement is true (u₀(L) = ±u₀(0) at Ω(L) = kπ), but the maxima "
+                 f"are not where the ends align: they sit at Ω_n = nπ + (1e-8 … 1e-2)π "
+                 f"(offsets {min(offs):.1e}π … {max(offs):.1e}π), and there is none at π: p* "
+                 f"rises monotonically through π for every ν ({none_near_pi}). They are where "
+                 "the two mode families cross, with β₁L = (n−1)π and β₂L = (n+1)π exactly. The "
+                 "conclusion 'maxima near kπ (k ≥ 2)' holds; the reasoning by alignment does "
+                 "not.",
+        cross_checks=_maxima_cross_checks(ev))
+
+
+TWO_MODES = ClaimSpec(
+    id="rod-two-mode-interplay", section=SECTION + ", para. 'To understand the origin ...'",
+    claim="The oscillatory dependence of the critical force on the twist arises from the "
+          "interplay between the two modes.",
+    test="Is every maximum of p* a crossing of two modes? The lowest symmetric and "
+         "antisymmetric (about mid-span) roots located by both solvers and in closed form; their "
+         "slopes at each crossing; the critical family on the dense grid.",
+    methods=(CHARACTERISTIC, COLLOCATION, CLOSED_FORM),
+    rule=_rule("holds if every maximum is a corner where the two mode families cross and the "
+               "critical family alternates; fails otherwise",
+               lambda n: "holds" if n["all_corners"] and n["alternates"] else "fails"),
+    related=("rod-further-maxima", "rod-beta-difference"))
+
+
+def measure_two_modes(ev: StraightRodEvidence) -> Measured:
+    alternates = all(a.right == b.left for nu in NUS
+                     for a, b in zip(ev.maxima_for(nu)[:-1], ev.maxima_for(nu)[1:], strict=True)
+                     if b.n == a.n + 1)
+    corners = all(m.kind == "corner maximum" for m in ev.maxima)
+    return Measured(
+        numbers={"all_corners": corners, "alternates": alternates},
+        evidence=f"All {len(ev.maxima)} maxima are corners where the lowest symmetric and "
+                 f"antisymmetric modes cross ({corners}), and the critical mode alternates "
+                 f"between the two families from one maximum to the next ({alternates}). The "
+                 "paper's 'two modes' are argued from the two wavenumbers β₁, β₂; the two modes "
+                 "that actually interplay are the two parity families, each made of both "
+                 "wavenumbers. Conclusion right, reason imprecise.",
+        cross_checks=_maxima_cross_checks(ev))
 
 
 #: The straight-rod claims in ledger order: (declaration, measurement).
@@ -568,7 +709,9 @@ CLAIMS: tuple[tuple[ClaimSpec, Callable[[StraightRodEvidence], Measured]], ...] 
     (FIRST_MAXIMUM, measure_first_maximum), (FURTHER_MAXIMA, measure_further_maxima),
     (LIMIT, measure_limit), (WAVENUMBERS_REAL, measure_wavenumbers_real),
     (BETA_DIFFERENCE, measure_beta_difference), (RESONANCE, measure_resonance),
-    (THREE_DIMENSIONAL, measure_three_dimensional),
+    (THREE_DIMENSIONAL, measure_three_dimensional), (INST1, measure_inst1),
+    (DECOUPLING, measure_decoupling), (END_ALIGNMENT, measure_end_alignment),
+    (TWO_MODES, measure_two_modes),
 )
 
 

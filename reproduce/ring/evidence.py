@@ -19,6 +19,8 @@ from spectral_rod import (
     crit2,
     homogenised_limit,
     in_plane_untwisted,
+    munder_base_residual,
+    munder_buckling,
     out_of_plane_untwisted,
     rectangle_torsion_ratio,
     ring_buckling,
@@ -66,6 +68,7 @@ class RingEvidence:
     wide: pd.DataFrame
     boundaries: pd.DataFrame
     rectangle: pd.DataFrame
+    equilibrium: dict[str, object] = field(default_factory=dict)
     timings: dict[str, float] = field(default_factory=dict)
 
 
@@ -215,6 +218,33 @@ def rectangle_rows(nus: tuple[float, ...] = NUS) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
+#: Cases on which Eqs. Munder are compared with Kirchhoff's vector balances, and on which the
+#: loaded circle's residual is evaluated.
+EQUILIBRIUM_CASES = ((2, 2.0, 1.0, "axis"), (3, 4.0, 1.0, "hydrostatic"),
+                     (1, 1.3, E_RATIOS["isotropic"], "hydrostatic"))
+
+
+def equilibrium_checks() -> dict[str, object]:
+    """Eqs. Munder against Kirchhoff's vector balances (M' + t x F = 0, F' + q = 0) on
+    :data:`EQUILIBRIUM_CASES`; the loaded circle with F_t = -q R and no moments as a solution of
+    Munder (its residual); the sympy ring derivation's own checks (frenini, hoop force)."""
+    from spectral_rod.derivations import ring_linearisation
+
+    diffs, residuals = [], []
+    for N, nu, e, load in EQUILIBRIUM_CASES:
+        m = munder_buckling(N, nu, e_ratio=e, load=load).load
+        k = munder_buckling(N, nu, e_ratio=e, load=load, equations="kirchhoff").load
+        diffs.append(abs(m - k) / abs(k))
+        residuals += [munder_base_residual(N, nu, e_ratio=e, load=ld) for ld in RING_LOADS]
+    try:
+        ring_linearisation.derive()
+        derivation = "all steps checked"
+    except AssertionError as exc:
+        derivation = f"a step failed: {exc!r}"
+    return {"munder_vs_kirchhoff": max(diffs), "base_residual": max(residuals),
+            "ring_derivation": derivation}
+
+
 def compute_evidence(progress: Callable[[str], None] = lambda _m: None) -> RingEvidence:
     timings: dict[str, float] = {}
     t = time.perf_counter()
@@ -238,7 +268,12 @@ def compute_evidence(progress: Callable[[str], None] = lambda _m: None) -> RingE
     progress("torsion caveat: rectangular sections")
     rect = rectangle_rows()
     timings["rectangle caveat"] = time.perf_counter() - t
-    return RingEvidence(table, thresholds, circ, large, forms, wide, boundaries, rect, timings)
+    t = time.perf_counter()
+    progress("Eqs. Munder vs Kirchhoff's balances; the loaded circle; the sympy derivation")
+    equilibrium = equilibrium_checks()
+    timings["equilibrium checks"] = time.perf_counter() - t
+    return RingEvidence(table, thresholds, circ, large, forms, wide, boundaries, rect,
+                        equilibrium, timings)
 
 
 def q_at(ev: RingEvidence, nu: float, N: int, label: str = "e=1",

@@ -584,6 +584,74 @@ def measure_formulations(ev: RingEvidence) -> Measured:
                  f"(resolution up to {int(f['max_frequency'].max())} Fourier modes per field).")
 
 
+SYMPY_RING = Method("sympy: frames, hoop force and second variation of the ring "
+                    "(spectral_rod.derivations.ring_linearisation)", "second variation")
+KIRCHHOFF = Method("Kirchhoff's vector balances M' + t×F + m = 0, F' + q = 0 (ring_munder, "
+                   "equations='kirchhoff')", "Kirchhoff balances")
+SYMPY_STRAIGHT = Method("sympy: Munder linearised about the straight rod gives inst1, which "
+                        "the energy also gives (spectral_rod.derivations.straight_rod)", "Munder")
+
+MUNDER_ROW = ClaimSpec(
+    id="eq-munder", section="Sec. 'Equilibrium equations', Eqs. Munder",
+    claim="Eqs. Munder (with constit) are the conditions of mechanical equilibrium: eliminating "
+          "the cross-sectional force components from the balance of forces and moments.",
+    test="Numerically, on the twisted ring: the critical loads from Eqs. Munder linearised about "
+         "the loaded circle against (i) Kirchhoff's vector balances with the full force as "
+         "unknown and (ii) the second variation of the energy; symbolically, on the straight "
+         "rod: Munder linearised gives inst1, which the energy's Euler-Lagrange equations also "
+         "give (eq-inst1).",
+    methods=(MUNDER, KIRCHHOFF, SECOND_VARIATION, SYMPY_STRAIGHT),
+    rule=Rule("holds if Munder agrees with Kirchhoff's balances to 1e-9 and the straight-rod "
+              "linearisation reproduces inst1; fails otherwise",
+              lambda n: "holds" if n["munder_vs_kirchhoff"] <= 1e-9
+              and n["straight_rod_derivation"] == "all steps checked" else "fails"),
+    related=("eq-inst1", "ring-two-formulations", "ring-hoop-force"))
+
+
+def measure_munder(ev: RingEvidence) -> Measured:
+    from spectral_rod.derivations import straight_rod
+
+    try:
+        straight_rod.derive()
+        status = "all steps checked"
+    except AssertionError as exc:
+        status = f"a step failed: {exc!r}"
+    eq = ev.equilibrium
+    return Measured(
+        numbers={"munder_vs_kirchhoff": eq["munder_vs_kirchhoff"],
+                 "straight_rod_derivation": status,
+                 "munder_vs_energy": float(ev.formulations["rel_diff"].max())},
+        evidence=f"Ring: Munder vs Kirchhoff's balances {eq['munder_vs_kirchhoff']:.1e}, Munder vs "
+                 f"the energy's second variation {ev.formulations['rel_diff'].max():.1e} "
+                 f"(relative q_cr). Straight rod: {status} (Munder lines 3, 4 are inst1). As "
+                 "printed, line 3 is −(F' + q)·u and line 4 +(F' + q)·v after the elimination — "
+                 "consistent, with mixed signs (ring_munder's docstring).",
+        cross_checks=(_formulations_check(ev),))
+
+
+HOOP = ClaimSpec(
+    id="ring-hoop-force", section=SECTION + ", para. 'We study the stability ...'",
+    claim="Below the critical load the inward load is balanced by the tangential internal force "
+          "F_t = −qR₀ and no displacement arises.",
+    test="The loaded circle with F_t = −qR₀ and no moments in Eqs. Munder: its residual for both "
+         "load models (ring_munder); the sympy ring derivation's step 2 (Munder at the "
+         "stress-free state gives F_t = −qR₀).",
+    methods=(MUNDER, SYMPY_RING),
+    rule=Rule("holds if the residual is below 1e-12 and the derivation's checks pass; fails "
+              "otherwise",
+              lambda n: "holds" if n["base_residual"] <= 1e-12
+              and n["ring_derivation"] == "all steps checked" else "fails"),
+    related=("eq-munder",))
+
+
+def measure_hoop(ev: RingEvidence) -> Measured:
+    eq = ev.equilibrium
+    return Measured(
+        numbers={"base_residual": eq["base_residual"], "ring_derivation": eq["ring_derivation"]},
+        evidence=f"Largest residual of Munder at the loaded circle {eq['base_residual']:.1e} (both "
+                 f"loads, {3} cases); sympy: {eq['ring_derivation']}.")
+
+
 #: The ring claims in ledger order: (declaration, measurement).
 CLAIMS: tuple[tuple[ClaimSpec, Callable[[RingEvidence], Measured]], ...] = (
     (CRIT2_ROW, measure_crit2), (CIRCULAR_LIMIT, measure_circular_limit),
@@ -592,6 +660,7 @@ CLAIMS: tuple[tuple[ClaimSpec, Callable[[RingEvidence], Measured]], ...] = (
     (DESTABILISES, measure_destabilises), (THREE_D, measure_three_d),
     (INTRO_3D, measure_intro_3d), (GT97, measure_gt97), (FORMULATIONS, measure_formulations),
     (TORSION_CAVEAT, measure_torsion_caveat), (LOAD_CAVEAT, measure_load_caveat),
+    (MUNDER_ROW, measure_munder), (HOOP, measure_hoop),
 )
 
 
