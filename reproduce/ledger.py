@@ -141,6 +141,17 @@ def judge(spec: ClaimSpec, measured: Measured, scene: str) -> Claim:
         related=list(spec.related))
 
 
+def evaluate(claims: Sequence[tuple[ClaimSpec, Callable[[Any], Measured]]], evidence: Any,
+             scene: str, claim_id: str | None = None) -> list[Claim]:
+    """Judge every (declaration, measurement) pair of a scene on its evidence, or only the one
+    `claim_id` (KeyError if the scene declares no such row)."""
+    rows = [judge(spec, measure(evidence), scene) for spec, measure in claims
+            if claim_id is None or spec.id == claim_id]
+    if claim_id is not None and not rows:
+        raise KeyError(claim_id)
+    return rows
+
+
 def read_ledger(path: Path) -> list[dict[str, Any]]:
     """Rows of an existing ``claims.json`` ([] if there is none)."""
     if not path.exists():

@@ -30,6 +30,15 @@ def real_array(value: ArrayLike, name: str) -> NDArray[np.float64]:
     return arr
 
 
+def check_choice(value: object, name: str, choices: tuple[str, ...]) -> str:
+    """`value` if it is one of the strings `choices`, else TypeError/ValueError naming them."""
+    if not isinstance(value, str):
+        raise TypeError(f"{name} must be one of {choices}, got {type(value).__name__}")
+    if value not in choices:
+        raise ValueError(f"{name} must be one of {choices}, got {value!r}")
+    return value
+
+
 def check_twist(twist_angle: ArrayLike, name: str = "twist_angle",
                 max_abs: float = 1.0e4) -> NDArray[np.float64]:
     """Total twist angle Omega(L) in radians, any sign (p* is even in it), |Omega(L)| <= max_abs."""

@@ -16,6 +16,8 @@ from __future__ import annotations
 
 import math
 
+from spectral_rod._validation import check_choice
+
 __all__ = ["FAMILIES", "SHIFT", "check_family", "p_star_bounds"]
 
 FAMILIES = ("symmetric", "antisymmetric")
@@ -25,11 +27,7 @@ SHIFT = 0.95 * math.pi**2
 
 def check_family(family: object, name: str = "family") -> str:
     """`family` if it is one of :data:`FAMILIES`, else TypeError/ValueError naming them."""
-    if not isinstance(family, str):
-        raise TypeError(f"{name} must be one of {FAMILIES}, got {type(family).__name__}")
-    if family not in FAMILIES:
-        raise ValueError(f"{name} must be one of {FAMILIES}, got {family!r}")
-    return family
+    return check_choice(family, name, FAMILIES)
 
 
 def p_star_bounds(nu: float) -> tuple[float, float]:

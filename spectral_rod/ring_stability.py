@@ -69,6 +69,7 @@ import numpy as np
 import scipy.linalg
 from numpy.typing import NDArray
 
+from spectral_rod._validation import check_choice
 from spectral_rod.errors import RingConvergenceError
 from spectral_rod.ring_formula import check_e_ratio, check_scalar_nu, check_twist_count
 
@@ -89,11 +90,7 @@ EIGH_DRIVER = "gv"
 
 def check_load(load: object, name: str = "load") -> str:
     """One of :data:`RING_LOADS`."""
-    if not isinstance(load, str):
-        raise TypeError(f"{name} must be one of {RING_LOADS}, got {type(load).__name__}")
-    if load not in RING_LOADS:
-        raise ValueError(f"{name} must be one of {RING_LOADS}, got {load!r}")
-    return load
+    return check_choice(load, name, RING_LOADS)
 
 
 def stiffnesses(nu: float, e_ratio: float) -> tuple[float, float, float]:

@@ -24,7 +24,7 @@ from reproduce.claims.evidence import (
     rises_until_first_maximum,
     settling_twist,
 )
-from reproduce.ledger import Claim, ClaimSpec, CrossCheck, Measured, Method, Rule, judge
+from reproduce.ledger import Claim, ClaimSpec, CrossCheck, Measured, Method, Rule, evaluate
 from spectral_rod import (
     beta_difference,
     critical_wavenumbers,
@@ -716,13 +716,10 @@ CLAIMS: tuple[tuple[ClaimSpec, Callable[[StraightRodEvidence], Measured]], ...] 
 
 
 def evaluate_claims(ev: StraightRodEvidence) -> list[Claim]:
-    """Every straight-rod row, judged."""
-    return [judge(spec, measure(ev), SCENE) for spec, measure in CLAIMS]
+    """Every row of this scene, judged."""
+    return evaluate(CLAIMS, ev, SCENE)
 
 
 def evaluate_claim(claim_id: str, ev: StraightRodEvidence) -> Claim:
     """The one row `claim_id`, judged (e.g. to recompute it after perturbing the evidence)."""
-    for spec, measure in CLAIMS:
-        if spec.id == claim_id:
-            return judge(spec, measure(ev), SCENE)
-    raise KeyError(claim_id)
+    return evaluate(CLAIMS, ev, SCENE, claim_id)[0]

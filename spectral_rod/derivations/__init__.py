@@ -10,3 +10,34 @@
 They ship with the package (sympy is a runtime dependency) because the claims ledger runs them:
 ``python -m spectral_rod.derivations.straight_rod`` prints one. The test suite runs them too.
 """
+
+from __future__ import annotations
+
+import importlib
+
+__all__ = ["DERIVATIONS", "derivation_status", "inst1_variant_table"]
+
+#: The derivations by name (module in this package).
+DERIVATIONS = ("straight_rod", "ring_linearisation")
+
+
+def derivation_status(name: str) -> str:
+    """Run one derivation (every step asserts): "all steps checked", or the failed step.
+
+    A failed step is evidence (a wrong equation), not a crash, so it is returned as text.
+    """
+    if name not in DERIVATIONS:
+        raise ValueError(f"name must be one of {DERIVATIONS}, got {name!r}")
+    module = importlib.import_module(f"spectral_rod.derivations.{name}")
+    try:
+        module.derive()
+    except AssertionError as exc:
+        return f"a step failed: {exc!r}"
+    return "all steps checked"
+
+
+def inst1_variant_table() -> list[dict[str, object]]:
+    """The misprinted variants of Eq. inst1 against Figure 1 (see :mod:`.straight_rod`)."""
+    from spectral_rod.derivations.straight_rod import variant_table
+
+    return variant_table()
