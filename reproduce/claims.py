@@ -63,6 +63,16 @@ from spectral_rod import (
 NAME = "claims"
 SUMMARY = ("straight twisted rod: every claim of the paper's straight-rod section, both solvers "
            "-> claims.json/.md, claims_load.png, claims_wavenumbers.png, claims_mode.png")
+#: `python -m reproduce check`: per output file and column (or JSON key), how a regenerated
+#: value may differ from the committed one (rules in reproduce/compare.py).
+CHECK = {
+    "claims.json": {"_owner": "scene", "*.evidence": "text", "*.numbers.headline": "text",
+                    "*.numbers.*": {"rel": 1e-9, "abs": 1e-10},  # abs: agreement measures
+                    "*": "exact"},  # id, claim, test, verdict, figure
+    "sections/claims.json": {"details.timings.*": "ignore",
+                             "details.solver_agreement": {"rel": 1e-6, "abs": 1e-10},
+                             "*": "exact"},
+}
 SECTION = "Sec. 'Stability of a rectilinear rod'"
 #: Asymmetries checked everywhere (Figure 1's 1.1 and 1.5, and beyond it).
 NUS = (1.1, 1.5, 2.0, 5.0, 10.0)

@@ -27,6 +27,18 @@ from spectral_rod import FIGURE1_NU, critical_load, load_figure1
 NAME = "figure1"
 SUMMARY = ("straight twisted rod, Eq. inst1: collocation p*(Omega) vs the digitised Figure 1 "
            "-> figure1.png/.pdf, figure1_comparison.csv")
+#: `python -m reproduce check`: per output file and column (or JSON key), how a regenerated
+#: value may differ from the committed one (rules in reproduce/compare.py).
+CHECK = {
+    "figure1_comparison.csv": {
+        "p_star_computed": {"rel": 2e-12, "floor": "error_estimate"},  # 2 tol, or its estimate
+        "deviation": {"abs": 2e-12},
+        "error_estimate": {"rel": 1e-6, "abs": 1e-12},  # an estimate near round-off
+        "*": "exact",  # the digitised inputs, n, mode_family
+    },
+    "sections/figure1.json": {"details.sweep_seconds": "ignore",
+                              "details.summary.*": {"rel": 1e-9, "abs": 2e-12}, "*": "exact"},
+}
 TOL = 1e-12
 #: Acceptance thresholds of the reproduction (issue 2): per-curve rms and max |deviation|.
 RMS_LIMIT, MAX_LIMIT = 1.5e-4, 6e-4

@@ -54,6 +54,26 @@ from spectral_rod import (
 NAME = "ring"
 SUMMARY = ("twisted ring: Eq. crit2 vs converged Fourier-Galerkin q_cr (hydrostatic, axis) for "
            "N = 0..10 -> ring_table.csv/.md, ring_threshold.csv/.md, ring.png, ring ledger rows")
+#: `python -m reproduce check`: per output file and column (or JSON key), how a regenerated
+#: value may differ from the committed one (rules in reproduce/compare.py).
+CHECK = {
+    "ring_table.csv": {
+        "crit2": 1e-12,
+        "q_hydrostatic": {"rel": 1e-10, "floor": "rel_change_hydrostatic"},
+        "q_axis": {"rel": 1e-10, "floor": "rel_change_axis"},
+        "in_plane_fraction_*": {"rel": 1e-6, "abs": 1e-9},
+        "rel_change_*": {"rel": 1e-6, "abs": 1e-12}, "min_inverse_load_*": {"abs": 1e-12},
+        "rel_dev_*": {"rel": 1e-9, "abs": 1e-12},
+        "*": "exact",  # labels, nu, N, kind, wavenumber, max_frequency
+    },
+    "ring_threshold.csv": {"N_continuous": 1e-12, "crit2_at_*": {"rel": 1e-9, "abs": 1e-12},
+                           "q_*": 1e-9, "*": "exact"},
+    "claims.json": {"_owner": "scene", "*.evidence": "text", "*.numbers.headline": "text",
+                    "*.numbers.*": {"rel": 1e-9, "abs": 1e-10}, "*": "exact"},
+    "sections/ring.json": {"details.timings.*": "ignore",
+                           "details.crit2_deviation.*": {"rel": 1e-9, "abs": 1e-12},
+                           "*": "exact"},
+}
 SECTION = "Sec. 'Stability of a ring'"
 TWISTS = tuple(range(11))
 NUS = (1.0, 1.1, 1.3, 1.5, 2.0, 4.0)

@@ -1,0 +1,48 @@
+"""Signals: SIGTERM is handled like SIGINT, and an interrupt at any moment ends the run with one
+line on stderr, never a traceback.
+
+Both signals raise :class:`Interrupted` (a :class:`KeyboardInterrupt`), so the ``finally``
+clauses of :mod:`reproduce.io` remove the temporary file being written and earlier outputs
+stay whole. After the first signal further ones are ignored while the run unwinds.
+
+>>> interrupted_message(Interrupted(15))
+'python -m reproduce: terminated (SIGTERM); earlier outputs are whole, no partial file left'
+"""
+
+from __future__ import annotations
+
+import signal
+import sys
+from types import FrameType
+
+
+class Interrupted(KeyboardInterrupt):
+    """SIGINT or SIGTERM arrived; `signum` says which."""
+
+    def __init__(self, signum: int = signal.SIGINT) -> None:
+        super().__init__(signum)
+        self.signum = int(signum)
+
+
+def _raise_interrupted(signum: int, frame: FrameType | None) -> None:
+    raise Interrupted(signum)
+
+
+def install_handlers() -> None:
+    """Turn SIGINT and SIGTERM into :class:`Interrupted` (call first thing in a CLI process)."""
+    for sig in (signal.SIGINT, signal.SIGTERM):
+        signal.signal(sig, _raise_interrupted)
+
+
+def interrupted_message(exc: BaseException) -> str:
+    signum = getattr(exc, "signum", signal.SIGINT)
+    what = "terminated (SIGTERM)" if signum == signal.SIGTERM else "interrupted"
+    return f"python -m reproduce: {what}; earlier outputs are whole, no partial file left"
+
+
+def interrupted_exit(exc: BaseException) -> int:
+    """Ignore further signals, print the one-line message; return 128 + the signal number."""
+    for sig in (signal.SIGINT, signal.SIGTERM):
+        signal.signal(sig, signal.SIG_IGN)
+    print(interrupted_message(exc), file=sys.stderr, flush=True)
+    return 128 + int(getattr(exc, "signum", signal.SIGINT))
