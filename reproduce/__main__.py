@@ -27,13 +27,15 @@ def main(argv: list[str] | None = None) -> int:
 
 def entry_point(argv: list[str] | None = None) -> int:
     """Install the signal handlers, then run the CLI; an interrupt anywhere gives one line."""
-    from reproduce.signals import install_handlers, interrupted_exit
+    from reproduce.signals import ignore_signals, install_handlers, interrupted_exit
 
     install_handlers()
     try:
-        return main(argv)
+        status = main(argv)
+        ignore_signals()  # done: a late signal must not turn a finished run into a traceback
     except KeyboardInterrupt as exc:
         return interrupted_exit(exc)
+    return status
 
 
 if __name__ == "__main__":

@@ -34,6 +34,12 @@ def install_handlers() -> None:
         signal.signal(sig, _raise_interrupted)
 
 
+def ignore_signals() -> None:
+    """Ignore SIGINT and SIGTERM from now on (the run is over or unwinding)."""
+    for sig in (signal.SIGINT, signal.SIGTERM):
+        signal.signal(sig, signal.SIG_IGN)
+
+
 def interrupted_message(exc: BaseException) -> str:
     signum = getattr(exc, "signum", signal.SIGINT)
     what = "terminated (SIGTERM)" if signum == signal.SIGTERM else "interrupted"
@@ -42,7 +48,6 @@ def interrupted_message(exc: BaseException) -> str:
 
 def interrupted_exit(exc: BaseException) -> int:
     """Ignore further signals, print the one-line message; return 128 + the signal number."""
-    for sig in (signal.SIGINT, signal.SIGTERM):
-        signal.signal(sig, signal.SIG_IGN)
+    ignore_signals()
     print(interrupted_message(exc), file=sys.stderr, flush=True)
     return 128 + int(getattr(exc, "signum", signal.SIGINT))
