@@ -86,14 +86,15 @@ def _read_table(path: Path) -> pd.DataFrame:
     try:
         df = pd.read_csv(path, dtype=str, keep_default_na=False)
     except pd.errors.EmptyDataError as exc:
-        raise ReferenceDataError(f"{path}: empty file (no header, no data)") from exc
+        raise ReferenceDataError(f"{path}: empty file, not a readable CSV (no header, no "
+                                 f"data)") from exc
     except (ValueError, UnicodeDecodeError, pd.errors.ParserError) as exc:
         raise ReferenceDataError(f"{path}: not a readable CSV ({exc})") from exc
     fields = [f["name"] for f in figure1_schema()["schema"]["fields"]]
     if list(df.columns) != fields:
         missing = [c for c in fields if c not in df.columns]
         raise ReferenceDataError(f"{path}: columns {list(df.columns)} do not match the schema "
-                                 f"{fields}" + (f" (missing {missing})" if missing else ""))
+                                 f"{fields}" + (f" (missing columns {missing})" if missing else ""))
     if df.empty:
         raise ReferenceDataError(f"{path}: header only, no data rows")
     return df
@@ -106,7 +107,7 @@ def _numeric(df: pd.DataFrame, path: Path) -> pd.DataFrame:
     if bad.any():
         row, col = np.argwhere(bad)[0]
         raise ReferenceDataError(f"{path}: data row {row + 1}, column {df.columns[col]!r}: "
-                                 f"{df.iat[row, col]!r} is not a finite number")
+                                 f"{df.iat[row, col]!r} is non-numeric, empty or not finite")
     for f in figure1_schema()["schema"]["fields"]:
         c, v = f["constraints"], num[f["name"]]
         ok = v.between(c.get("minimum", -np.inf), c.get("maximum", np.inf))
