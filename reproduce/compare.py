@@ -78,6 +78,10 @@ def _is_number(x: Any) -> bool:
     return isinstance(x, (int, float)) and not isinstance(x, bool)
 
 
+def _both_nan(a: Any, b: Any) -> bool:
+    return _is_number(a) and _is_number(b) and math.isnan(a) and math.isnan(b)
+
+
 def _as_rule(rule: Any) -> Any:
     return {"rel": float(rule)} if _is_number(rule) else rule
 
@@ -161,8 +165,7 @@ def compare_csv(name: str, old_path: Path, new_path: Path, spec: dict[str, Any]
             a, b = _cell(a), _cell(b)
             est = (float(old[floor].iloc[i]), float(new[floor].iloc[i])) if floor else (0, 0)
             out.compared += 1
-            if a != b and not (_is_number(a) and _is_number(b) and math.isnan(a)
-                               and math.isnan(b)):
+            if a != b and not _both_nan(a, b):
                 out.differences.append(Difference(name, f"row {i + 2}, {col}", a, b,
                                                   _describe(rule),
                                                   not rule_allows(rule, a, b, est)))
@@ -208,7 +211,7 @@ def compare_json(name: str, old_path: Path, new_path: Path, spec: dict[str, Any]
         if key not in old or key not in new:
             out.differences.append(Difference(name, key, old.get(key, "(missing)"),
                                               new.get(key, "(missing)"), "present", True))
-        elif old[key] != new[key]:
+        elif old[key] != new[key] and not _both_nan(old[key], new[key]):
             out.differences.append(Difference(name, key, old[key], new[key], _describe(rule),
                                               not rule_allows(rule, old[key], new[key])))
     return out
