@@ -31,8 +31,9 @@ SUMMARY = ("straight twisted rod, Eq. inst1: collocation p*(Omega) vs the digiti
 #: value may differ from the committed one (rules in reproduce/compare.py).
 CHECK = {
     "figure1_comparison.csv": {
-        "p_star_computed": {"rel": 2e-12, "floor": "error_estimate"},  # 2 tol, or its estimate
-        "deviation": {"abs": 2e-12},
+        # 2 tol, one unit of the 12 printed digits, or the solver's own error estimate
+        "p_star_computed": {"rel": 2e-11, "floor": "error_estimate"},
+        "deviation": {"abs": 2e-11},
         "error_estimate": {"rel": 1e-6, "abs": 1e-12},  # an estimate near round-off
         "*": "exact",  # the digitised inputs, n, mode_family
     },
