@@ -44,6 +44,18 @@ from spectral_rod import (
 NAME = "convergence"
 SUMMARY = ("straight rod, Eq. inst1: error vs resolution and vs time for collocation, finite "
            "differences and the mpmath reference -> convergence_*.png, convergence*.csv")
+#: `python -m reproduce check`: per output file and column (or JSON key), how a regenerated
+#: value may differ from the committed one (rules in reproduce/compare.py).
+CHECK = {
+    "convergence.csv": {"seconds": "ignore",
+                        "rel_error": {"rel": 1e-5, "abs": 1e-12},  # printed to 6 digits
+                        "*": "exact"},
+    "convergence_cost.csv": {"seconds": "ignore", "rel_error": {"rel": 1e-5, "abs": 1e-12},
+                             "*": "exact"},
+    "sections/convergence.json": {"*seconds": "ignore", "details.figure1_speed.*": "ignore",
+                                  "details.cost.*.rel_error": {"rel": 1e-6, "abs": 1e-12},
+                                  "details.fd_slopes.*": 1e-9, "*": "exact"},
+}
 CASES = ((2.0, 1.5), (10.0, 1.1), (30.0, 2.0), (100.0, 1.5))
 TARGETS = (1e-4, 1e-8, 1e-12)
 FD_INTERVALS = (16, 64, 256, 1024, 4096, 16384)

@@ -39,6 +39,19 @@ from spectral_rod import (
 NAME = "extremes"
 SUMMARY = ("straight rod at the extremes: p* and p*-1 errors over the (Omega, nu) plane vs the "
            "mpmath characteristic equation, round-off vs n -> extremes.png, extremes_*.csv")
+#: `python -m reproduce check`: per output file and column (or JSON key), how a regenerated
+#: value may differ from the committed one (rules in reproduce/compare.py).
+_ERROR = {"rel": 1e-6, "abs": 1e-12}  # a measured error: round-off below 1e-12 is noise
+CHECK = {
+    "extremes_grid.csv": {"p_star": {"rel": 2e-12, "floor": "rel_error"},
+                          "p_ref": 1e-14, "rel_error": _ERROR, "*": "exact"},
+    "extremes_increment.csv": {"increment": {"rel": 2e-12, "floor": "rel_error"},
+                               "increment_ref": 1e-14, "rel_error": _ERROR, "*": "exact"},
+    "extremes_resolution.csv": {"p_star": {"rel": 2e-12, "floor": "rel_error"},
+                                "rel_error": _ERROR, "*": "exact"},
+    "extremes_routing.csv": {"*_seconds": "ignore", "*_rel_error": _ERROR, "*": "exact"},
+    "sections/extremes.json": {"details.worst_*": _ERROR, "*": "exact"},
+}
 DPS = 50
 P_TWISTS = (1e-6, 1e-3, 1.0, 5.0, 30.0, 100.0, 300.0, 1000.0)
 P_NUS = (1 + 1e-12, 1 + 1e-8, 1 + 1e-4, 1.5, 10.0, 1e4)

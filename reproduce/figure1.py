@@ -60,6 +60,23 @@ NAME = "figure1"
 SUMMARY = ("straight twisted rod, Eq. inst1: collocation p*(Omega) vs the digitised Figure 1, "
            "every point explained -> figure1.png/.pdf, figure1_comparison.csv, "
            "figure1_forensics.json/.png, ledger row fig1-curves")
+#: `python -m reproduce check`: per output file and column (or JSON key), how a regenerated
+#: value may differ from the committed one (rules in reproduce/compare.py).
+CHECK = {
+    "figure1_comparison.csv": {
+        # 2 tol, one unit of the 12 printed digits, or the solver's own error estimate
+        "p_star_computed": {"rel": 2e-11, "floor": "error_estimate"},
+        "deviation": {"abs": 2e-11},
+        "error_estimate": {"rel": 1e-6, "abs": 1e-12},  # an estimate near round-off
+        "*": "exact",  # the digitised inputs, n, mode_family
+    },
+    "figure1_forensics.json": {"*.max_abs_deviation": {"rel": 1e-6, "abs": 1e-12},
+                               "*.twist_from": 1e-12, "*.twist_to": 1e-12,
+                               "*.explanation": "text", "*": "exact"},
+    "sections/figure1.json": {"details.sweep_seconds": "ignore",
+                              "details.forensics_seconds": "ignore",
+                              "details.summary.*": {"rel": 1e-9, "abs": 2e-12}, "*": "exact"},
+}
 TOL = 1e-12
 #: Acceptance thresholds of the reproduction (issue 2): per-curve rms and max |deviation|.
 RMS_LIMIT, MAX_LIMIT = 1.5e-4, 6e-4

@@ -1,28 +1,62 @@
 """Atomic output: a file appears complete or not at all, so an interrupted run leaves the
-previous results intact (write to a temporary file in the same directory, then rename)."""
+previous results intact (write to a temporary file in the same directory, then rename).
+
+- Temporary files are named ``.NAME~PID~XXXXXXXX.SUFFIX``: a run killed outright (SIGKILL,
+  power loss) cannot clean up, so :func:`remove_stale_temporaries` deletes, at the start of the
+  next run, those whose process is gone (a concurrent live run's files are left alone), and
+  the ``.NAME-XXXXXXXX.SUFFIX`` files that earlier versions of this module left behind.
+- Outputs get the permissions of a normally created file (``0o666`` less the umask), not the
+  ``0o600`` of :func:`tempfile.mkstemp`, which would survive the rename.
+- A failed write (disk full, quota, I/O error) raises :class:`OSError` naming the output file.
+"""
 
 from __future__ import annotations
 
 import contextlib
 import os
+import re
 import tempfile
 from collections.abc import Callable, Iterator
 from pathlib import Path
 
 
+def _current_umask() -> int:
+    mask = os.umask(0o022)
+    os.umask(mask)
+    return mask
+
+
+def output_mode() -> int:
+    """Permission bits of a new output file: ``0o666`` less the process umask."""
+    return 0o666 & ~_current_umask()
+
+
+def _temp_prefix(path: Path) -> str:
+    return f".{path.name}~{os.getpid()}~"
+
+
 @contextlib.contextmanager
 def atomic_path(path: str | os.PathLike[str]) -> Iterator[Path]:
-    """Yield a temporary path next to `path`; on success rename it onto `path`."""
+    """Yield a temporary path next to `path`; on success rename it onto `path`.
+
+    >>> with atomic_path(Path(tempfile.mkdtemp()) / "a.txt") as tmp:
+    ...     _ = tmp.write_text("x")
+    """
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.stem}-", suffix=path.suffix, dir=path.parent)
-    os.close(fd)
-    tmp_path = Path(tmp)
+    tmp_path: Path | None = None
     try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(prefix=_temp_prefix(path), suffix=path.suffix,
+                                   dir=path.parent)
+        os.close(fd)
+        tmp_path = Path(tmp)
         yield tmp_path
+        os.chmod(tmp_path, output_mode())
         os.replace(tmp_path, path)
+    except OSError as exc:
+        raise OSError(exc.errno, f"cannot write {path}: {exc.strerror or exc}") from exc
     finally:
-        if tmp_path.exists():
+        if tmp_path is not None and tmp_path.exists():
             tmp_path.unlink()
 
 
@@ -40,6 +74,47 @@ def write_with(path: str | os.PathLike[str], writer: Callable[[Path], object]) -
     return Path(path)
 
 
+#: ``.NAME~PID~XXXXXXXX.SUFFIX`` (this module) and ``.STEM-XXXXXXXX.SUFFIX`` (earlier versions,
+#: whose mkstemp names had 8 random characters) and ``.probe-XXXXXXXX``.
+_TEMP = re.compile(r"^\.(?P<name>.+)~(?P<pid>\d+)~[a-z0-9_]{8}(?P<suffix>\.\w+)?$")
+_LEGACY = re.compile(r"^\.(?P<stem>.+)-[a-z0-9_]{8}(?P<suffix>\.\w+)?$")
+
+
+def _alive(pid: int) -> bool:
+    if pid == os.getpid():
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:  # exists, owned by someone else
+        return True
+    return True
+
+
+def _is_stale(entry: Path) -> bool:
+    m = _TEMP.match(entry.name)
+    if m:
+        return not _alive(int(m["pid"]))
+    m = _LEGACY.match(entry.name)
+    return bool(m) and (m["stem"] == "probe"
+                        or (entry.parent / f"{m['stem']}{m['suffix'] or ''}").exists())
+
+
+def remove_stale_temporaries(directory: str | os.PathLike[str]) -> list[Path]:
+    """Delete temporary files of dead runs in `directory` and its ``sections/``; return them."""
+    removed = []
+    for folder in (Path(directory), Path(directory) / "sections"):
+        if not folder.is_dir():
+            continue
+        for entry in folder.iterdir():
+            if entry.name.startswith(".") and entry.is_file() and _is_stale(entry):
+                with contextlib.suppress(FileNotFoundError):
+                    entry.unlink()
+                    removed.append(entry)
+    return removed
+
+
 def ensure_writable_dir(directory: str | os.PathLike[str]) -> Path:
     """Create `directory` if needed and check that files can be created in it.
 
@@ -48,9 +123,9 @@ def ensure_writable_dir(directory: str | os.PathLike[str]) -> Path:
     directory = Path(directory)
     try:
         directory.mkdir(parents=True, exist_ok=True)
-        with tempfile.NamedTemporaryFile(dir=directory, prefix=".probe-"):
+        with tempfile.NamedTemporaryFile(dir=directory, prefix=f".probe~{os.getpid()}~"):
             pass
     except OSError as exc:
-        raise OSError(f"output directory {directory} is not writable: {exc.strerror or exc}") \
-            from exc
+        raise OSError(exc.errno, f"output directory {directory} is not writable: "
+                                 f"{exc.strerror or exc}") from exc
     return directory

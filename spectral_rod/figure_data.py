@@ -1,8 +1,11 @@
 """Figure 1 of the paper as data: parse the LaTeX `picture`, load and validate the CSV.
 
 The digitised points ship with the package (``spectral_rod/data/figure1_digitised.csv``, with
-its provenance ``figure1_digitised.md``); :func:`load_figure1` reads them through
-``importlib.resources``, so an installed package needs no source checkout and no paper.
+its provenance ``figure1_digitised.md`` and its schema ``figure1_digitised.json``, a Frictionless
+tabular data resource: field names, units, source figure, curves, quantisation);
+:func:`load_figure1` reads them through ``importlib.resources``, so an installed package needs no
+source checkout and no paper, and validates any file against that schema: an error
+(:class:`ReferenceDataError`, a ``ValueError``) names the file and the problem.
 
 The figure is drawn with ``\\put(x, y){\\circle*{1.0}}`` in a 100 x 100 box: Omega(L) = x/10
 (0..10) and p* = 1 + y/400 (1.00..1.25). The three curves follow each other in the source;
@@ -11,7 +14,9 @@ a new curve starts where x falls back to the left edge. Curves 1, 2, 3 are nu = 
 
 from __future__ import annotations
 
+import json
 import re
+from functools import cache
 from importlib import resources
 from pathlib import Path
 
@@ -20,6 +25,8 @@ import pandas as pd
 
 FIGURE1_NU = (1.1, 1.3, 1.5)
 COLUMNS = ("curve", "nu", "picture_x", "picture_y", "twist_angle", "p_star")
+#: Quantum of the picture's coordinates (printed with two decimals).
+PICTURE_STEP = 0.01
 _PUT = re.compile(r"\\put\(\s*([-+0-9.]+)\s*,\s*([-+0-9.]+)\s*\)\s*\{\\circle\*")
 
 
@@ -54,6 +61,10 @@ def parse_figure1(tex: str) -> pd.DataFrame:
     return df[list(COLUMNS)]
 
 
+class ReferenceDataError(ValueError):
+    """The digitised Figure 1 file is unreadable or breaks its schema (message names both)."""
+
+
 def figure1_path() -> Path:
     """The packaged digitised Figure 1 (a file inside the installed package: read it only)."""
     return Path(str(resources.files("spectral_rod") / "data" / "figure1_digitised.csv"))
@@ -66,38 +77,111 @@ def figure1_picture() -> str:
         encoding="utf-8")
 
 
+@cache
+def figure1_schema() -> dict:
+    """The packaged schema of the digitised Figure 1 (``figure1_digitised.json``)."""
+    text = (resources.files("spectral_rod") / "data" / "figure1_digitised.json").read_text(
+        encoding="utf-8")
+    return json.loads(text)
+
+
+def _read_table(path: Path) -> pd.DataFrame:
+    """The CSV as text cells, with its header checked against the schema's field names."""
+    if not path.exists():
+        raise FileNotFoundError(f"reference data file {path} is missing; regenerate it with "
+                                f"`python reference_data/extract_figure1.py`")
+    try:
+        df = pd.read_csv(path, dtype=str, keep_default_na=False)
+    except pd.errors.EmptyDataError as exc:
+        raise ReferenceDataError(f"{path}: empty file, not a readable CSV (no header, no "
+                                 f"data)") from exc
+    except (ValueError, UnicodeDecodeError, pd.errors.ParserError) as exc:
+        raise ReferenceDataError(f"{path}: not a readable CSV ({exc})") from exc
+    fields = [f["name"] for f in figure1_schema()["schema"]["fields"]]
+    if list(df.columns) != fields:
+        missing = [c for c in fields if c not in df.columns]
+        raise ReferenceDataError(f"{path}: columns {list(df.columns)} do not match the schema "
+                                 f"{fields}" + (f" (missing columns {missing})" if missing else ""))
+    if df.empty:
+        raise ReferenceDataError(f"{path}: header only, no data rows")
+    return df
+
+
+def _numeric(df: pd.DataFrame, path: Path) -> pd.DataFrame:
+    """Every cell as a finite number, within its field's constraints (errors name the row)."""
+    num = df.apply(pd.to_numeric, errors="coerce")
+    bad = ~np.isfinite(num.to_numpy(dtype=float))
+    if bad.any():
+        row, col = np.argwhere(bad)[0]
+        raise ReferenceDataError(f"{path}: data row {row + 1}, column {df.columns[col]!r}: "
+                                 f"{df.iat[row, col]!r} is non-numeric, empty or not finite")
+    for f in figure1_schema()["schema"]["fields"]:
+        c, v = f["constraints"], num[f["name"]]
+        ok = v.between(c.get("minimum", -np.inf), c.get("maximum", np.inf))
+        if "enum" in c:
+            ok &= np.isclose(v.to_numpy()[:, None], np.asarray(c["enum"])[None, :]).any(axis=1)
+        if not ok.all():
+            row = int(np.flatnonzero(~ok.to_numpy())[0])
+            raise ReferenceDataError(f"{path}: data row {row + 1}: {f['name']} = {v.iloc[row]} "
+                                     f"breaks the schema ({c})")
+    return num
+
+
+def _check_consistency(num: pd.DataFrame, path: Path) -> None:
+    """Curve -> nu, picture -> (Omega, p*) mapping and the two-decimal picture grid."""
+    if not np.allclose(num["nu"], np.asarray(FIGURE1_NU)[num["curve"].astype(int) - 1]):
+        raise ReferenceDataError(f"{path}: column 'nu' does not match curves 1,2,3 = nu "
+                                 f"{FIGURE1_NU}")
+    if not (np.allclose(num["twist_angle"], twist_from_picture(num["picture_x"]))
+            and np.allclose(num["p_star"], p_star_from_picture(num["picture_y"]))):
+        raise ReferenceDataError(f"{path}: twist_angle/p_star do not follow from "
+                                 f"picture_x/picture_y (Omega = x/10, p* = 1 + y/400)")
+    xy = num[["picture_x", "picture_y"]].to_numpy() / PICTURE_STEP
+    if not np.allclose(xy, np.round(xy), rtol=0, atol=1e-6):
+        raise ReferenceDataError(f"{path}: picture coordinates are not on the "
+                                 f"{PICTURE_STEP} grid the paper prints")
+
+
+def _check_curves(num: pd.DataFrame, path: Path) -> None:
+    """No duplicates; curves in order with the schema's point counts; x strictly increasing
+    within a curve by one of the schema's steps (the paper's grid has a few irregular ones)."""
+    dup = num.duplicated(subset=["curve", "picture_x"], keep="first").to_numpy()
+    if dup.any():
+        raise ReferenceDataError(f"{path}: {int(dup.sum())} duplicated (curve, picture_x) "
+                                 f"row(s), the first at data row {int(np.argmax(dup)) + 1}")
+    curve = num["curve"].to_numpy()
+    if (np.diff(curve) < 0).any():
+        raise ReferenceDataError(f"{path}: rows are not grouped by curve 1, 2, 3 in order")
+    meta = figure1_schema()["x-figure1"]
+    for spec in meta["curves"]:
+        count = int((curve == spec["curve"]).sum())
+        if count != spec["points"]:
+            raise ReferenceDataError(f"{path}: curve {spec['curve']} (nu = {spec['nu']}) has "
+                                     f"{count} points, expected {spec['points']} (truncated or "
+                                     f"edited file?)")
+    steps = np.asarray(meta["x_steps"]["picture_units"])
+    for c, x in num.groupby("curve")["picture_x"]:
+        dx = np.diff(x.to_numpy())
+        odd = ~np.isclose(dx[:, None], steps[None, :], rtol=0, atol=1e-9).any(axis=1)
+        if odd.any():
+            at = float(x.to_numpy()[int(np.argmax(odd))])
+            raise ReferenceDataError(f"{path}: curve {c}: x step {dx[np.argmax(odd)]:g} after "
+                                     f"picture_x = {at:g} is not one of {steps.tolist()} (x "
+                                     f"must increase strictly along the paper's grid)")
+
+
 def load_figure1(path: str | Path | None = None) -> pd.DataFrame:
-    """The digitised Figure 1 (default: the packaged CSV), checked; errors name the file and
-    the problem.
+    """The digitised Figure 1 (default: the packaged CSV), validated against the packaged
+    schema; errors (:class:`ReferenceDataError`, ``FileNotFoundError``) name the file and the
+    problem.
 
     >>> df = load_figure1()
     >>> len(df), sorted(df["nu"].unique().tolist())
     (1201, [1.1, 1.3, 1.5])
     """
     path = figure1_path() if path is None else Path(path)
-    if not path.exists():
-        raise FileNotFoundError(f"reference data file {path} is missing; regenerate it with "
-                                f"`python reference_data/extract_figure1.py`")
-    try:
-        df = pd.read_csv(path)
-    except Exception as exc:
-        raise ValueError(f"{path}: not a readable CSV ({exc})") from exc
-    missing = [c for c in COLUMNS if c not in df.columns]
-    if missing:
-        raise ValueError(f"{path}: missing columns {missing} (expected {list(COLUMNS)})")
-    num = df[list(COLUMNS)].apply(pd.to_numeric, errors="coerce")
-    if num.isna().any().any():
-        bad = int(num.isna().any(axis=1).to_numpy().argmax())
-        raise ValueError(f"{path}: non-numeric or empty value in data row {bad + 1}")
-    if not set(num["curve"].unique()) <= {1, 2, 3}:
-        raise ValueError(f"{path}: column 'curve' must be 1, 2 or 3")
-    if not np.allclose(num["nu"], np.asarray(FIGURE1_NU)[num["curve"].astype(int) - 1]):
-        raise ValueError(f"{path}: column 'nu' does not match curves 1,2,3 = nu {FIGURE1_NU}")
-    if not (np.allclose(num["twist_angle"], twist_from_picture(num["picture_x"]))
-            and np.allclose(num["p_star"], p_star_from_picture(num["picture_y"]))):
-        raise ValueError(f"{path}: twist_angle/p_star do not follow from picture_x/picture_y "
-                         f"(Omega = x/10, p* = 1 + y/400)")
-    if not ((num["twist_angle"] >= 0) & (num["twist_angle"] <= 10)).all():
-        raise ValueError(f"{path}: twist_angle outside the figure's range [0, 10]")
+    num = _numeric(_read_table(path), path)
+    _check_consistency(num, path)
+    _check_curves(num, path)
     num["curve"] = num["curve"].astype(int)
     return num

@@ -104,7 +104,7 @@ def test_fast_path_picks_the_rule_eigenvalue(n):
         nv = np.full(twist.size, nu)
         lam, _, _ = solve_family(n, family, twist, nv)
         a, b = family_operator(n, family).pencil(twist, nv)
-        theta, _ = physical_eig(np.linalg.solve(a, b))
+        theta, _ = physical_eig(np.linalg.solve(a, np.broadcast_to(b, a.shape)))
         rule = 1.0 / theta
         # both are computed in double precision; the full eig loses ~eps Omega^2 at large twist
         assert np.all(np.abs(lam / rule - 1) <= 1e-13 + 1e-15 * twist**2), (nu, family)

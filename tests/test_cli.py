@@ -10,6 +10,7 @@ from pathlib import Path
 import pytest
 
 import reproduce.__main__ as cli
+import reproduce.cli
 from reproduce.io import write_text, write_with
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -74,7 +75,7 @@ def test_interrupted_run_exits_130_with_message(monkeypatch, capsys, tmp_path):
     def interrupted(*args, **kwargs):
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(cli, "run_scenes", interrupted)
+    monkeypatch.setattr(reproduce.cli, "run_scenes", interrupted)
     assert cli.main(["extremes", "--out", str(tmp_path)]) == 130
     assert "interrupted" in capsys.readouterr().err
 

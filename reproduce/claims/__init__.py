@@ -33,6 +33,18 @@ NAME = "claims"
 SUMMARY = ("straight twisted rod: every claim of the paper's straight-rod section, both solvers "
            "-> claims.json/.md, claims_load.png, claims_wavenumbers.png, claims_mode.png")
 
+#: `python -m reproduce check`: per output file and column (or JSON key), how a regenerated
+#: value may differ from the committed one (rules in reproduce/compare.py).
+CHECK = {
+    "claims.json": {"_owner": "scene", "*.evidence": "text", "*.numbers.headline": "text",
+                    "*.numbers.*": {"rel": 1e-9, "abs": 1e-10},  # abs: agreement measures
+                    "*.cross_checks.*.disagreement": {"rel": 1e-6, "abs": 1e-10},
+                    "*": "exact"},  # id, claim, test, verdict, methods, rule, figure
+    "sections/claims.json": {"details.timings.*": "ignore",
+                             "details.solver_agreement": {"rel": 1e-6, "abs": 1e-10},
+                             "*": "exact"},
+}
+
 __all__ = ["CLAIMS", "NAME", "SUMMARY", "compute_evidence", "evaluate_claim", "evaluate_claims",
            "run"]
 

@@ -51,6 +51,32 @@ SUMMARY = ("twisted ring: Eq. crit2 vs the converged q_cr in two formulations (s
            "Munder), both load models -> ring_table.*, ring_threshold.*, ring_formulations.csv, "
            "ring_wide.csv, ring.png, ring ledger rows")
 
+#: `python -m reproduce check`: per output file and column (or JSON key), how a regenerated
+#: value may differ from the committed one (rules in reproduce/compare.py).
+CHECK = {
+    "ring_table.csv": {
+        "crit2": 1e-12,
+        "q_hydrostatic": {"rel": 1e-10, "floor": "rel_change_hydrostatic"},
+        "q_axis": {"rel": 1e-10, "floor": "rel_change_axis"},
+        "in_plane_fraction_*": {"rel": 1e-6, "abs": 1e-9},
+        "rel_change_*": {"rel": 1e-6, "abs": 1e-12}, "min_inverse_load_*": {"abs": 1e-12},
+        "rel_dev_*": {"rel": 1e-9, "abs": 1e-12},
+        "*": "exact",  # labels, nu, N, kind, wavenumber, max_frequency
+    },
+    "ring_threshold.csv": {"N_continuous": 1e-12, "crit2_at_*": {"rel": 1e-9, "abs": 1e-12},
+                           "q_*": 1e-9, "*": "exact"},
+    "ring_formulations.csv": {"q_*": 1e-10, "rel_diff": {"abs": 1e-12},
+                              "e_ratio": 1e-14, "nu": 1e-14, "*": "exact"},
+    "ring_wide.csv": {"q": 1e-10, "*": "exact"},
+    "claims.json": {"_owner": "scene", "*.evidence": "text", "*.numbers.headline": "text",
+                    "*.numbers.*": {"rel": 1e-9, "abs": 1e-10},
+                    "*.cross_checks.*.disagreement": {"rel": 1e-6, "abs": 1e-10},
+                    "*": "exact"},
+    "sections/ring.json": {"details.timings.*": "ignore",
+                           "details.crit2_deviation.*": {"rel": 1e-9, "abs": 1e-12},
+                           "*": "exact"},
+}
+
 __all__ = ["CLAIMS", "E_RATIOS", "NAME", "NUS", "SUMMARY", "TWISTS", "RingEvidence",
            "compute_evidence", "evaluate_claim", "evaluate_claims", "run"]
 

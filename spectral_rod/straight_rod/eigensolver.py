@@ -361,7 +361,7 @@ def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np
     bad = np.flatnonzero(~(ok | above))
     if bad.size:  # the full eig with the rule decides
         a, b = op.pencil(twist[bad], nu[bad])
-        theta, vec[bad] = physical_eig(np.linalg.solve(a, b))
+        theta, vec[bad] = physical_eig(np.linalg.solve(a, np.broadcast_to(b, a.shape)))
         valid = np.isfinite(theta) & (theta > 0)
         lam[bad] = np.where(valid, 1.0 / np.where(valid, theta, 1.0), np.inf)
     tails = np.full(twist.size, np.inf)
@@ -375,7 +375,9 @@ def _solve_family_eig(n: int, family: str, twist: NDArray[np.float64], nu: NDArr
     """:func:`solve_family` by the full ``eig`` of A^{-1} B and the rule (the reference path)."""
     op = family_operator(n, family)
     a, b = op.pencil(twist, nu)
-    theta, vec = physical_eig(np.linalg.solve(a, b))
+    # B broadcast to A's stack: numpy < 2.0 would read a (m, m) right-hand side against a
+    # (k, m, m) stack as a stack of m-vectors, not as one right-hand matrix per system
+    theta, vec = physical_eig(np.linalg.solve(a, np.broadcast_to(b, a.shape)))
     valid = np.isfinite(theta) & (theta > 0)
     lam = np.where(valid, 1.0 / np.where(valid, theta, 1.0), np.inf)
     return lam, np.where(valid, mode_tails(op, vec), np.inf), vec

@@ -1,0 +1,233 @@
+"""Compare a regenerated output file with a committed one under declared tolerances.
+
+Each scene declares, next to what it writes, a module-level ``CHECK`` mapping an output file
+name (``.csv`` or ``.json``) to a *spec*: ``{pattern: rule}``, where `pattern` is a CSV column
+name or a dotted JSON key path (``fnmatch`` wildcards; the first matching pattern wins) and
+`rule` is one of
+
+- ``"ignore"``: not compared (measured timings, anything machine-dependent);
+- ``"exact"``: identical (verdicts, labels, booleans, integers; numbers compared as numbers);
+- ``"text"``: prose with numbers in it: the words identical, each number within the rule's
+  defaults or one and a half units of its last printed digit (rounding may flip that digit);
+- a float ``r``: relative tolerance, ``|new - old| <= r |old|``;
+- a dict with any of ``rel``, ``abs`` and ``floor`` (the name of a column holding the solver's
+  own relative error estimate for that row): ``|new - old| <= max(rel |old|, abs,
+  max(est_old, est_new) |old|)``.
+
+A spec may also hold ``"_owner": KEY`` (for a JSON list of rows with an ``id``, like
+``claims.json``, which several scenes share): only the rows whose ``KEY`` equals the scene's
+name are compared. Values no pattern matches are compared by :data:`DEFAULT_RULE` and reported
+as undeclared. Non-finite numbers must match exactly; a missing file, column, row or key, or a
+changed number of rows, is a regression.
+
+>>> rule_allows({"rel": 1e-9}, 1.0, 1.0 + 1e-10)
+True
+>>> rule_allows({"rel": 1e-9}, 1.0, 1.0 + 1e-6)
+False
+"""
+
+from __future__ import annotations
+
+import fnmatch
+import json
+import math
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import pandas as pd
+
+#: Rule for values that no pattern of the scene's CHECK matches.
+DEFAULT_RULE: dict[str, float] = {"rel": 1e-9}
+#: Absolute slack for numbers inside prose (``"text"``): values this small printed in the
+#: evidence are round-off or solver-agreement measures (e.g. ``4.2e-16``, ``2.2e-11 in Omega``),
+#: noise rather than results.
+TEXT_ABS = 1e-10
+_NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
+
+
+@dataclass
+class Difference:
+    """One compared value that changed: where, the two values, and whether it is allowed."""
+
+    file: str
+    where: str
+    committed: Any
+    regenerated: Any
+    allowed: str
+    regression: bool
+
+
+@dataclass
+class FileComparison:
+    """Outcome for one file: how many values were compared, which changed, which undeclared."""
+
+    file: str
+    compared: int = 0
+    ignored: int = 0
+    differences: list[Difference] = field(default_factory=list)
+    undeclared: set[str] = field(default_factory=set)
+
+    @property
+    def regressions(self) -> list[Difference]:
+        return [d for d in self.differences if d.regression]
+
+
+def _is_number(x: Any) -> bool:
+    return isinstance(x, (int, float)) and not isinstance(x, bool)
+
+
+def _both_nan(a: Any, b: Any) -> bool:
+    return _is_number(a) and _is_number(b) and math.isnan(a) and math.isnan(b)
+
+
+def _as_rule(rule: Any) -> Any:
+    return {"rel": float(rule)} if _is_number(rule) else rule
+
+
+def rule_for(spec: dict[str, Any], name: str) -> tuple[Any, bool]:
+    """The rule of the first pattern in `spec` matching `name`, and whether one was declared."""
+    for pattern, rule in spec.items():
+        if not pattern.startswith("_") and fnmatch.fnmatchcase(name, pattern):
+            return _as_rule(rule), True
+    return DEFAULT_RULE, False
+
+
+def _last_digit_unit(token: str) -> float:
+    """Value of one unit in the last printed digit of a number token ('8.27e-04' -> 1e-6)."""
+    mantissa, _, exponent = token.lower().partition("e")
+    decimals = len(mantissa.split(".")[1]) if "." in mantissa else 0
+    return 10.0 ** (int(exponent or 0) - decimals)
+
+
+def _text_allows(old: str, new: str) -> bool:
+    if _NUMBER.sub("#", old) != _NUMBER.sub("#", new):
+        return False
+    for a, b in zip(_NUMBER.findall(old), _NUMBER.findall(new), strict=True):
+        slack = max(TEXT_ABS, DEFAULT_RULE["rel"] * abs(float(a)),
+                    1.5 * max(_last_digit_unit(a), _last_digit_unit(b)))
+        if abs(float(a) - float(b)) > slack:
+            return False
+    return True
+
+
+def rule_allows(rule: Any, old: Any, new: Any, est: tuple[float, float] = (0.0, 0.0)) -> bool:
+    """Whether `new` may replace `old` under `rule` (`est`: the row's error estimates)."""
+    if rule == "ignore":
+        return True
+    if rule == "text" and isinstance(old, str) and isinstance(new, str):
+        return _text_allows(old, new)
+    if not (_is_number(old) and _is_number(new)):
+        return old == new
+    if not (math.isfinite(old) and math.isfinite(new)):
+        return old == new or (math.isnan(old) and math.isnan(new))
+    if rule in ("exact", "text"):
+        return old == new
+    scale = max(rule.get("rel", 0.0), *(e for e in est if math.isfinite(e))) * abs(old)
+    return abs(new - old) <= max(scale, rule.get("abs", 0.0))
+
+
+def _describe(rule: Any) -> str:
+    if isinstance(rule, dict):
+        return ", ".join(f"{k} {v:g}" if _is_number(v) else f"{k} {v}" for k, v in rule.items())
+    return str(rule)
+
+
+def _cell(x: Any) -> Any:
+    """A CSV cell as a Python value (numbers as float, NaN kept, strings as they are)."""
+    if isinstance(x, str):
+        return x
+    if x is None or (isinstance(x, float) and math.isnan(x)):
+        return math.nan
+    return x.item() if hasattr(x, "item") else x
+
+
+def compare_csv(name: str, old_path: Path, new_path: Path, spec: dict[str, Any]
+                ) -> FileComparison:
+    """Compare two CSV files row by row, column by column, under `spec`."""
+    out = FileComparison(name)
+    old, new = pd.read_csv(old_path), pd.read_csv(new_path)
+    if list(old.columns) != list(new.columns) or len(old) != len(new):
+        out.differences.append(Difference(
+            name, "shape", f"{len(old)} rows x {list(old.columns)}",
+            f"{len(new)} rows x {list(new.columns)}", "same rows and columns", True))
+        return out
+    for col in old.columns:
+        rule, declared = rule_for(spec, col)
+        if not declared:
+            out.undeclared.add(col)
+        if rule == "ignore":
+            out.ignored += len(old)
+            continue
+        floor = rule.get("floor") if isinstance(rule, dict) else None
+        for i, (a, b) in enumerate(zip(old[col], new[col], strict=True)):
+            a, b = _cell(a), _cell(b)
+            est = (float(old[floor].iloc[i]), float(new[floor].iloc[i])) if floor else (0, 0)
+            out.compared += 1
+            if a != b and not _both_nan(a, b):
+                out.differences.append(Difference(name, f"row {i + 2}, {col}", a, b,
+                                                  _describe(rule),
+                                                  not rule_allows(rule, a, b, est)))
+    return out
+
+
+def _flatten(obj: Any, prefix: str = "") -> dict[str, Any]:
+    """Leaves of a JSON value by dotted path; rows of a list with ``id`` keys go by that id."""
+    if isinstance(obj, dict):
+        items = [(str(k), v) for k, v in obj.items()]
+    elif isinstance(obj, list):
+        keyed = all(isinstance(r, dict) and "id" in r for r in obj) and obj
+        items = [(str(r["id"]) if keyed else str(i), r) for i, r in enumerate(obj)]
+    else:
+        return {prefix: obj}
+    flat: dict[str, Any] = {}
+    for key, value in items:
+        flat.update(_flatten(value, f"{prefix}.{key}" if prefix else key))
+    return flat or {prefix: obj}
+
+
+def _owned(rows: Any, owner: str | None, scene: str) -> Any:
+    if owner is None or not isinstance(rows, list):
+        return rows
+    return [r for r in rows if isinstance(r, dict) and r.get(owner) == scene]
+
+
+def compare_json(name: str, old_path: Path, new_path: Path, spec: dict[str, Any],
+                 scene: str) -> FileComparison:
+    """Compare two JSON files leaf by leaf under `spec`."""
+    out = FileComparison(name)
+    owner = spec.get("_owner")
+    old = _flatten(_owned(json.loads(old_path.read_text(encoding="utf-8")), owner, scene))
+    new = _flatten(_owned(json.loads(new_path.read_text(encoding="utf-8")), owner, scene))
+    for key in sorted(set(old) | set(new)):
+        rule, declared = rule_for(spec, key)
+        if not declared:
+            out.undeclared.add(key)
+        if rule == "ignore":
+            out.ignored += 1
+            continue
+        out.compared += 1
+        if key not in old or key not in new:
+            out.differences.append(Difference(name, key, old.get(key, "(missing)"),
+                                              new.get(key, "(missing)"), "present", True))
+        elif old[key] != new[key] and not _both_nan(old[key], new[key]):
+            out.differences.append(Difference(name, key, old[key], new[key], _describe(rule),
+                                              not rule_allows(rule, old[key], new[key])))
+    return out
+
+
+def compare_file(name: str, committed_dir: Path, fresh_dir: Path, spec: dict[str, Any] | str,
+                 scene: str) -> FileComparison:
+    """Compare ``committed_dir/name`` with ``fresh_dir/name`` (CSV or JSON) under `spec`."""
+    old_path, new_path = committed_dir / name, fresh_dir / name
+    if spec == "ignore":
+        return FileComparison(name)
+    spec = spec if isinstance(spec, dict) else {}
+    if not (old_path.exists() and new_path.exists()):
+        state = {True: "present", False: "(missing)"}
+        return FileComparison(name, differences=[Difference(
+            name, "file", state[old_path.exists()], state[new_path.exists()], "present", True)])
+    if name.endswith(".csv"):
+        return compare_csv(name, old_path, new_path, spec)
+    return compare_json(name, old_path, new_path, spec, scene)

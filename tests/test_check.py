@@ -1,0 +1,109 @@
+"""`python -m reproduce check`: tolerance rules, the fast variant against the committed outputs,
+and a tampered committed number (issue 13, item 3)."""
+
+from __future__ import annotations
+
+import json
+import shutil
+from pathlib import Path
+
+import pandas as pd
+import pytest
+
+from reproduce import cli
+from reproduce._runner import SCENE_MODULES, load_scene, run_scenes
+from reproduce.check import run_check, scene_specs
+from reproduce.compare import compare_json, rule_allows, rule_for
+
+ROOT = Path(__file__).resolve().parent.parent
+COMMITTED = ROOT / "paper_figures"
+
+
+def test_rules():
+    assert rule_allows({"rel": 1e-9}, 2.0, 2.0 + 1e-9)
+    assert not rule_allows({"rel": 1e-9}, 2.0, 2.0 + 1e-8)
+    assert rule_allows({"rel": 1e-12, "floor": "e"}, 1.0, 1.0 + 5e-11, est=(1e-10, 0.0))
+    assert not rule_allows({"rel": 1e-12, "floor": "e"}, 1.0, 1.0 + 5e-11, est=(1e-11, 0.0))
+    assert rule_allows({"abs": 1e-12}, 1e-16, 9e-13) and not rule_allows({"abs": 1e-12}, 0, 2e-12)
+    assert not rule_allows({"rel": 1.0}, float("nan"), 1.0)
+    assert not rule_allows({"rel": 1.0}, float("inf"), 1e300)
+    assert not rule_allows("exact", "holds", "holds approximately")
+    assert rule_allows("text", "p* = 1.196030794, gap 4.2e-16", "p* = 1.196030795, gap 3.1e-16")
+    assert not rule_allows("text", "p* = 1.196030794", "p* = 1.196031794")
+    assert not rule_allows("text", "rises: True", "rises: False")
+    assert rule_for({"a_*": "ignore", "*": "exact"}, "a_seconds") == ("ignore", True)
+    assert rule_for({"x": 1e-3}, "y")[1] is False
+
+
+def _ledger(path: Path, verdict: str, value: float) -> Path:
+    rows = [{"id": "c1", "scene": "s", "verdict": verdict, "numbers": {"p": value}},
+            {"id": "c2", "scene": "other", "verdict": "fails", "numbers": {"p": 9.0}}]
+    path.write_text(json.dumps(rows), encoding="utf-8")
+    return path
+
+
+def test_json_rows_by_owner_and_verdicts(tmp_path):
+    spec = {"_owner": "scene", "*.verdict": "exact", "*.numbers.*": 1e-9, "*": "exact"}
+    old = _ledger(tmp_path / "old.json", "holds", 1.0)
+    same = tmp_path / "same.json"
+    same.write_text(json.dumps(json.loads(old.read_text())[:1]), encoding="utf-8")
+    assert compare_json("c", old, same, spec, "s").regressions == []  # other scene's row skipped
+    flipped = _ledger(tmp_path / "new.json", "holds approximately", 1.0)
+    assert [d.where for d in compare_json("c", old, flipped, spec, "s").regressions] == [
+        "c1.verdict"]
+    moved = _ledger(tmp_path / "moved.json", "holds", 1.0 + 1e-6)
+    assert [d.where for d in compare_json("c", old, moved, spec, "s").regressions] == [
+        "c1.numbers.p"]
+
+
+@pytest.fixture(scope="module")
+def fresh_figure1(tmp_path_factory) -> Path:
+    out = tmp_path_factory.mktemp("fresh")
+    run_scenes(["figure1"], out, lambda msg: None)
+    return out
+
+
+def test_fast_check_figure1_against_committed(fresh_figure1, capsys):
+    if not (COMMITTED / "figure1_comparison.csv").exists():
+        pytest.skip("no committed paper_figures/ in this checkout")
+    assert run_check(["figure1"], COMMITTED, lambda m: None, fresh=fresh_figure1) == 0
+    assert "0 regression(s)" in capsys.readouterr().out
+
+
+def _copy_committed_figure1(dst: Path, source: Path) -> Path:
+    (dst / "sections").mkdir(parents=True)
+    for name in ("figure1_comparison.csv", "sections/figure1.json"):
+        shutil.copy(source / name, dst / name)
+    return dst / "figure1_comparison.csv"
+
+
+def test_tampered_committed_number_fails(fresh_figure1, tmp_path, capsys):
+    csv = _copy_committed_figure1(tmp_path / "committed", fresh_figure1)
+    table = pd.read_csv(csv)
+    table.loc[100, "p_star_computed"] *= 1 + 1e-6
+    table.to_csv(csv, index=False, float_format="%.12g")
+    assert run_check(["figure1"], csv.parent, lambda m: None, fresh=fresh_figure1) == 1
+    out = capsys.readouterr().out
+    assert "row 102, p_star_computed" in out and "FAIL" in out
+
+
+def test_cli_check_exit_status(tmp_path, capsys, fresh_figure1):
+    _copy_committed_figure1(tmp_path / "committed", fresh_figure1)
+    assert cli.main(["check", "figure1", "--against", str(tmp_path / "committed"), "-q"]) == 0
+    assert cli.main(["check", "figure1", "--against", str(tmp_path / "nowhere"), "-q"]) == 2
+    assert "nowhere" in capsys.readouterr().err
+
+
+def test_every_written_data_file_and_column_is_declared():
+    # what each scene wrote last time (sections/NAME.json) must be named in its CHECK, and each
+    # CSV column must match a pattern: undeclared outputs would be compared at the default only
+    if not (COMMITTED / "sections").is_dir():
+        pytest.skip("no committed paper_figures/ in this checkout")
+    for name in SCENE_MODULES:
+        check = load_scene(name).CHECK
+        specs = scene_specs(name, COMMITTED)
+        for file, spec in specs.items():
+            assert file in check or file.startswith("sections/"), (name, file)
+            if file.endswith(".csv") and (COMMITTED / file).exists():
+                for col in pd.read_csv(COMMITTED / file, nrows=1).columns:
+                    assert rule_for(spec, col)[1], (name, file, col)
