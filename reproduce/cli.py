@@ -84,7 +84,7 @@ def main(argv: list[str] | None = None) -> int:
 def _run(names: list[str], args: argparse.Namespace, checking: bool,
          log: Callable[[str], None]) -> int:
     """Regenerate (or check) `names`; map input/output faults and signals to exit statuses."""
-    from spectral_rod.figure_data import ReferenceDataError  # numpy, pandas: not for --help
+    from spectral_rod import ReferenceDataError  # lazily: --help needs no numpy
 
     t0 = time.perf_counter()
     try:

@@ -70,6 +70,13 @@ CHECK = {
         "error_estimate": {"rel": 1e-6, "abs": 1e-12},  # an estimate near round-off
         "*": "exact",  # the digitised inputs, n, mode_family
     },
+    "claims.json": {"_owner": "scene", "*.evidence": "text", "*.numbers.headline": "text",
+                    "*.numbers.max_abs_deviation": {"rel": 1e-6, "abs": 1e-12},
+                    "*.numbers.rms_per_curve.*": {"rel": 1e-6, "abs": 1e-12},
+                    "*.numbers.clusters.*.max_abs_deviation": {"rel": 1e-6, "abs": 1e-12},
+                    "*.numbers.*": {"rel": 1e-9, "abs": 1e-12},
+                    "*.cross_checks.*.disagreement": {"rel": 1e-6, "abs": 1e-10},
+                    "*": "exact"},
     "figure1_forensics.json": {"*.max_abs_deviation": {"rel": 1e-6, "abs": 1e-12},
                                "*.twist_from": 1e-12, "*.twist_to": 1e-12,
                                "*.explanation": "text", "*": "exact"},

@@ -65,6 +65,7 @@ _EXPORTS = {
     "BucklingMode": "results", "CriticalLoad": "results",
     "ConvergenceError": "errors", "ConvergenceWarning": "errors",
     "RingConvergenceError": "errors", "RootNotFoundError": "errors",
+    "ReferenceDataError": "errors",
     "SpectralRodError": "errors",
     "FAMILIES": "families", "p_star_bounds": "families",
     "ROD_METHODS": "router", "choose_method": "router",

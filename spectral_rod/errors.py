@@ -21,6 +21,7 @@ from __future__ import annotations
 __all__ = [
     "ConvergenceError",
     "ConvergenceWarning",
+    "ReferenceDataError",
     "RingConvergenceError",
     "RootNotFoundError",
     "SpectralRodError",
@@ -41,6 +42,10 @@ class RingConvergenceError(ConvergenceError):
 
 class RootNotFoundError(SpectralRodError, RuntimeError):
     """No sign change of a characteristic determinant in the scanned load range."""
+
+
+class ReferenceDataError(SpectralRodError, ValueError):
+    """The digitised Figure 1 file is unreadable or breaks its schema (message names both)."""
 
 
 class ConvergenceWarning(RuntimeWarning):

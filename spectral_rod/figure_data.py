@@ -23,6 +23,8 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from spectral_rod.errors import ReferenceDataError
+
 FIGURE1_NU = (1.1, 1.3, 1.5)
 COLUMNS = ("curve", "nu", "picture_x", "picture_y", "twist_angle", "p_star")
 #: Quantum of the picture's coordinates (printed with two decimals).
@@ -59,10 +61,6 @@ def parse_figure1(tex: str) -> pd.DataFrame:
     df["twist_angle"] = twist_from_picture(df["picture_x"])
     df["p_star"] = p_star_from_picture(df["picture_y"])
     return df[list(COLUMNS)]
-
-
-class ReferenceDataError(ValueError):
-    """The digitised Figure 1 file is unreadable or breaks its schema (message names both)."""
 
 
 def figure1_path() -> Path:

@@ -72,7 +72,8 @@ def test_fast_check_figure1_against_committed(fresh_figure1, capsys):
 
 def _copy_committed_figure1(dst: Path, source: Path) -> Path:
     (dst / "sections").mkdir(parents=True)
-    for name in ("figure1_comparison.csv", "sections/figure1.json"):
+    for name in ("figure1_comparison.csv", "sections/figure1.json", "claims.json",
+                 "figure1_forensics.json"):
         shutil.copy(source / name, dst / name)
     return dst / "figure1_comparison.csv"
 
