@@ -89,3 +89,64 @@ def scalar_value(arr: NDArray[np.float64], name: str) -> float:
         raise TypeError(f"{name} must be a scalar (a real number), got an array of shape "
                         f"{arr.shape}")
     return float(arr)
+
+
+def check_real(value: object, name: str, lo: float = -np.inf, hi: float = np.inf, *,
+               lo_open: bool = False, hi_open: bool = False) -> float:
+    """A real scalar in [lo, hi] (open ends if asked) as a float.
+
+    Any ``numbers.Real`` is accepted (numpy scalars and 0-d arrays included); bool, str,
+    complex and arrays of other shapes are TypeErrors ("must be a scalar"), NaN/inf and values
+    out of range ValueErrors; every message names the argument and the range.
+
+    >>> check_real(np.float32(0.5), "tol", 0.0, 1.0)
+    0.5
+    """
+    rng = f"{'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}"
+    if isinstance(value, np.ndarray) and value.ndim == 0:
+        value = value[()]
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        what = (f"an array of shape {np.shape(value)}" if isinstance(value, (list, tuple,
+                                                                          np.ndarray))
+                else type(value).__name__)
+        raise TypeError(f"{name} must be a scalar real number in {rng}, got {what}")
+    v = float(value)
+    if not np.isfinite(v):
+        raise ValueError(f"{name} must be finite, in {rng}, got {v!r}")
+    if v < lo or v > hi or (lo_open and v == lo) or (hi_open and v == hi):
+        raise ValueError(f"{name} must be in {rng}, got {v!r}")
+    return v
+
+
+def check_int(value: object, name: str, lo: int, hi: int) -> int:
+    """An integer scalar in [lo, hi] (numpy integers accepted; bool, float and str are not).
+
+    >>> check_int(np.int64(201), "points", 2, 100_000)
+    201
+    """
+    if isinstance(value, np.ndarray) and value.ndim == 0:
+        value = value[()]
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Integral):
+        raise TypeError(f"{name} must be an integer in [{lo}, {hi}], got {type(value).__name__}")
+    v = int(value)
+    if not lo <= v <= hi:
+        raise ValueError(f"{name} must be an integer in [{lo}, {hi}], got {v}")
+    return v
+
+
+def check_bool(value: object, name: str) -> bool:
+    """True or False (numpy booleans accepted; 0, 1, 'no' are not)."""
+    if not isinstance(value, (bool, np.bool_)):
+        raise TypeError(f"{name} must be True or False, got {type(value).__name__}")
+    return bool(value)
+
+
+def broadcast_points(**arrays: NDArray[np.float64]) -> tuple[int, ...]:
+    """The common broadcast shape of the named arrays; ValueError naming them and their shapes
+    if they do not broadcast."""
+    try:
+        return np.broadcast_shapes(*(a.shape for a in arrays.values()))
+    except ValueError:
+        shapes = ", ".join(f"{k} {a.shape}" for k, a in arrays.items())
+        raise ValueError(f"{', '.join(arrays)} must broadcast to one shape, got {shapes}"
+                         ) from None

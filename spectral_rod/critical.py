@@ -132,7 +132,7 @@ def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None
     and ``converged=False``; it is never returned silently.
 
     >>> round(critical_load(6.283185307179586, 1.5), 9)
-    1.184049396
+    1.195993681
     """
     twist, nu_arr = check_twist(twist_angle), check_nu(nu)
     tol, method = check_tol(tol), check_method(method)

@@ -83,7 +83,7 @@ def crit2(N: ArrayLike, nu: object, e_ratio: object = 1.0):
     curves; the ring closes only for integer N, see :func:`ring_formula_load`).
 
     >>> crit2([0.0, 1.5], 1.5).tolist()
-    [3.5, 2.96875]
+    [3.5, 2.9375]
     """
     n = real_array(N, "N")
     if np.any(n < 0):
