@@ -150,3 +150,29 @@ def broadcast_points(**arrays: NDArray[np.float64]) -> tuple[int, ...]:
         shapes = ", ".join(f"{k} {a.shape}" for k, a in arrays.items())
         raise ValueError(f"{', '.join(arrays)} must broadcast to one shape, got {shapes}"
                          ) from None
+
+
+def _scalar(value: object, name: str, what: str) -> object:
+    """`value` unwrapped from a 0-d array; TypeError for arrays, bool, str, complex."""
+    if isinstance(value, np.ndarray) and value.ndim == 0:
+        value = value[()]
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        got = (f"an array of shape {np.shape(value)}" if isinstance(value, (list, tuple,
+                                                                         np.ndarray))
+               else type(value).__name__)
+        raise TypeError(f"{name} must be a scalar ({what}), got {got}")
+    return value
+
+
+def scalar_nu(nu: object, name: str = "nu", max_value: float = 1.0e4) -> float:
+    """A scalar nu = I2/I1 in [1, max_value], with :func:`check_nu`'s messages (the A1 <= A2
+    convention)."""
+    return float(check_nu(_scalar(nu, name, f"nu = I2/I1 in [1, {max_value:g}]"), name,
+                          max_value))
+
+
+def scalar_twist(twist_angle: object, name: str = "twist_angle", max_abs: float = 1.0e4
+                 ) -> float:
+    """A scalar total twist angle Omega(L) in [-max_abs, max_abs] radians."""
+    return float(check_twist(_scalar(twist_angle, name, f"|{name}| <= {max_abs:g} rad"), name,
+                             max_abs))

@@ -121,7 +121,24 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from spectral_rod._validation import check_nu, check_twist
+from spectral_rod._validation import check_choice, check_int, scalar_nu, scalar_twist
+
+#: Smallest |Omega(L)| the large-twist expansions accept: they are series in 1/Omega.
+EXPANSION_MIN_TWIST = 1.0
+#: Largest n of the crossing closed forms (N - w loses ~n^2 eps to cancellation).
+CROSSING_MAX_N = 10_000
+
+
+def _nu(nu: object) -> float:
+    return scalar_nu(nu)
+
+
+def _large_twist(twist_angle: object) -> float:
+    om = abs(scalar_twist(twist_angle))
+    if om < EXPANSION_MIN_TWIST:
+        raise ValueError(f"twist_angle must satisfy {EXPANSION_MIN_TWIST:g} <= |twist_angle| <= "
+                         f"1e4 for the large-twist expansion (a series in 1/Omega), got {om!r}")
+    return om
 
 __all__ = [
     "BetaWindow",
@@ -139,7 +156,7 @@ __all__ = [
 
 def large_twist_limit(nu: float) -> float:
     """lim_{Omega -> inf} p* = 2 nu / (1 + nu): the harmonic mean of A1 and A2 over A1."""
-    nu = float(check_nu(nu))
+    nu = _nu(nu)
     return 2.0 * nu / (1.0 + nu)
 
 
@@ -170,22 +187,19 @@ def large_twist_expansion(twist_angle: float, nu: float, *, order: int = 4,
 
     order: 0 (the limit), 2, 3 or 4; family: None for p* (the lower family, -b3 |sin Omega|),
     'symmetric' (+b3 sin Omega) or 'antisymmetric' (-b3 sin Omega). Error O(Omega^-(order+1))
-    for order >= 2 (O(Omega^-2) for order 0). Meant for |Omega| >~ 10.
+    for order >= 2 (O(Omega^-2) for order 0). Meant for |Omega| >~ 10; refused below
+    |Omega| = 1 (:data:`EXPANSION_MIN_TWIST`), where the series means nothing.
     """
-    if order not in (0, 2, 3, 4):
+    if isinstance(order, bool) or order not in (0, 2, 3, 4):
         raise ValueError(f"order must be 0, 2, 3 or 4, got {order!r}")
-    om = abs(float(check_twist(twist_angle)))
-    if om == 0.0:
-        raise ValueError("twist_angle must be nonzero for the large-twist expansion")
+    om = _large_twist(twist_angle)
     c = large_twist_coefficients(nu)
     if family is None:
         ripple = -abs(math.sin(om))
-    elif family == "symmetric":
+    elif check_choice(family, "family", ("symmetric", "antisymmetric")) == "symmetric":
         ripple = math.sin(om)
-    elif family == "antisymmetric":
-        ripple = -math.sin(om)
     else:
-        raise ValueError(f"family must be None, 'symmetric' or 'antisymmetric', got {family!r}")
+        ripple = -math.sin(om)
     p = c.p_inf
     if order >= 2:
         p += c.a2 / om**2
@@ -215,7 +229,7 @@ def imaginary_beta1_window(nu: float) -> BetaWindow:
     (y = pi at nu = 1). Valid while the symmetric family is critical at both ends (Omega < 2 pi),
     which the claims tests check for nu in [1, 10].
     """
-    nu = float(check_nu(nu))
+    nu = _nu(nu)
     if nu == 1.0:
         y = math.pi
     else:
@@ -238,10 +252,9 @@ def imaginary_beta1_window(nu: float) -> BetaWindow:
 
 def large_twist_wavenumbers(twist_angle: float, nu: float) -> tuple[float, float]:
     """(beta_1 L, beta_2 L) on the critical curve to O(Omega^-3) (error O(Omega^-4))."""
-    om = abs(float(twist_angle))
-    if om == 0.0:
-        raise ValueError("the large-twist expansion needs a non-zero twist")
-    b = math.pi**2 * large_twist_limit(nu) * 0.5 * (1.0 - 1.0 / float(nu))
+    om = _large_twist(twist_angle)
+    nu = _nu(nu)
+    b = math.pi**2 * large_twist_limit(nu) * 0.5 * (1.0 - 1.0 / nu)
     ripple = math.pi * b * abs(math.sin(om)) / (2.0 * om**3)
     common = -b**2 / (8.0 * om**3)
     return om - math.pi + ripple + common, om + math.pi - ripple + common
@@ -260,10 +273,10 @@ class CrossingClosedForm:
 
 
 def crossing_closed_form(n: int, nu: float) -> CrossingClosedForm:
-    """Omega_n and p*_n of the crossing near n pi (n >= 2; module docstring for the proof)."""
-    if isinstance(n, bool) or not isinstance(n, int) or n < 2:
-        raise ValueError(f"n must be an integer >= 2, got {n!r}")
-    nu = float(check_nu(nu))
+    """Omega_n and p*_n of the crossing near n pi (2 <= n <= 1e4, where the cancellation in
+    N - w costs at most ~1e-8 relative; module docstring for the proof)."""
+    n = check_int(n, "n", 2, CROSSING_MAX_N)
+    nu = _nu(nu)
     big_n, big_m = n * n + 1.0, (n * n - 1.0) ** 2
     den = (3.0 * nu + 1.0) * (nu + 3.0)
     root = math.sqrt(big_n**2 * (nu * nu - 1.0) ** 2 + big_m * (nu + 1.0) ** 2 * den)
@@ -276,5 +289,7 @@ def crossing_closed_form(n: int, nu: float) -> CrossingClosedForm:
 
 def crossing_twist_asymptotic(n: int, nu: float) -> float:
     """Omega_n ~ n pi + pi ((nu - 1)/(nu + 1))^2 / (8 n^3), error O(n^-5) (module docstring)."""
-    q = (float(check_nu(nu)) - 1.0) / (float(nu) + 1.0)
+    n = check_int(n, "n", 2, CROSSING_MAX_N)
+    nu = _nu(nu)
+    q = (nu - 1.0) / (nu + 1.0)
     return n * math.pi + math.pi * q * q / (8.0 * n**3)

@@ -94,6 +94,7 @@ import scipy.sparse
 import scipy.sparse.csgraph
 from numpy.typing import NDArray
 
+from spectral_rod._validation import check_bool, check_choice, check_int, check_real
 from spectral_rod.errors import ConvergenceWarning, RingConvergenceError
 from spectral_rod.ring_formula import check_e_ratio, check_scalar_nu, check_twist_count
 from spectral_rod.ring_stability import check_load, stiffnesses
@@ -423,7 +424,11 @@ def base_residual(N: int, nu: float, *, e_ratio: float = 1.0, load: str = "hydro
     >>> base_residual(2, 3.0) < 1e-12
     True
     """
-    prob = _problem(N, nu, e_ratio, check_load(load), M, equations, flip)
+    prob = _problem(check_twist_count(N, maximum=MAX_TWIST), check_scalar_nu(nu),
+                    check_e_ratio(e_ratio), check_load(load), check_int(M, "M", 4, 200),
+                    check_choice(equations, "equations", EQUATIONS),
+                    None if flip is None else check_choice(flip, "flip", MUNDER_TERMS))
+    q = check_real(q, "q", -1e6, 1e6)
     return float(np.max(np.abs(_residual(np.zeros((1, prob.size), complex), prob, q))))
 
 
@@ -576,8 +581,7 @@ def _truncations(N: int) -> list[int]:
 
 
 def _check_tol(tol: object) -> float:
-    if isinstance(tol, bool) or not isinstance(tol, float | int) or not 1e-13 <= tol <= 1e-2:
-        raise ValueError(f"tol must be a real number in [1e-13, 1e-2], got {tol!r}")
+    return check_real(tol, "tol", 1e-13, 1e-2)
     return float(tol)
 
 
@@ -597,8 +601,8 @@ def munder_buckling(N: object, nu: object, *, e_ratio: object = 1.0,
     n_turns = check_twist_count(N, maximum=MAX_TWIST)
     v, e, ld = check_scalar_nu(nu), check_e_ratio(e_ratio), check_load(load)
     tol = _check_tol(tol)
-    if not isinstance(equations, str) or equations not in EQUATIONS:
-        raise ValueError(f"equations must be one of {EQUATIONS}, got {equations!r}")
+    check_choice(equations, "equations", EQUATIONS)
+    raise_on_failure = check_bool(raise_on_failure, "raise_on_failure")
     history: list[tuple[int, float]] = []
     rel, best, worst, M = math.nan, None, 0.0, 0
     for M in _truncations(n_turns):

@@ -69,7 +69,7 @@ import numpy as np
 import scipy.linalg
 from numpy.typing import NDArray
 
-from spectral_rod._validation import check_choice
+from spectral_rod._validation import check_bool, check_choice, check_int, check_real
 from spectral_rod.errors import RingConvergenceError
 from spectral_rod.ring_formula import check_e_ratio, check_scalar_nu, check_twist_count
 
@@ -431,16 +431,11 @@ def ring_buckling(N: object, nu: object, *, e_ratio: object = 1.0, load: object 
     v = check_scalar_nu(nu)
     e = check_e_ratio(e_ratio)
     ld = check_load(load)
-    if not isinstance(subspace, str) or subspace not in SUBSPACES:
-        raise ValueError(f"subspace must be one of {tuple(SUBSPACES)}, got {subspace!r}")
-    fields = SUBSPACES[subspace]
+    fields = SUBSPACES[check_choice(subspace, "subspace", tuple(SUBSPACES))]
     if max_frequency is not None:
-        if isinstance(max_frequency, bool) or not isinstance(max_frequency, int) \
-                or not (4 <= max_frequency <= 2000):
-            raise ValueError(f"max_frequency must be an integer in [4, 2000] or None, "
-                             f"got {max_frequency!r}")
-    if not (isinstance(tol, float | int) and 1e-14 <= tol <= 1e-2):
-        raise ValueError(f"tol must be a real number in [1e-14, 1e-2], got {tol!r}")
+        max_frequency = check_int(max_frequency, "max_frequency", 4, 2000)
+    tol = check_real(tol, "tol", 1e-14, 1e-2)
+    raise_on_failure = check_bool(raise_on_failure, "raise_on_failure")
     history: list[tuple[int, float]] = []
     best: tuple[FamilySolution, int] | None = None
     rel = math.nan
@@ -496,9 +491,7 @@ def ring_critical_load(N: object, nu: object, *, e_ratio: object = 1.0,
     >>> round(ring_critical_load(0, 1.0), 12)   # untwisted circular ring: out of plane, 2
     2.0
     """
-    if not isinstance(method, str) or method not in RING_METHODS:
-        raise ValueError(f"method must be one of {RING_METHODS}, got {method!r}")
-    if method == "munder":
+    if check_choice(method, "method", RING_METHODS) == "munder":
         from spectral_rod.ring_munder import munder_critical_load
 
         return munder_critical_load(N, nu, e_ratio=e_ratio, load=load, tol=tol)

@@ -244,7 +244,7 @@ def test_non_real_spectrum_is_flagged(monkeypatch: pytest.MonkeyPatch) -> None:
     ({"load": "pressure"}, ValueError, "load"),
     ({"load": 3}, TypeError, "load"),
     ({"tol": 0.5}, ValueError, "tol"),
-    ({"tol": True}, ValueError, "tol"),
+    ({"tol": True}, TypeError, "tol"),
 ])
 def test_bad_input(kwargs: dict, exc: type[Exception], word: str) -> None:
     args = {"N": 2, "nu": 2.0, **kwargs}

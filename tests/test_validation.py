@@ -26,6 +26,8 @@ PUBLIC = {
     (["a"], TypeError), ([1.0, math.nan], ValueError), (object(), TypeError),
 ])
 def test_bad_twist(func, bad, exc):
+    if func is large_twist_expansion and isinstance(bad, list):
+        exc = TypeError  # a scalar function: "twist_angle must be a scalar"
     with pytest.raises(exc, match="twist_angle"):
         func(bad, 1.5)
 
@@ -76,7 +78,7 @@ def test_twist_ranges_are_stated():
         critical_load(2e4, 1.5)
     with pytest.raises(ValueError, match=r"\|twist_angle\| <= 1000"):
         critical_load_increment(1500.0, 1.5)
-    with pytest.raises(ValueError, match="nonzero"):
+    with pytest.raises(ValueError, match="1 <= .twist_angle."):
         large_twist_expansion(0.0, 1.5)
 
 
