@@ -16,6 +16,8 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
+from spectral_rod._validation import check_int, scalar_nu, scalar_twist
+
 
 def cheb(n: int) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """Trefethen's cheb.m: Chebyshev points x_j = cos(j pi / n) and the differentiation matrix."""
@@ -27,8 +29,10 @@ def cheb(n: int) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
 
 
 def baseline_critical_load(twist_angle: float, nu: float, n: int = 24) -> float:
-    """p* at one point: dense operator of Eq. ``inst1`` on s in [0, 1] and ``eigvals``."""
-    d, _ = cheb(n)
+    """p* at one point: dense operator of Eq. ``inst1`` on s in [0, 1] and ``eigvals``
+    (n in [4, 256]; no resolution control: that is the point of a baseline)."""
+    twist_angle, nu = scalar_twist(twist_angle), scalar_nu(nu)
+    d, _ = cheb(check_int(n, "n", 4, 256))
     d1 = 2.0 * d  # d/ds with s = (x + 1) / 2
     d2 = (d1 @ d1)[1:-1, 1:-1]
     d1 = d1[1:-1, 1:-1]

@@ -13,6 +13,7 @@ import mpmath as mp
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from spectral_rod._validation import check_int, scalar_nu, scalar_twist
 from spectral_rod.characteristic import CharacteristicRoot, entire_cs, entire_cs_double
 from spectral_rod.wavenumbers import characteristic_roots
 
@@ -91,8 +92,13 @@ def mode_fields(root: CharacteristicRoot, twist_angle: float, nu: float, s: Arra
     (mu - Omega^2 - X_k) sin(beta_k t)/beta_k, eta = -sum_k c_k 2 Omega cos(beta_k t). Needs
     Omega != 0 (at zero twist the mode is Euler's planar sin(pi s)).
     """
-    if float(twist_angle) == 0.0:
-        raise ValueError("the closed-form mode needs a non-zero twist (Euler's mode otherwise)")
+    if not isinstance(root, CharacteristicRoot):
+        raise TypeError(f"root must be a CharacteristicRoot, got {type(root).__name__}")
+    twist_angle, nu = scalar_twist(twist_angle), scalar_nu(nu)
+    dps = check_int(dps, "dps", 15, 200)
+    if twist_angle == 0.0:
+        raise ValueError("twist_angle must be non-zero for the closed-form mode (at zero twist "
+                         "the mode is Euler's planar sin(pi s))")
     with mp.workdps(dps):
         om, nuv = mp.mpf(abs(float(twist_angle))), mp.mpf(nu)
         lam = mp.pi**2 * root.p_star
@@ -112,7 +118,7 @@ def characteristic_mode(root: CharacteristicRoot, twist_angle: float, nu: float,
                         points: int = 201, dps: int = 30) -> CharacteristicMode:
     """The mode of ``root`` on a uniform grid of `points` in [0, 1] (:func:`mode_fields`), with
     the fixed-frame centreline x = R(Omega s)(xi, eta), scaled to max |x| = 1."""
-    s = np.linspace(0.0, 1.0, points)
+    s = np.linspace(0.0, 1.0, check_int(points, "points", 2, 100_000))
     xi, eta = mode_fields(root, twist_angle, nu, s, dps)
     om = abs(float(twist_angle))
     x1 = xi * np.cos(om * s) - eta * np.sin(om * s)

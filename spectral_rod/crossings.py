@@ -21,11 +21,13 @@ from dataclasses import dataclass
 
 import mpmath as mp
 
+from spectral_rod._validation import check_int, check_real, scalar_nu
 from spectral_rod.characteristic import (
     characteristic_critical_load,
     determinant,
     family_critical_load,
 )
+from spectral_rod.errors import RootNotFoundError
 from spectral_rod.families import FAMILIES
 from spectral_rod.wavenumbers import characteristic_roots
 
@@ -68,7 +70,7 @@ def _check_on_lowest_branches(p_c: mp.mpf, om_c: mp.mpf, nu: float, dps: int,
         # the scan works at the float-rounded twist: allow for that rounding
         slope_scale = 1 + abs(family_slope(fam, p_c, om_c, mp.mpf(nu)))
         if abs(low - p_c) > tol + slope_scale * abs(om_c) * mp.mpf(2) ** -52:
-            raise RuntimeError(f"crossing near Omega={twist_guess} (nu={nu}) is not on the "
+            raise RootNotFoundError(f"crossing near Omega={twist_guess} (nu={nu}) is not on the "
                                f"lowest {fam} branch: {low} vs {p_c}")
 
 
@@ -81,6 +83,10 @@ def family_crossing(twist_guess: float, nu: float, *, p_guess: float | None = No
     must return the crossing load as that family's *lowest* root, so the crossing lies on the
     critical curve p*(Omega). Raises RuntimeError otherwise.
     """
+    twist_guess = check_real(twist_guess, "twist_guess", 0.0, 1.0e3, lo_open=True)
+    nu, dps = scalar_nu(nu), check_int(dps, "dps", 15, 200)
+    if p_guess is not None:
+        p_guess = check_real(p_guess, "p_guess", 1.0, (1.0 + nu) / 2.0)
     with mp.workdps(dps):
         nuv = mp.mpf(nu)
         if p_guess is None:
@@ -89,7 +95,11 @@ def family_crossing(twist_guess: float, nu: float, *, p_guess: float | None = No
         def system(p: mp.mpf, om: mp.mpf) -> list[mp.mpf]:
             return [determinant(f, mp.pi**2 * p, om, nuv) for f in FAMILIES]
 
-        p_c, om_c = mp.findroot(system, (mp.mpf(p_guess), mp.mpf(twist_guess)))
+        try:
+            p_c, om_c = mp.findroot(system, (mp.mpf(p_guess), mp.mpf(twist_guess)))
+        except ValueError as exc:  # mpmath: "Could not find root within given tolerance"
+            raise RootNotFoundError(f"no family crossing found from twist_guess={twist_guess}, "
+                                    f"nu={nu} ({exc})") from None
         _check_on_lowest_branches(p_c, om_c, nu, dps, twist_guess)
         slopes = {f: family_slope(f, p_c, om_c, nuv) for f in FAMILIES}
         left = max(slopes, key=lambda f: slopes[f])   # steeper rise => lower just to the left
@@ -124,14 +134,19 @@ def collocation_crossing(twist_guess: float, nu: float, half_width: float = 0.15
 
     from spectral_rod.straight_rod import collocation_family_load
 
+    half_width = check_real(half_width, "half_width", 0.0, 1.0, lo_open=True)
+    twist_guess = check_real(twist_guess, "twist_guess", half_width, 200.0, lo_open=True)
+    nu = scalar_nu(nu)
     n = _resolving_degree(twist_guess + half_width)
 
     def diff(om: float) -> float:
         return (collocation_family_load(om, nu, FAMILIES[0], n)
                 - collocation_family_load(om, nu, FAMILIES[1], n))
 
-    om_c = brentq(diff, twist_guess - half_width, twist_guess + half_width, xtol=1e-14,
-                  rtol=1e-15)
+    a, b = twist_guess - half_width, twist_guess + half_width
+    if diff(a) * diff(b) > 0:
+        raise RootNotFoundError(f"the two families do not cross in [{a:g}, {b:g}] (nu={nu})")
+    om_c = brentq(diff, a, b, xtol=1e-14, rtol=1e-15)
     h = 1e-5
     slopes = {f: (collocation_family_load(om_c + h, nu, f, n)
                   - collocation_family_load(om_c - h, nu, f, n)) / (2 * h) for f in FAMILIES}
@@ -166,6 +181,9 @@ def crossing_wavenumbers(crossing: FamilyCrossing, nu: float, dps: int = 30
                          ) -> CrossingWavenumbers:
     """beta_1 L, beta_2 L and beta_2 - beta_1 at a crossing, with the slopes of beta_2 - beta_1
     along both branches (chain rule with :attr:`FamilyCrossing.slopes`)."""
+    if not isinstance(crossing, FamilyCrossing):
+        raise TypeError(f"crossing must be a FamilyCrossing, got {type(crossing).__name__}")
+    nu, dps = scalar_nu(nu), check_int(dps, "dps", 15, 200)
     with mp.workdps(dps):
         nuv, p, om = mp.mpf(nu), crossing.p_star, crossing.twist
         lam = mp.pi**2 * p

@@ -27,10 +27,12 @@ import numpy as np
 import scipy.sparse as sp
 from scipy.sparse.linalg import eigsh
 
-from spectral_rod._validation import check_nu, check_twist
+from spectral_rod._validation import check_int, scalar_nu, scalar_twist
+from spectral_rod.families import SHIFT
 
-#: Shift of the Lanczos iteration: below every physical eigenvalue lambda >= pi^2.
-SHIFT = 0.95 * math.pi**2
+#: Largest grid (the sparse factorisation of 2^21 unknowns takes seconds and ~1 GB).
+MAX_INTERVALS = 1 << 20
+
 
 
 def fd_operator(twist_angle: float, nu: float, intervals: int) -> sp.csc_matrix:
@@ -59,9 +61,8 @@ def fd_critical_load(twist_angle: float, nu: float, intervals: int) -> float:
     Relative error ~ C h^2 (h = 1/N) until round-off ~ eps N^2 takes over (see the
     ``convergence`` scene); no error control -- that is the point of the comparison.
     """
-    om = float(check_twist(twist_angle))
-    nu = float(check_nu(nu))
-    op = fd_operator(abs(om), nu, intervals)
+    om, nu = scalar_twist(twist_angle), scalar_nu(nu)
+    op = fd_operator(abs(om), nu, check_int(intervals, "intervals", 4, MAX_INTERVALS))
     lam = eigsh(op, k=1, sigma=SHIFT, which="LM", return_eigenvectors=False,
                 v0=np.ones(op.shape[0]))
     return float(lam[0] / math.pi**2)

@@ -14,44 +14,59 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from spectral_rod._validation import check_real, real_array
+
 __all__ = ["family_switches", "increasing_up_to", "local_maxima", "non_planarity",
            "settling_point"]
+
+
+def _curve(name_a: str, a: ArrayLike, name_b: str, b: ArrayLike, minimum: int = 2
+           ) -> tuple[NDArray, NDArray]:
+    """Two 1-D samples of equal length >= minimum (numeric and finite where numeric)."""
+    x = real_array(a, name_a) if name_a != "family" else np.asarray(a)
+    y = real_array(b, name_b) if name_b != "family" else np.asarray(b)
+    if x.ndim != 1 or y.shape != x.shape or x.size < minimum:
+        raise ValueError(f"{name_a} and {name_b} must be 1-D of equal length >= {minimum}, got "
+                         f"shapes {x.shape} and {y.shape}")
+    return x, y
 
 
 def non_planarity(x1: ArrayLike, x2: ArrayLike) -> float:
     """sigma_min/sigma_max of the samples (x1, x2) of a centreline's lateral displacement: 0 iff
     the centreline lies in one plane through the rod's axis (a plane containing both hinged ends
     must contain the axis), up to 1 for a circular helix-like spread."""
-    sv = np.linalg.svd(np.column_stack([np.asarray(x1, float), np.asarray(x2, float)]),
-                       compute_uv=False)
-    return float(sv[-1] / sv[0])
+    a, b = _curve("x1", x1, "x2", x2)
+    sv = np.linalg.svd(np.column_stack([a, b]), compute_uv=False)
+    return float(sv[-1] / sv[0]) if sv[0] > 0 else 0.0
 
 
 def local_maxima(grid: ArrayLike, values: ArrayLike) -> NDArray[np.float64]:
     """Grid points of the interior local maxima of `values` (strictly above the left neighbour,
     not below the right one)."""
-    g, v = np.asarray(grid, float), np.asarray(values, float)
+    g, v = _curve("grid", grid, "values", values, 1)
     idx = np.flatnonzero((v[1:-1] > v[:-2]) & (v[1:-1] >= v[2:])) + 1
     return g[idx]
 
 
 def family_switches(grid: ArrayLike, family: ArrayLike) -> NDArray[np.float64]:
     """Midpoints of the grid intervals across which the labels `family` change."""
-    g, f = np.asarray(grid, float), np.asarray(family)
+    g, f = _curve("grid", grid, "family", family, 1)
     idx = np.flatnonzero(f[1:] != f[:-1])
     return 0.5 * (g[idx] + g[idx + 1])
 
 
 def increasing_up_to(grid: ArrayLike, values: ArrayLike, end: float) -> bool:
     """Whether `values` increase strictly on the grid points <= `end`."""
-    g, v = np.asarray(grid, float), np.asarray(values, float)
+    g, v = _curve("grid", grid, "values", values, 1)
+    end = check_real(end, "end")
     return bool(np.all(np.diff(v[g <= end]) > 0))
 
 
 def settling_point(grid: ArrayLike, gap: ArrayLike, level: float) -> float | None:
     """Smallest grid point beyond which |gap| < level everywhere on the grid (the first point if
     it holds throughout; None if it does not hold at the end of the grid)."""
-    g, d = np.asarray(grid, float), np.abs(np.asarray(gap, float))
+    g, d = _curve("grid", grid, "gap", gap, 1)
+    d, level = np.abs(d), check_real(level, "level", 0.0, lo_open=True)
     bad = np.flatnonzero(d >= level)
     if bad.size == 0:
         return float(g[0])
