@@ -50,7 +50,9 @@ ring stability (the truth)          :func:`ring_critical_load`, :func:`ring_buck
 ==================================  ==========================================================
 
 Public names are imported lazily (``import spectral_rod`` stays light; scipy and mpmath load
-when a function that needs them is first used).
+when a function that needs them is first used). Every public function validates its arguments;
+the raw kernels they are built on (e.g. :func:`spectral_rod.wavenumbers.characteristic_roots`,
+:func:`spectral_rod.characteristic.determinant` on mpmath numbers) live in their modules.
 """
 
 from __future__ import annotations
@@ -75,15 +77,14 @@ _EXPORTS = {
     "tail_for_tolerance": "straight_rod.resolution",
     "critical_load_increment": "increment",
     "CharacteristicRoot": "characteristic", "characteristic_critical_load": "characteristic",
-    "family_critical_load": "characteristic", "determinant": "characteristic",
+    "family_critical_load": "characteristic",
     "characteristic_determinant": "characteristic",
     "CharacteristicMode": "closed_form", "characteristic_mode": "closed_form",
-    "boundary_determinant_4x4": "closed_form",
-    "characteristic_roots": "wavenumbers", "critical_wavenumbers": "wavenumbers",
+    "critical_wavenumbers": "wavenumbers",
     "beta_difference": "wavenumbers",
     "FamilyCrossing": "crossings", "CollocationCrossing": "crossings",
     "family_crossing": "crossings", "collocation_crossing": "crossings",
-    "family_slope": "crossings", "CrossingWavenumbers": "crossings",
+    "CrossingWavenumbers": "crossings",
     "crossing_wavenumbers": "crossings",
     "BetaWindow": "asymptotics", "CrossingClosedForm": "asymptotics",
     "LargeTwistCoefficients": "asymptotics", "crossing_closed_form": "asymptotics",
