@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import math
 
-from spectral_rod._validation import check_choice
+from spectral_rod._validation import check_choice, scalar_nu
 
 __all__ = ["FAMILIES", "SHIFT", "check_family", "p_star_bounds"]
 
@@ -36,4 +36,4 @@ def p_star_bounds(nu: float) -> tuple[float, float]:
     >>> p_star_bounds(1.5)
     (1.0, 1.25)
     """
-    return 1.0, (1.0 + float(nu)) / 2.0
+    return 1.0, (1.0 + scalar_nu(nu)) / 2.0

@@ -1,0 +1,252 @@
+"""Issue 15: every public function fuzzed over every argument (valid, boundary, invalid values).
+
+The property, for each generated call: either a ValueError/TypeError whose message names one of
+the arguments that were given an invalid value, or -- when every argument is valid -- a finite
+result inside the physical bounds, within a time limit per call. A documented domain fault (a
+:class:`spectral_rod.SpectralRodError`, e.g. no family crossing near a guess) is allowed where
+the spec says so. Anything else is a mishandled case.
+
+The default run draws a few examples per function; ``python -m pytest -m slow`` runs the larger
+profile.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+import warnings
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+import spectral_rod as sr
+
+#: Wall-time limit of one call (a hang detector, not a benchmark: generous for 2 busy cores).
+CALL_LIMIT = 60.0
+NAN, INF = math.nan, math.inf
+#: Values no real scalar argument accepts (with the exception they must raise).
+NOT_REAL = [("1.0", TypeError), (None, TypeError), (1 + 2j, TypeError), (True, TypeError),
+            (object(), TypeError), (NAN, ValueError), (INF, ValueError), (-INF, ValueError)]
+NOT_INT = [(2.5, TypeError), ("3", TypeError), (True, TypeError), (None, TypeError)]
+NOT_STR = [(1, TypeError), (None, TypeError), ("no such thing", ValueError)]
+
+
+@dataclass(frozen=True)
+class Arg:
+    """One argument: how valid values are drawn, and the invalid values to try."""
+
+    valid: st.SearchStrategy
+    invalid: list[tuple[Any, type]] = field(default_factory=list)
+
+
+def real(lo: float, hi: float, *extra_invalid: float) -> Arg:
+    """A real scalar in [lo, hi] (numpy scalars among the valid draws)."""
+    base = st.floats(lo, hi, allow_nan=False, allow_infinity=False)
+    valid = st.one_of(base, base.map(np.float64), st.sampled_from([lo, hi]))
+    return Arg(valid, NOT_REAL + [(v, ValueError) for v in extra_invalid])
+
+
+def integer(lo: int, hi: int, *extra_invalid: int, even: bool = False) -> Arg:
+    base = st.integers(lo, hi)
+    if even:
+        base = base.map(lambda k: k - k % 2 if k - k % 2 >= lo else k + k % 2)
+    valid = st.one_of(base, base.map(np.int64))
+    return Arg(valid, NOT_INT + [(v, ValueError) for v in extra_invalid])
+
+
+def choice(*values: Any, invalid: list[tuple[Any, type]] | None = None) -> Arg:
+    return Arg(st.sampled_from(values), NOT_STR if invalid is None else invalid)
+
+
+def boolean() -> Arg:
+    return Arg(st.booleans(), [(1, TypeError), ("no", TypeError), (None, TypeError)])
+
+
+def optional(arg: Arg, extra: list[tuple[Any, type]] | None = None) -> Arg:
+    return Arg(st.one_of(st.none(), arg.valid),
+               [(v, e) for v, e in arg.invalid if v is not None] + (extra or []))
+
+
+def finite(x: Any) -> bool:
+    return bool(np.all(np.isfinite(np.asarray(x, dtype=float))))
+
+
+def p_in_bounds(p: Any, nu: Any, slack: float = 1e-13) -> bool:
+    p, nu = np.asarray(p, float), np.asarray(nu, float)
+    return bool(np.all((p >= 1 - slack) & (p <= (1 + nu) / 2 * (1 + slack))))
+
+
+@dataclass(frozen=True)
+class Spec:
+    """A public function, its arguments, the check of a valid call's result, and which domain
+    faults (SpectralRodError subclasses) a valid call may raise."""
+
+    call: Callable[..., Any]
+    args: dict[str, Arg]
+    check: Callable[[Any, dict[str, Any]], bool] = lambda r, a: True
+    faults: tuple[type, ...] = ()
+    positional: tuple[str, ...] = ()
+
+
+TWIST = real(-1e4, 1e4, 1.5e4, -2e4)
+NU = real(1.0, 1e4, 0.5, 0.0, 2e4)
+SMALL_TWIST = real(-60.0, 60.0, 2e4)
+E_RATIO = real(1e-6, 1e6, 0.0, -1.0)
+RING_N = integer(0, 8, -1, 1001)
+LOAD = choice("hydrostatic", "axis")
+
+
+def _ring_q(r: Any, a: dict[str, Any]) -> bool:
+    return bool(np.isfinite(r) and r > 0)
+
+
+SPECS: dict[str, Spec] = {
+    "large_twist_limit": Spec(sr.large_twist_limit, {"nu": NU},
+                              lambda r, a: 1 <= r < 2, positional=("nu",)),
+    "large_twist_coefficients": Spec(sr.large_twist_coefficients, {"nu": NU},
+                                     lambda r, a: finite([r.p_inf, r.a2, r.b3, r.a4]),
+                                     positional=("nu",)),
+    "large_twist_expansion": Spec(
+        sr.large_twist_expansion,
+        {"twist_angle": Arg(st.floats(1.0, 1e4) | st.floats(-1e4, -1.0),
+                            NOT_REAL + [(0.0, ValueError), (1e-80, ValueError), (2e4, ValueError)]),
+         "nu": NU, "order": choice(0, 2, 3, 4, invalid=[(1, ValueError), (True, ValueError)]),
+         "family": optional(choice("symmetric", "antisymmetric"), [("even", ValueError)])},
+        lambda r, a: math.isfinite(r) and 0 < r < 2, positional=("twist_angle", "nu")),
+    "large_twist_wavenumbers": Spec(
+        sr.large_twist_wavenumbers,
+        {"twist_angle": Arg(st.floats(1.0, 1e4), NOT_REAL + [(0.5, ValueError)]), "nu": NU},
+        lambda r, a: finite(r), positional=("twist_angle", "nu")),
+    "imaginary_beta1_window": Spec(sr.imaginary_beta1_window, {"nu": NU},
+                                   lambda r, a: 0 < r.omega_a <= r.omega_b < 2 * math.pi,
+                                   positional=("nu",)),
+    "crossing_closed_form": Spec(sr.crossing_closed_form,
+                                 {"n": integer(2, 10_000, 1, 10**8), "nu": NU},
+                                 lambda r, a: finite([r.twist, r.p_star]) and r.p_star >= 1 - 1e-9
+                                 and r.p_star <= (1 + a["nu"]) / 2, positional=("n", "nu")),
+    "crossing_twist_asymptotic": Spec(sr.crossing_twist_asymptotic,
+                                      {"n": integer(2, 10_000, 1), "nu": NU},
+                                      lambda r, a: math.isfinite(r), positional=("n", "nu")),
+    "p_star_bounds": Spec(sr.p_star_bounds, {"nu": NU}, lambda r, a: r[0] <= r[1],
+                          positional=("nu",)),
+    "rectangle_torsion_ratio": Spec(sr.rectangle_torsion_ratio, {"nu": NU},
+                                    lambda r, a: 0 < r < 1, positional=("nu",)),
+    "crit2": Spec(sr.crit2, {"N": real(0.0, 1e3, -1.0), "nu": NU, "e_ratio": E_RATIO},
+                  lambda r, a: math.isfinite(r), positional=("N", "nu")),
+    "ring_formula_load": Spec(sr.ring_formula_load,
+                              {"N": integer(0, 1000, -1, 1001), "nu": NU, "e_ratio": E_RATIO},
+                              lambda r, a: math.isfinite(r), positional=("N", "nu")),
+    "threshold_twist": Spec(sr.threshold_twist, {"nu": NU},
+                            lambda r, a: r.continuous > 0, positional=("nu",)),
+    "in_plane_untwisted": Spec(sr.in_plane_untwisted, {"A": real(1e-6, 1e6, 0.0), "load": LOAD},
+                               lambda r, a: r > 0, positional=("A", "load")),
+    "out_of_plane_untwisted": Spec(sr.out_of_plane_untwisted,
+                                   {"A": real(1e-6, 1e6, 0.0), "A3": real(1e-6, 1e6, -1.0)},
+                                   lambda r, a: r > 0, positional=("A", "A3")),
+    "homogenised_limit": Spec(sr.homogenised_limit, {"nu": NU, "e_ratio": E_RATIO, "load": LOAD},
+                              lambda r, a: r > 0, positional=("nu", "e_ratio", "load")),
+    "ring_critical_load": Spec(
+        sr.ring_critical_load,
+        {"N": RING_N, "nu": real(1.0, 10.0, 0.9), "e_ratio": real(0.1, 10.0, 0.0), "load": LOAD,
+         "tol": real(1e-12, 1e-4, 1.0, 0.0),
+         "method": choice("second-variation", "munder", invalid=NOT_STR)},
+        _ring_q, faults=(sr.RingConvergenceError,), positional=("N", "nu")),
+    "ring_buckling": Spec(
+        sr.ring_buckling,
+        {"N": RING_N, "nu": real(1.0, 10.0, 0.5), "e_ratio": real(0.1, 10.0, 0.0),
+         "load": LOAD, "tol": real(1e-12, 1e-4, 0.5), "max_frequency": optional(
+             integer(20, 60, 3, 5000)), "subspace": choice("all", "in-plane", "out-of-plane"),
+         "raise_on_failure": boolean()},
+        lambda r, a: math.isfinite(r.load) and r.load > 0, faults=(sr.RingConvergenceError,),
+        positional=("N", "nu")),
+    "fd_critical_load": Spec(sr.fd_critical_load,
+                             {"twist_angle": SMALL_TWIST, "nu": real(1.0, 100.0, 0.5),
+                              "intervals": integer(8, 2000, 3, 1 << 22)},
+                             lambda r, a: math.isfinite(r) and r > 0.9,
+                             positional=("twist_angle", "nu", "intervals")),
+    "baseline_critical_load": Spec(sr.baseline_critical_load,
+                                   {"twist_angle": SMALL_TWIST, "nu": real(1.0, 100.0, 0.5),
+                                    "n": integer(8, 64, 3, 1000)},
+                                   lambda r, a: math.isfinite(r) and r > 0,
+                                   positional=("twist_angle", "nu", "n")),
+    "non_planarity": Spec(sr.non_planarity,
+                          {"x1": Arg(st.lists(st.floats(-1, 1), min_size=3, max_size=20),
+                                     [([1.0, NAN, 2.0], ValueError), ("abc", TypeError)]),
+                           "x2": Arg(st.just(None), [])},
+                          lambda r, a: 0 <= r <= 1),
+    "derivation_status": Spec(sr.derivation_status, {"name": Arg(
+        st.sampled_from(["ring_linearisation"]), NOT_STR)},
+        lambda r, a: r == "all steps checked", positional=("name",)),
+}
+
+
+def _call(spec: Spec, kwargs: dict[str, Any]) -> Any:
+    if spec.call is sr.non_planarity:  # x2: same length as x1 (a pair of samples)
+        x1 = kwargs["x1"]
+        x2 = [0.5 * v for v in x1] if isinstance(x1, list) else x1
+        return spec.call(x1, x2)
+    pos = [kwargs.pop(k) for k in spec.positional if k in kwargs]
+    return spec.call(*pos, **kwargs)
+
+
+def _draw_call(spec: Spec, data: st.DataObject) -> tuple[dict[str, Any], dict[str, type]]:
+    """Valid values for every argument, then invalid values for a random few."""
+    kwargs = {k: data.draw(a.valid, label=k) for k, a in spec.args.items()}
+    bad: dict[str, type] = {}
+    for k, a in spec.args.items():
+        if a.invalid and data.draw(st.integers(0, 3), label=f"break {k}?") == 0:
+            value, exc = data.draw(st.sampled_from(a.invalid), label=f"invalid {k}")
+            kwargs[k], bad[k] = value, exc
+    return kwargs, bad
+
+
+def check_one(spec: Spec, kwargs: dict[str, Any], bad: dict[str, type]) -> None:
+    """The property of the module docstring, for one call."""
+    t0 = time.perf_counter()
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # unconverged results warn; flags are checked below
+            result = _call(spec, dict(kwargs))
+    except (ValueError, TypeError) as exc:
+        assert bad, f"valid input rejected: {kwargs}: {exc!r}"
+        assert any(k in str(exc) for k in bad), f"{exc!r} names none of {sorted(bad)}"
+        return
+    except sr.SpectralRodError as exc:
+        assert not bad, f"invalid {sorted(bad)} not rejected: {exc!r}"
+        assert isinstance(exc, spec.faults), f"undocumented fault {exc!r} for {kwargs}"
+        return
+    assert not bad, f"invalid {sorted(bad)} accepted: {kwargs} -> {result!r}"
+    assert time.perf_counter() - t0 < CALL_LIMIT, f"{kwargs} took too long"
+    assert spec.check(result, kwargs), f"result {result!r} out of bounds for {kwargs}"
+
+
+def _fuzz(name: str, data: st.DataObject) -> None:
+    spec = SPECS[name]
+    kwargs, bad = _draw_call(spec, data)
+    check_one(spec, kwargs, bad)
+
+
+FAST = settings(max_examples=8, deadline=None, derandomize=True,
+                suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+LARGE = settings(max_examples=120, deadline=None,
+                 suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+
+
+@pytest.mark.parametrize("name", sorted(SPECS))
+@FAST
+@given(data=st.data())
+def test_fuzz_public_function(name, data):
+    _fuzz(name, data)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", sorted(SPECS))
+@LARGE
+@given(data=st.data())
+def test_fuzz_public_function_large(name, data):
+    _fuzz(name, data)
