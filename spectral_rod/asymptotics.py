@@ -123,8 +123,11 @@ from dataclasses import dataclass
 
 from spectral_rod._validation import check_choice, check_int, scalar_nu, scalar_twist
 
-#: Smallest |Omega(L)| the large-twist expansions accept: they are series in 1/Omega.
-EXPANSION_MIN_TWIST = 1.0
+#: Smallest |Omega(L)| the large-twist expansions accept: they are series in 1/Omega, and below
+#: 2 pi the ripple term b3/Omega^3 outgrows the leading ones (at Omega = 1 the four-term series
+#: gives p < 0 for nu = 2; from 2 pi on it stays in (1, 2) for every nu in [1, 1e4], checked
+#: by the fuzz suite).
+EXPANSION_MIN_TWIST = 2.0 * math.pi
 #: Largest n of the crossing closed forms (N - w loses ~n^2 eps to cancellation).
 CROSSING_MAX_N = 10_000
 
@@ -136,8 +139,8 @@ def _nu(nu: object) -> float:
 def _large_twist(twist_angle: object) -> float:
     om = abs(scalar_twist(twist_angle))
     if om < EXPANSION_MIN_TWIST:
-        raise ValueError(f"twist_angle must satisfy {EXPANSION_MIN_TWIST:g} <= |twist_angle| <= "
-                         f"1e4 for the large-twist expansion (a series in 1/Omega), got {om!r}")
+        raise ValueError(f"twist_angle must satisfy 2 pi <= |twist_angle| <= 1e4 for the "
+                         f"large-twist expansion (a series in 1/Omega), got {om!r}")
     return om
 
 __all__ = [
@@ -188,7 +191,7 @@ def large_twist_expansion(twist_angle: float, nu: float, *, order: int = 4,
     order: 0 (the limit), 2, 3 or 4; family: None for p* (the lower family, -b3 |sin Omega|),
     'symmetric' (+b3 sin Omega) or 'antisymmetric' (-b3 sin Omega). Error O(Omega^-(order+1))
     for order >= 2 (O(Omega^-2) for order 0). Meant for |Omega| >~ 10; refused below
-    |Omega| = 1 (:data:`EXPANSION_MIN_TWIST`), where the series means nothing.
+    |Omega| = 2 pi (:data:`EXPANSION_MIN_TWIST`), where the series stops making sense.
     """
     if isinstance(order, bool) or order not in (0, 2, 3, 4):
         raise ValueError(f"order must be 0, 2, 3 or 4, got {order!r}")
