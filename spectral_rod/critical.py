@@ -14,17 +14,17 @@ flagged and warned about) both end inside the bounds.
 
 from __future__ import annotations
 
+import importlib
 import warnings
 from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from spectral_rod._blas_threads import one_blas_thread
 from spectral_rod._validation import check_nu, check_resolution, check_tol, check_twist
-from spectral_rod.characteristic import characteristic_double, double_error_estimate
 from spectral_rod.errors import ConvergenceWarning
 from spectral_rod.families import FAMILIES
-from spectral_rod.increment import basis_size, galerkin_increment_family
 from spectral_rod.results import CriticalLoad, as_output
 from spectral_rod.router import ROD_METHODS, check_method, route
 from spectral_rod.straight_rod import N_MAX, N_MIN, collocation_critical_load
@@ -50,12 +50,15 @@ def _collocation(tw, nv, n, tol):
 
 
 def _characteristic(tw, nv, n, tol):
-    p, fam = zip(*(characteristic_double(a, b) for a, b in zip(tw, nv, strict=True)),
-                 strict=True)
-    return np.array(p), np.zeros(tw.size, dtype=int), double_error_estimate(tw), np.array(fam)
+    from spectral_rod.characteristic import characteristic_double_batch, double_error_estimate
+
+    p, fam = characteristic_double_batch(tw, nv)
+    return p, np.zeros(tw.size, dtype=int), double_error_estimate(tw), np.asarray(FAMILIES)[fam]
 
 
 def _increment(tw, nv, n, tol):
+    from spectral_rod.increment import basis_size, galerkin_increment_family
+
     d, fam = zip(*(galerkin_increment_family(a, b) for a, b in zip(tw, nv, strict=True)),
                  strict=True)
     d = np.array(d)
@@ -66,17 +69,27 @@ def _increment(tw, nv, n, tol):
 
 _SOLVERS = {"collocation": _collocation, "characteristic": _characteristic,
             "increment": _increment}
-assert set(_SOLVERS) == set(ROD_METHODS)
+#: the modules each method imports when first used (before the BLAS threads are limited, so
+#: that the library a module brings, e.g. scipy.linalg's BLAS, is limited too)
+_MODULES = {"collocation": "spectral_rod.straight_rod",
+            "characteristic": "spectral_rod.characteristic",
+            "increment": "spectral_rod.increment"}
+assert set(_SOLVERS) == set(ROD_METHODS) == set(_MODULES)
 
 
 def solve_points(tw: NDArray[np.float64], nv: NDArray[np.float64], methods: NDArray[np.str_],
                  n: int | None, tol: float) -> PointResults:
-    """Run each method on its points (flat, validated arrays; methods from the router)."""
+    """Run each method on its points (flat, validated arrays; methods from the router), with
+    small dense linear algebra on one BLAS thread (:mod:`spectral_rod._blas_threads`)."""
     p, deg, err = np.empty(tw.size), np.zeros(tw.size, dtype=int), np.empty(tw.size)
     fam = np.empty(tw.size, dtype="<U13")
-    for name in np.unique(methods):
-        idx = np.flatnonzero(methods == name)
-        p[idx], deg[idx], err[idx], fam[idx] = _SOLVERS[str(name)](tw[idx], nv[idx], n, tol)
+    names = [str(name) for name in np.unique(methods)]
+    for name in names:
+        importlib.import_module(_MODULES[name])
+    with one_blas_thread():
+        for name in names:
+            idx = np.flatnonzero(methods == name)
+            p[idx], deg[idx], err[idx], fam[idx] = _SOLVERS[name](tw[idx], nv[idx], n, tol)
     return PointResults(p, methods, deg, err, fam)
 
 
