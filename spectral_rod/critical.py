@@ -15,6 +15,7 @@ flagged and warned about) both end inside the bounds.
 from __future__ import annotations
 
 import importlib
+import math
 import warnings
 from typing import NamedTuple
 
@@ -26,8 +27,11 @@ from spectral_rod._validation import check_nu, check_resolution, check_tol, chec
 from spectral_rod.errors import ConvergenceWarning
 from spectral_rod.families import FAMILIES
 from spectral_rod.results import CriticalLoad, as_output
-from spectral_rod.router import ROD_METHODS, check_method, route
+from spectral_rod.router import ROD_METHODS, check_method, route, route_point
 from spectral_rod.straight_rod import N_MAX, N_MIN, collocation_critical_load
+from spectral_rod.straight_rod.eigensolver import POWER_RTOL
+from spectral_rod.straight_rod.few_points import solve_few
+from spectral_rod.straight_rod.resolution import error_estimate_scalar, initial_degree_scalar
 
 __all__ = ["critical_load"]
 
@@ -115,6 +119,42 @@ def warn_unconverged(where: str, converged: NDArray[np.bool_], res: PointResults
         ConvergenceWarning, stacklevel=3)
 
 
+def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: object,
+               full_output: object):
+    """The scalar fast path: p* (or its CriticalLoad) for one collocation point given as Python
+    or numpy floats, or None wherever the general path must answer (any other input, a
+    non-collocation route, a forced degree, a point the lean solver does not accept or whose
+    estimate misses tol). The computation is the general path's for one point, without its
+    array bookkeeping (~40 us of a ~100 us call)."""
+    if not (isinstance(twist_angle, (float, int)) and isinstance(nu, (float, int))
+            and isinstance(tol, float) and n is None and method in ("auto", "collocation")
+            and full_output in (True, False)) or isinstance(twist_angle, bool) \
+            or isinstance(nu, bool):
+        return None
+    om, nv = abs(float(twist_angle)), float(nu)
+    if not (om <= 1e4 and 1.0 <= nv <= 1e4 and 1e-14 <= tol <= 1e-2) \
+            or route_point(om, nv, None, method) != "collocation":
+        return None  # includes NaN: the general path names the bad argument
+    deg = initial_degree_scalar(om, tol)
+    # no BLAS thread limit here: the lean solver's matrices (m < 100) are below OpenBLAS's
+    # threading thresholds, and the limit would cost 4 us of a ~70 us call
+    lam, tails, ok = solve_few(deg, np.array([om]), np.array([nv]), max(0.01 * tol, POWER_RTOL))
+    if not ok[0]:
+        return None
+    (l0, l1), (t0, t1) = lam[:, 0].tolist(), tails[:, 0].tolist()
+    best = 1 if l1 < l0 * (1.0 - 1e-14) else 0  # as pick_family
+    tail = max(t0, t1) if abs(l0 - l1) <= 1e-6 * min(l0, l1) else (t0, t1)[best]
+    err = error_estimate_scalar(tail, om)
+    if not err <= tol:
+        return None
+    hi = (1.0 + nv) / 2.0
+    p = min(max((l0, l1)[best] / math.pi**2, 1.0), hi)
+    if not full_output:
+        return p
+    return CriticalLoad(p, "collocation", deg, min(err, hi - 1.0), FAMILIES[best],
+                        converged=True, tol=tol)
+
+
 def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None,
                   tol: float = 1e-12, method: str = "auto", full_output: bool = False):
     """Critical load p* = P_cr / (pi^2 A1 / L^2) of the hinged, spontaneously twisted rod.
@@ -139,6 +179,9 @@ def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None
     >>> round(critical_load(6.283185307179586, 1.5), 9)
     1.184049396
     """
+    one = _one_point(twist_angle, nu, n, tol, method, full_output)
+    if one is not None:
+        return one
     twist, nu_arr = check_twist(twist_angle), check_nu(nu)
     tol, method = check_tol(tol), check_method(method)
     if n is not None:

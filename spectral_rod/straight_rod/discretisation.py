@@ -57,8 +57,15 @@ INST1 = (
 def term_coefficients(twist_angle: ArrayLike, nu: ArrayLike) -> NDArray[Any]:
     """The coefficients of :data:`INST1` at broadcast points, shape (..., len(INST1)); the dtype
     follows the input (float64, or longdouble for the extended-precision Rayleigh quotient)."""
-    om, nv = np.broadcast_arrays(twist_angle, nu)
-    return np.stack([np.broadcast_to(t.coefficient(om, nv), om.shape) for t in INST1], axis=-1)
+    om, nv = np.asarray(twist_angle), np.asarray(nu)
+    if om.ndim == nv.ndim == 0 and om.dtype == nv.dtype == np.float64:  # one point: floats
+        a, b = float(om), float(nv)
+        return np.array([t.coefficient(a, b) for t in INST1])
+    out = np.empty((*np.broadcast_shapes(om.shape, nv.shape), len(INST1)),
+                   dtype=np.result_type(om, nv, 1.0))
+    for i, t in enumerate(INST1):
+        out[..., i] = t.coefficient(om, nv)
+    return out
 
 
 @dataclass(frozen=True)
