@@ -41,7 +41,8 @@ class CollocationResult(NamedTuple):
 
 
 #: Up to this many points of one degree the lean solver (:mod:`.few_points`) is used, above it
-#: the batched engine (:mod:`.eigensolver`); measured crossover, see :func:`_solve_points`.
+#: the batched engine (:mod:`.eigensolver`): the measured crossover (one degree, Figure 1
+#: points, tol 1e-12: lean/batched 25/34 us a point at 24 points, 37/29 at 32).
 FEW_POINTS = 24
 
 
