@@ -157,6 +157,24 @@ def _min_eig2(t: NDArray[np.float64]) -> tuple[float, NDArray[np.float64]]:
     return lmin, (v / nv if nv > 0 else np.array([1.0, 0.0]))
 
 
+@lru_cache(maxsize=128)
+def _galerkin_basis(n: int, q: int) -> tuple[NDArray[np.float64], ...]:
+    """Everything of the formulation that does not depend on Omega or nu, per (n, q): nodes s,
+    sqrt(weights), phi''/pi of the critical mode and of the complement (sines, then tails)
+    at the nodes, and the complement's W block (both fields). Cached: 30 % of a point's cost."""
+    s, w = gauss_legendre(q)
+    crit, sines, sin_ks = _second_derivatives(s, n)
+    tails, w_tail = _tails(s, w, sin_ks, n)
+    m1 = sines.shape[1]
+    wblock = np.zeros((m1 + 2, m1 + 2))
+    wblock[:m1, :m1] = np.diag(np.arange(2, n + 1, dtype=float) ** 2 - 1.0)
+    wblock[m1:, m1:] = w_tail
+    w22 = np.zeros((2 * (m1 + 2),) * 2)
+    w22[:m1 + 2, :m1 + 2] = wblock
+    w22[m1 + 2:, m1 + 2:] = wblock
+    return s, np.sqrt(w), crit, np.concatenate([sines, tails], axis=1), w22
+
+
 def galerkin_increment(twist_angle: float, nu: float, n: int | None = None) -> float:
     """p* - 1 from the lab-frame Schur-complement formulation (module docstring), one point.
 
@@ -184,33 +202,20 @@ def galerkin_increment_family(twist_angle: float, nu: float, n: int | None = Non
     if om == 0.0 or e == 0.0:
         return 0.0, "symmetric"
     n = basis_size(om) if n is None else int(n)
-    q = int(1.6 * n + 0.5 * om + 40)
-    s, w = gauss_legendre(q)
-    crit, sines, sin_ks = _second_derivatives(s, n)
-    tails, w_tail = _tails(s, w, sin_ks, n)
+    s, sqrt_w, crit, comp, w22 = _galerkin_basis(n, int(1.6 * n + 0.5 * om + 40))
     so, co = np.sin(om * s), np.cos(om * s)
     # omega2 = cos(Om s) x2'' - sin(Om s) x1''  (columns: x1 = phi, x2 = phi)
-    comp = np.concatenate([sines, tails], axis=1)
     f = np.concatenate([-(crit * so)[:, None], (crit * co)[:, None],
                         -comp * so[:, None], comp * co[:, None]], axis=1)
-    f *= np.sqrt(w)[:, None]
+    f *= sqrt_w[:, None]
     g = f.T @ f
-    k = np.arange(2, n + 1, dtype=float)
-    w_sines = k**2 - 1.0
-    m1 = sines.shape[1]
-    wblock = np.zeros((m1 + 2, m1 + 2))
-    wblock[:m1, :m1] = np.diag(w_sines)
-    wblock[m1:, m1:] = w_tail
-    w22 = np.zeros((2 * (m1 + 2),) * 2)
-    w22[:m1 + 2, :m1 + 2] = wblock
-    w22[m1 + 2:, m1 + 2:] = wblock
     g11, g21, g22 = g[:2, :2], g[2:, :2], g[2:, 2:]
     a0 = w22 + e * g22
     eye = np.eye(a0.shape[0])
 
     def schur(d: float):
-        cf = cho_factor(a0 - d * eye)
-        y = cho_solve(cf, g21)
+        cf = cho_factor(a0 - d * eye, check_finite=False)
+        y = cho_solve(cf, g21, check_finite=False)
         return e * g11 - e * e * (g21.T @ y), cf
 
     t0, _ = schur(0.0)
@@ -222,7 +227,7 @@ def galerkin_increment_family(twist_angle: float, nu: float, n: int | None = Non
             d *= 0.5
             continue
         lmin, v = _min_eig2(t)
-        r = cho_solve(cf, g21 @ v)
+        r = cho_solve(cf, g21 @ v, check_finite=False)
         step = (lmin - d) / (-e * e * float(r @ r) - 1.0)
         d_new = d - step
         if abs(d_new - d) <= 4e-16 * abs(d_new):
