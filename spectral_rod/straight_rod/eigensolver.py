@@ -41,7 +41,8 @@ from spectral_rod.straight_rod.discretisation import (
 )
 from spectral_rod.straight_rod.resolution import mode_tails
 
-__all__ = ["ModalFamily", "lowest_eigenpair", "modal_family", "physical_eig", "solve_family"]
+__all__ = ["ModalFamily", "lowest_eigenpair", "modal_family", "pencil_rayleigh_quotient",
+           "physical_eig", "solve_family"]
 
 #: Eigenvalues with |Im| above this fraction of |lambda| are complex, i.e. not physical.
 IMAG_REL = 1.0e-8
@@ -303,7 +304,7 @@ def _start_vector(k: int) -> NDArray[np.float64]:
     return np.random.default_rng(20240607).standard_normal(k)
 
 
-def _pencil_rayleigh_quotient(op: FamilyOperator, twist: NDArray[np.float64],
+def pencil_rayleigh_quotient(op: FamilyOperator, twist: NDArray[np.float64],
                               nu: NDArray[np.float64], left: NDArray[np.float64],
                               right: NDArray[np.float64]) -> NDArray[np.float64]:
     """y^T A x / y^T B x per point, with A = sum_i coef_i P_i (:attr:`FamilyOperator.pieces`).
@@ -366,7 +367,7 @@ def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np
     good = np.flatnonzero(ok) if not loose else np.zeros(0, dtype=int)
     w = w[good]
     left = np.hstack([rows_matmul(w[:, :k1], mf.left1), rows_matmul(w[:, k1:], mf.left2)])
-    lam[good] = _pencil_rayleigh_quotient(op, twist[good], nu[good], left, vec[good])
+    lam[good] = pencil_rayleigh_quotient(op, twist[good], nu[good], left, vec[good])
     bad = np.flatnonzero(~(ok | above))
     if bad.size:  # the full eig with the rule decides
         a, b = op.pencil(twist[bad], nu[bad])
