@@ -128,7 +128,7 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
     array bookkeeping (~40 us of a ~100 us call)."""
     if not (isinstance(twist_angle, (float, int)) and isinstance(nu, (float, int))
             and isinstance(tol, float) and n is None and method in ("auto", "collocation")
-            and full_output in (True, False)) or isinstance(twist_angle, bool) \
+            and isinstance(full_output, (bool, np.bool_))) or isinstance(twist_angle, bool) \
             or isinstance(nu, bool):
         return None
     om, nv = abs(float(twist_angle)), float(nu)
