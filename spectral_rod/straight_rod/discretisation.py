@@ -96,6 +96,21 @@ class FamilyOperator:
         return p
 
     @cached_property
+    def term_blocks(self) -> tuple[tuple[int, int, tuple[int, ...], NDArray[np.float64]], ...]:
+        """A's nonzero blocks, per (equation e, field f): (e, f, the indices of the terms of
+        :data:`INST1` there, their blocks 2^order (d/dx)^order basis stacked, shape
+        (terms * rows of e, unknowns of f)): products with A that skip its zero blocks."""
+        groups: dict[tuple[int, int], list[int]] = {}
+        for i, t in enumerate(INST1):
+            groups.setdefault((t.equation, t.field), []).append(i)
+        out = []
+        for (e, f), idx in groups.items():
+            b = self.bases[e][f]
+            out.append((e, f, tuple(idx), np.vstack([(b.value, b.d1, b.d2)[INST1[i].order]
+                                                     * 2.0 ** INST1[i].order for i in idx])))
+        return tuple(out)
+
+    @cached_property
     def mass(self) -> NDArray[np.float64]:
         """B = diag(V_1, V_2), shape (m, m)."""
         k1, k2 = self.sizes
