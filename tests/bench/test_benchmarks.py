@@ -15,7 +15,7 @@ wall-clock time (on a shared machine the minimum is the round least disturbed by
 Each new-code test records the resolution and the achieved accuracy (against the mpmath
 characteristic equation on a sample) in ``extra_info`` and asserts it, so that a fast wrong answer
 cannot pass, and fails if its same-run ratio is below the floor stated with it (FLOORS): about half
-the ratio measured in three runs on the project's shared 2-core machines, a margin for the 1.5-2x
+the lowest ratio measured on the project's shared 2-core machines, a margin for the 1.5-2x
 run-to-run swings measured there when other jobs load the cores. The terminal summary prints the
 table of ratios. Import time and the first (cold) call are timed in fresh interpreters.
 """
@@ -35,12 +35,14 @@ from spectral_rod import baseline_critical_load, baseline_sweep, critical_load, 
 
 pytestmark = pytest.mark.bench
 
-#: Same-run ratio floors (yardstick / new); see the module docstring for the margin.
+#: Same-run ratio floors (yardstick / new): about half the lowest ratio measured in the runs of
+#: 2026-12-01 on a shared 2-core machine (module docstring), e.g. the Figure 1 batch 17-18 ->
+#: 8; the near-degenerate yardstick runs on two BLAS threads and swings 36-204x with load.
 FLOORS = {
-    "figure1 batch": 10.0, "figure1 per curve": 8.0, "batches of 100": 4.0,
-    "batches of 10": 2.0, "scalar loop": 1.5, "brentq search": 1.5,
-    "map collocation part": 8.0, "map all points": 8.0, "large twist": 10.0,
-    "near-degenerate": 5.0,
+    "figure1 batch": 8.0, "figure1 per curve": 6.0, "batches of 100": 4.5,
+    "batches of 10": 2.5, "scalar loop": 2.0, "brentq search": 2.0,
+    "map collocation part": 3.0, "map all points": 3.0, "large twist": 20.0,
+    "near-degenerate": 15.0,
 }
 TOL = 1e-12
 
