@@ -31,7 +31,11 @@ from spectral_rod.router import ROD_METHODS, check_method, route, route_point
 from spectral_rod.straight_rod import N_MAX, N_MIN, collocation_critical_load
 from spectral_rod.straight_rod.eigensolver import POWER_RTOL
 from spectral_rod.straight_rod.few_points import solve_few
-from spectral_rod.straight_rod.resolution import error_estimate_scalar, initial_degree_scalar
+from spectral_rod.straight_rod.resolution import (
+    error_estimate_scalar,
+    initial_degree_scalar,
+    raised_degree,
+)
 
 __all__ = ["critical_load"]
 
@@ -136,17 +140,23 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
             or route_point(om, nv, None, method) != "collocation":
         return None  # includes NaN: the general path names the bad argument
     deg = initial_degree_scalar(om, tol)
-    # no BLAS thread limit here: the lean solver's matrices (m < 100) are below OpenBLAS's
-    # threading thresholds, and the limit would cost 4 us of a ~70 us call
-    lam, tails, ok = solve_few(deg, np.array([om]), np.array([nv]), max(0.01 * tol, POWER_RTOL))
-    if not ok[0]:
-        return None
-    (l0, l1), (t0, t1) = lam[:, 0].tolist(), tails[:, 0].tolist()
-    best = 1 if l1 < l0 * (1.0 - 1e-14) else 0  # as pick_family
-    tail = max(t0, t1) if abs(l0 - l1) <= 1e-6 * min(l0, l1) else (t0, t1)[best]
-    err = error_estimate_scalar(tail, om)
-    if not err <= tol:
-        return None
+    floor = error_estimate_scalar(0.0, om)
+    while True:  # the degree loop of collocation_critical_load, for one point
+        # no BLAS thread limit here: the lean solver's matrices (m < 100) are below
+        # OpenBLAS's threading thresholds, and the limit would cost 4 us of a ~60 us call
+        lam, tails, ok = solve_few(deg, np.array([om]), np.array([nv]),
+                                   max(0.01 * tol, POWER_RTOL))
+        if not ok[0]:
+            return None
+        (l0, l1), (t0, t1) = lam[:, 0].tolist(), tails[:, 0].tolist()
+        best = 1 if l1 < l0 * (1.0 - 1e-14) else 0  # as pick_family
+        tail = max(t0, t1) if abs(l0 - l1) <= 1e-6 * min(l0, l1) else (t0, t1)[best]
+        err = error_estimate_scalar(tail, om)
+        if err <= tol:
+            break
+        if deg >= N_MAX or floor >= tol:
+            return None  # unconverged: the general path warns and flags it
+        deg = int(raised_degree(deg))
     hi = (1.0 + nv) / 2.0
     p = min(max((l0, l1)[best] / math.pi**2, 1.0), hi)
     if not full_output:
@@ -178,12 +188,12 @@ def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None
 
     Scalar and array calls: a collocation point is solved by the lean solver
     (:mod:`spectral_rod.straight_rod.few_points`) in a scalar call and whenever at most
-    ``FEW_POINTS`` (24) points of a call share its degree, by the batched engine otherwise. The
-    two compute the same Rayleigh quotient with different rounding: a scalar call and a
-    one-point array call give identical results, and a point in a large batch differs by at
-    most the round-off part of the error estimate, eps (32 + 0.3 Omega^2) (measured: <= 8e-15
-    on Figure 1's 1,201 points, <= 1.1e-13 on 3,000 random points with |Omega(L)| < 50,
-    nu <= 100).
+    ``few_points_limit(n)`` (24 up to n = 30, fewer above) points of a call share its degree,
+    by the batched engine otherwise. The two compute the same Rayleigh quotient with different
+    rounding: a scalar call and a one-point array call give identical results, and a point in
+    a large batch differs by at most the round-off part of the error estimate,
+    eps (32 + 0.3 Omega^2) (measured: <= 8e-15 on Figure 1's 1,201 points, <= 1.1e-13 on 3,000
+    random points with |Omega(L)| < 50, nu <= 100).
 
     >>> round(critical_load(6.283185307179586, 1.5), 9)
     1.195993681

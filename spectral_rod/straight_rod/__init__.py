@@ -32,7 +32,7 @@ The modules
 * :mod:`.few_points` -- the same eigenvalue for one point or a few (dense LU by LAPACK, powers
   of the shift-and-invert matrix): the scalar and small-batch path;
 * :mod:`.collocation` -- p* for arrays of points with automatic resolution (picks the engine
-  per degree group by the measured crossover, ``FEW_POINTS``).
+  per degree group by the measured crossover, ``few_points_limit``).
 """
 
 from spectral_rod.straight_rod.collocation import (

@@ -24,6 +24,7 @@ from spectral_rod.straight_rod.resolution import (
     N_MIN,
     error_estimate,
     initial_degree,
+    raised_degree,
     roundoff_floor,
 )
 
@@ -40,17 +41,25 @@ class CollocationResult(NamedTuple):
     family: NDArray[np.int_]
 
 
-#: Up to this many points of one degree the lean solver (:mod:`.few_points`) is used, above it
-#: the batched engine (:mod:`.eigensolver`): the measured crossover (one degree, Figure 1
-#: points, tol 1e-12: lean/batched 25/34 us a point at 24 points, 37/29 at 32).
+#: Up to FEW_POINTS points of one degree n <= 30 the lean solver (:mod:`.few_points`) is used,
+#: above it the batched engine (:mod:`.eigensolver`); the lean solver's cost grows faster with n,
+#: so the limit falls as n^-3 above n = 30 (see :func:`few_points_limit`).
 FEW_POINTS = 24
+
+
+def few_points_limit(n: int) -> int:
+    """Most points of degree n handed to the lean solver: the measured crossover (Figure 1
+    points, tol 1e-12, lean/batched us a point: n = 22: 25/34 at 24 points, 37/29 at 32;
+    n = 36: 98/108 at 8, 85/70 at 16; n = 44: 134/159 at 8, 117/106 at 16; n = 56: 234/244 at 4,
+    191/151 at 8)."""
+    return FEW_POINTS if n <= 30 else max(4, int(FEW_POINTS * (30 / n) ** 3))
 
 
 def _solve_points(twist: NDArray[np.float64], nu: NDArray[np.float64], n: NDArray[np.int_],
                   tol: float = 1e-12):
     """p*, family index and tail for flat arrays of points at the given degrees.
 
-    Per degree: up to :data:`FEW_POINTS` points by the lean solver (both families, dense LU
+    Per degree: up to :func:`few_points_limit` points by the lean solver (both families, dense LU
     and matrix powers), more by the batched engine: the symmetric family first, the
     antisymmetric one then only resolved where it is not clearly above (1 + 1e-6 times) the
     symmetric eigenvalue. Points the lean solver does not accept go to the batched engine.
@@ -61,7 +70,7 @@ def _solve_points(twist: NDArray[np.float64], nu: NDArray[np.float64], n: NDArra
     rtol = max(0.01 * tol, POWER_RTOL)
     for deg in np.unique(n):
         sel = np.flatnonzero(n == deg)
-        if sel.size <= FEW_POINTS:
+        if sel.size <= few_points_limit(int(deg)):
             lam, tl, ok = solve_few(int(deg), twist[sel], nu[sel], rtol)
             p[sel], fam[sel], tails[sel] = pick_family(lam, tl)
             sel = sel[~ok]
@@ -107,7 +116,7 @@ def collocation_critical_load(twist: NDArray[np.float64], nu: NDArray[np.float64
     # raise the degree where the estimate misses tol, unless round-off alone does
     todo = np.flatnonzero((err > tol) & (deg < N_MAX) & (roundoff_floor(tw) < tol))
     while todo.size:
-        deg[todo] = np.minimum(N_MAX, deg[todo] + 2 * np.ceil(0.06 * deg[todo] + 1).astype(int))
+        deg[todo] = raised_degree(deg[todo])
         p[todo], fam[todo], tails[todo] = _solve_points(tw[todo], nu[todo], deg[todo], tol)
         err[todo] = error_estimate(tails[todo], tw[todo])
         todo = todo[(err[todo] > tol) & (deg[todo] < N_MAX)]

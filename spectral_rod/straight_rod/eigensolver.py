@@ -325,6 +325,13 @@ def pencil_rayleigh_quotient(op: FamilyOperator, twist: NDArray[np.float64],
 _MASS_TERMS = [i for i, t in enumerate(INST1) if t.field == t.equation and t.order == 0]
 
 
+@lru_cache(maxsize=128)
+def _term_blocks(n: int, family: str, dtype: type) -> tuple:
+    """:attr:`FamilyOperator.term_blocks` transposed, in `dtype` (converted once)."""
+    return tuple((e, f, idx, np.ascontiguousarray(blocks.astype(dtype).T))
+                 for e, f, idx, blocks in family_operator(n, family).term_blocks)
+
+
 def _rayleigh_sums(op: FamilyOperator, twist: NDArray[np.float64], nu: NDArray[np.float64],
                    left: NDArray[np.float64], right: NDArray[np.float64], dtype: type
                    ) -> NDArray[np.float64]:
@@ -334,8 +341,8 @@ def _rayleigh_sums(op: FamilyOperator, twist: NDArray[np.float64], nu: NDArray[n
     cols = (slice(0, k1), slice(k1, None))
     x, y = right.astype(dtype), left.astype(dtype)
     terms = np.empty((x.shape[0], len(INST1)), dtype=dtype)
-    for e, f, idx, blocks in op.term_blocks:
-        px = rows_matmul(x[:, cols[f]], blocks.astype(dtype).T).reshape(x.shape[0], len(idx), -1)
+    for e, f, idx, blocks in _term_blocks(op.n, op.family, dtype):
+        px = rows_matmul(x[:, cols[f]], blocks).reshape(x.shape[0], len(idx), -1)
         terms[:, idx] = np.einsum("pj,pij->pi", y[:, cols[e]], px)
     coef = term_coefficients(twist.astype(dtype), nu.astype(dtype))
     return ((coef * terms).sum(axis=1) / terms[:, _MASS_TERMS].sum(axis=1)).astype(np.float64)

@@ -9,7 +9,8 @@ families the same size, so they are stacked), and:
    directly: 5 us for m = 21, where ``numpy.linalg.inv`` takes 20 us);
 2. M = F^{-1} B, the shift-and-invert matrix, is squared 3 or 4 times: M^8 or M^16 x0 and
    x0^T M^16 are the right and left power iterates of 8 or 16 steps, for a handful of batched
-   matrix products instead of 32 solves;
+   matrix products instead of 32 solves (above m = SQUARING_MAX the steps are taken one by one
+   with the vectors, cheaper there);
 3. the eigenvalue is the two-sided Rayleigh quotient of the pencil itself, y^T A x / y^T B x
    (x = M x_k, y^T = x0^T M^{k+1} F^{-1}: its error is the product of the vectors' errors),
    accumulated in extended precision above |Omega| = LONG_TWIST as in the batched engine
@@ -39,7 +40,13 @@ from spectral_rod.families import FAMILIES, SHIFT
 from spectral_rod.straight_rod.discretisation import INST1, family_operator, term_coefficients
 from spectral_rod.straight_rod.eigensolver import LONG_TWIST, pencil_rayleigh_quotient
 
-__all__ = ["DensePencils", "dense_pencils", "solve_few"]
+__all__ = ["SQUARING_MAX", "DensePencils", "dense_pencils", "solve_few"]
+
+#: Up to this size m the powers of M are taken by squaring (a few matrix products), above it by
+#: products with the vectors: a squaring costs ~m^3, a step ~m^2 but ~1 us of call overhead;
+#: measured at one to 24 points: faster from n = 30 on (e.g. 24 points at n = 30: 67 -> 43 us a
+#: point; one point at n = 44: 357 -> 309 us).
+SQUARING_MAX = 27
 
 
 @dataclass(frozen=True)
@@ -131,11 +138,17 @@ def solve_few(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol:
         return np.full((2, pts), np.nan), np.full((2, pts), np.inf), np.zeros(pts, bool)
     with np.errstate(all="ignore"):  # overflow (a spurious eigenvalue at SHIFT): rejected below
         mat = f_inv @ dp.mass
-        power = mat
-        for _ in range(3 if rtol >= 1e-8 else 4):
-            power = power @ power
-        x = power @ dp.start  # M^k x0
-        u = dp.start @ power  # x0^T M^k
+        steps = 8 if rtol >= 1e-8 else 16
+        if m <= SQUARING_MAX:  # log2(steps) products of matrices
+            power = mat
+            for _ in range(steps.bit_length() - 1):
+                power = power @ power
+            x = power @ dp.start  # M^k x0
+            u = dp.start @ power  # x0^T M^k
+        else:  # steps products with vectors
+            x = u = np.broadcast_to(dp.start, (pts, 2, m))
+            for _ in range(steps):
+                x, u = (mat @ x[..., None])[..., 0], (u[..., None, :] @ mat)[..., 0, :]
         x1 = (mat @ x[..., None])[..., 0]
         y = ((u[..., None, :] @ mat) @ f_inv)[..., 0, :]  # left eigenvector of the pencil
         ab_x = (x1[:, :, None, None, :] @ mats[:, :, 1:])[..., 0, :]  # (A x1, B x1)

@@ -18,6 +18,7 @@ from spectral_rod.straight_rod.discretisation import FamilyOperator
 
 __all__ = ["ERR_LINEAR", "ERR_QUADRATIC", "N_MAX", "N_MIN", "ROUNDOFF_TWIST", "error_estimate",
            "error_estimate_scalar", "initial_degree", "initial_degree_scalar", "mode_tails",
+           "raised_degree",
            "roundoff_floor", "tail_for_tolerance"]
 
 N_MIN, N_MAX = 8, 512
@@ -45,6 +46,12 @@ def initial_degree(twist_angle: NDArray[np.float64], nu: NDArray[np.float64],
     om = np.abs(np.asarray(twist_angle, dtype=float))
     x = _degree_formula(om, -math.log10(tol), np.cbrt)
     return np.clip(2 * np.ceil(x / 2).astype(int), N_MIN, N_MAX) + 0 * np.asarray(nu, int)
+
+
+def raised_degree(n):
+    """The next degree tried where the estimate misses tol: ~12 % higher, even, <= N_MAX (works
+    on ints and on integer arrays)."""
+    return np.minimum(N_MAX, n + 2 * np.ceil(0.06 * np.asarray(n) + 1).astype(int))
 
 
 def initial_degree_scalar(twist_angle: float, tol: float) -> int:
