@@ -192,7 +192,7 @@ def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None
     by the batched engine otherwise. The two compute the same Rayleigh quotient with different
     rounding: a scalar call and a one-point array call give identical results, and a point in
     a large batch differs by at most the round-off part of the error estimate,
-    eps (32 + 0.3 Omega^2) (measured: <= 8e-15 on Figure 1's 1,201 points, <= 1.1e-13 on 3,000
+    eps (32 + 0.3 Omega^2) (measured: <= 8e-15 on Figure 1's 1,201 points, <= 2.6e-14 on 3,000
     random points with |Omega(L)| < 50, nu <= 100).
 
     >>> round(critical_load(6.283185307179586, 1.5), 9)
