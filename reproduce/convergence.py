@@ -10,8 +10,10 @@ equation (:mod:`spectral_rod.characteristic`), which is also the reference for e
 Writes: convergence_resolution.png (error vs unknowns per field, log-log), convergence_time.png
 (error vs wall time), convergence_coefficients.png (the mode's Chebyshev coefficients: how
 resolution is judged), convergence.csv (every run), convergence_cost.csv (cost to reach
-1e-4, 1e-8, 1e-12) and the report section, with the Figure 1 sweep timed against the
-obvious implementation (informational; the benchmark ratio comes from pytest-benchmark).
+1e-4, 1e-8, 1e-12), convergence_tol_trade.csv (cost and achieved error of the Figure 1 batch
+and of scalar calls at tol 1e-2 .. 1e-12) and the report section, with the Figure 1 sweep timed
+against the obvious implementation (informational; the benchmark ratios come from
+pytest-benchmark).
 """
 
 from __future__ import annotations
@@ -171,6 +173,49 @@ def figure1_speed() -> dict[str, float]:
             "max_rel_diff": float(np.max(np.abs(np.asarray(p_base) / p_new - 1)))}
 
 
+TRADE_TOLS = (1e-2, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12)
+TRADE_SCALARS = 61  # every 20th Figure 1 point, one scalar call each
+
+
+def tol_trade(refs: Callable[[float, float], float]) -> pd.DataFrame:
+    """What the tol knob buys: per tol, the Figure 1 batch (one call, 1,201 points) and scalar
+    calls (TRADE_SCALARS points, one call each): best-of-repeats wall time, the largest relative
+    error against the mpmath reference on a sample, the largest error estimate, the degrees.
+    """
+    d = load_figure1()
+    twist, nu = d["twist_angle"].to_numpy(), d["nu"].to_numpy()
+    sample = np.arange(0, twist.size, twist.size // TRADE_SCALARS)[:TRADE_SCALARS]
+    ref = np.array([refs(float(twist[i]), float(nu[i])) for i in sample])
+    scal_tw, scal_nu = twist[sample].tolist(), nu[sample].tolist()
+    rows = []
+    for tol in TRADE_TOLS:
+        t_batch, res = best_time(lambda tol=tol: critical_load(twist, nu, tol=tol,
+                                                               full_output=True), min_total=0.3)
+        t_scal, ps = best_time(lambda tol=tol: [critical_load(a, b, tol=tol) for a, b
+                                                in zip(scal_tw, scal_nu, strict=True)],
+                               min_total=0.2)
+        rows.append((tol, t_batch, float(np.max(np.abs(res.p_star[sample] / ref - 1))),
+                     float(res.error_estimate.max()), int(res.n.min()), int(res.n.max()),
+                     t_scal / len(scal_tw), float(np.max(np.abs(np.array(ps) / ref - 1)))))
+    df = pd.DataFrame(rows, columns=["tol", "batch_seconds", "batch_max_rel_error",
+                                     "batch_max_error_estimate", "n_min", "n_max",
+                                     "scalar_seconds", "scalar_max_rel_error"])
+    df["batch_cost_ratio"] = df["batch_seconds"] / df["batch_seconds"].iloc[-1]
+    df["scalar_cost_ratio"] = df["scalar_seconds"] / df["scalar_seconds"].iloc[-1]
+    return df
+
+
+def _trade_table(trade: pd.DataFrame) -> list[str]:
+    lines = ["| tol | Figure 1 batch | vs 1e-12 | max error | n | scalar call | vs 1e-12 | "
+             "max error |", "|---|---|---|---|---|---|---|---|"]
+    for r in trade.itertuples():
+        lines.append(f"| {r.tol:g} | {r.batch_seconds * 1e3:.1f} ms | "
+                     f"{r.batch_cost_ratio:.2f} | {r.batch_max_rel_error:.1e} | "
+                     f"{r.n_min}-{r.n_max} | {r.scalar_seconds * 1e6:.0f} us | "
+                     f"{r.scalar_cost_ratio:.2f} | {r.scalar_max_rel_error:.1e} |")
+    return lines
+
+
 def _case_label(om: float, nu: float) -> str:
     return f"Ω(L) = {om:g}, ν = {nu:g}"
 
@@ -275,10 +320,14 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
     progress("mode coefficients; Figure 1 sweep vs the obvious implementation")
     modes = [(om, nu, *mode_coefficients(om, nu)) for om, nu in CASES]
     speed = figure1_speed()
+    progress("the tol knob: Figure 1 batch and scalar calls at tol 1e-2 .. 1e-12")
+    trade = tol_trade(lambda om, nu: float(characteristic_critical_load(om, nu).p_star))
     files = [write_with(out / "convergence.csv",
                         lambda p: runs_df.to_csv(p, index=False, float_format="%.6g")),
              write_with(out / "convergence_cost.csv",
-                        lambda p: cost.to_csv(p, index=False, float_format="%.6g"))]
+                        lambda p: cost.to_csv(p, index=False, float_format="%.6g")),
+             write_with(out / "convergence_tol_trade.csv",
+                        lambda p: trade.to_csv(p, index=False, float_format="%.6g"))]
     for name, fig in (("convergence_resolution.png", draw_resolution(runs_df)),
                       ("convergence_time.png", draw_time(runs_df)),
                       ("convergence_coefficients.png", draw_coefficients(modes))):
@@ -311,9 +360,16 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
         f"point; `spectral_rod.baseline`): ratio {speed['ratio']:.0f} in this run "
         "(informational, wall clock on a shared machine; the benchmark ratio is "
         "`python -m pytest tests/bench -m bench`). The two agree to "
-        f"{speed['max_rel_diff']:.1e}.",
+        f"{speed['max_rel_diff']:.1e}.", "",
+        "What the tolerance buys (`critical_load(..., tol=tol)`; best-of-repeats wall time in "
+        "this run; errors against the mpmath characteristic equation at "
+        f"{TRADE_SCALARS} of the 1,201 Figure 1 points; scalar = one call per point, mean "
+        "per call). Looser tolerances lower the degree, stop the eigen-iteration earlier and "
+        "use a cheaper eigenvalue check (convergence_tol_trade.csv):", "",
+        *_trade_table(trade),
     ])
     details = {"cost": cost.to_dict(orient="records"), "figure1_speed": speed,
+               "tol_trade": trade.to_dict(orient="records"),
                "fd_slopes": fd_slope}
     return SceneOutput(files=files, report=report + "\n", details=details)
 

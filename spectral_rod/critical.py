@@ -14,20 +14,28 @@ flagged and warned about) both end inside the bounds.
 
 from __future__ import annotations
 
+import importlib
+import math
 import warnings
 from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from spectral_rod._blas_threads import one_blas_thread
 from spectral_rod._validation import check_nu, check_resolution, check_tol, check_twist
-from spectral_rod.characteristic import characteristic_double, double_error_estimate
 from spectral_rod.errors import ConvergenceWarning
 from spectral_rod.families import FAMILIES
-from spectral_rod.increment import basis_size, galerkin_increment_family
 from spectral_rod.results import CriticalLoad, as_output
-from spectral_rod.router import ROD_METHODS, check_method, route
+from spectral_rod.router import ROD_METHODS, check_method, route, route_point
 from spectral_rod.straight_rod import N_MAX, N_MIN, collocation_critical_load
+from spectral_rod.straight_rod.eigensolver import POWER_RTOL
+from spectral_rod.straight_rod.few_points import solve_few
+from spectral_rod.straight_rod.resolution import (
+    error_estimate_scalar,
+    initial_degree_scalar,
+    raised_degree,
+)
 
 __all__ = ["critical_load"]
 
@@ -50,12 +58,15 @@ def _collocation(tw, nv, n, tol):
 
 
 def _characteristic(tw, nv, n, tol):
-    p, fam = zip(*(characteristic_double(a, b) for a, b in zip(tw, nv, strict=True)),
-                 strict=True)
-    return np.array(p), np.zeros(tw.size, dtype=int), double_error_estimate(tw), np.array(fam)
+    from spectral_rod.characteristic import characteristic_double_batch, double_error_estimate
+
+    p, fam = characteristic_double_batch(tw, nv)
+    return p, np.zeros(tw.size, dtype=int), double_error_estimate(tw), np.asarray(FAMILIES)[fam]
 
 
 def _increment(tw, nv, n, tol):
+    from spectral_rod.increment import basis_size, galerkin_increment_family
+
     d, fam = zip(*(galerkin_increment_family(a, b) for a, b in zip(tw, nv, strict=True)),
                  strict=True)
     d = np.array(d)
@@ -74,17 +85,27 @@ def _ritz(tw, nv, n, tol):
 
 _SOLVERS = {"collocation": _collocation, "characteristic": _characteristic,
             "increment": _increment, "ritz": _ritz}
-assert set(_SOLVERS) == set(ROD_METHODS)
+#: the modules each method imports when first used (before the BLAS threads are limited, so
+#: that the library a module brings, e.g. scipy.linalg's BLAS, is limited too)
+_MODULES = {"collocation": "spectral_rod.straight_rod",
+            "characteristic": "spectral_rod.characteristic",
+            "increment": "spectral_rod.increment", "ritz": "spectral_rod.ritz"}
+assert set(_SOLVERS) == set(ROD_METHODS) == set(_MODULES)
 
 
 def solve_points(tw: NDArray[np.float64], nv: NDArray[np.float64], methods: NDArray[np.str_],
                  n: int | None, tol: float) -> PointResults:
-    """Run each method on its points (flat, validated arrays; methods from the router)."""
+    """Run each method on its points (flat, validated arrays; methods from the router), with
+    small dense linear algebra on one BLAS thread (:mod:`spectral_rod._blas_threads`)."""
     p, deg, err = np.empty(tw.size), np.zeros(tw.size, dtype=int), np.empty(tw.size)
     fam = np.empty(tw.size, dtype="<U13")
-    for name in np.unique(methods):
-        idx = np.flatnonzero(methods == name)
-        p[idx], deg[idx], err[idx], fam[idx] = _SOLVERS[str(name)](tw[idx], nv[idx], n, tol)
+    names = [str(name) for name in np.unique(methods)]
+    for name in names:
+        importlib.import_module(_MODULES[name])
+    with one_blas_thread():
+        for name in names:
+            idx = np.flatnonzero(methods == name)
+            p[idx], deg[idx], err[idx], fam[idx] = _SOLVERS[name](tw[idx], nv[idx], n, tol)
     return PointResults(p, methods, deg, err, fam)
 
 
@@ -110,6 +131,48 @@ def warn_unconverged(where: str, converged: NDArray[np.bool_], res: PointResults
         ConvergenceWarning, stacklevel=3)
 
 
+def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: object,
+               full_output: object):
+    """The scalar fast path: p* (or its CriticalLoad) for one collocation point given as Python
+    or numpy floats, or None wherever the general path must answer (any other input, a
+    non-collocation route, a forced degree, a point the lean solver does not accept or whose
+    estimate misses tol). The computation is the general path's for one point, without its
+    array bookkeeping (~40 us of a ~100 us call)."""
+    if not (isinstance(twist_angle, (float, int)) and isinstance(nu, (float, int))
+            and isinstance(tol, float) and n is None and method in ("auto", "collocation")
+            and isinstance(full_output, (bool, np.bool_))) or isinstance(twist_angle, bool) \
+            or isinstance(nu, bool):
+        return None
+    om, nv = abs(float(twist_angle)), float(nu)
+    if not (om <= 1e4 and 1.0 <= nv <= 1e4 and 1e-14 <= tol <= 1e-2) \
+            or route_point(om, nv, None, method) != "collocation":
+        return None  # includes NaN: the general path names the bad argument
+    deg = initial_degree_scalar(om, tol)
+    floor = error_estimate_scalar(0.0, om)
+    while True:  # the degree loop of collocation_critical_load, for one point
+        # no BLAS thread limit here: the lean solver's matrices (m < 100) are below
+        # OpenBLAS's threading thresholds, and the limit would cost 4 us of a ~60 us call
+        lam, tails, ok = solve_few(deg, np.array([om]), np.array([nv]),
+                                   max(0.01 * tol, POWER_RTOL))
+        if not ok[0]:
+            return None
+        (l0, l1), (t0, t1) = lam[:, 0].tolist(), tails[:, 0].tolist()
+        best = 1 if l1 < l0 * (1.0 - 1e-14) else 0  # as pick_family
+        tail = max(t0, t1) if abs(l0 - l1) <= 1e-6 * min(l0, l1) else (t0, t1)[best]
+        err = error_estimate_scalar(tail, om)
+        if err <= tol:
+            break
+        if deg >= N_MAX or floor >= tol:
+            return None  # unconverged: the general path warns and flags it
+        deg = int(raised_degree(deg))
+    hi = (1.0 + nv) / 2.0
+    p = min(max((l0, l1)[best] / math.pi**2, 1.0), hi)
+    if not full_output:
+        return p
+    return CriticalLoad(p, "collocation", deg, min(err, hi - 1.0), FAMILIES[best],
+                        converged=True, tol=tol)
+
+
 def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None,
                   tol: float = 1e-12, method: str = "auto", full_output: bool = False):
     """Critical load p* = P_cr / (pi^2 A1 / L^2) of the hinged, spontaneously twisted rod.
@@ -131,9 +194,21 @@ def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None
     point whose error estimate exceeds ``tol`` gives a :class:`spectral_rod.ConvergenceWarning`
     and ``converged=False``; it is never returned silently.
 
+    Scalar and array calls: a collocation point is solved by the lean solver
+    (:mod:`spectral_rod.straight_rod.few_points`) in a scalar call and whenever at most
+    ``few_points_limit(n)`` (24 up to n = 30, fewer above) points of a call share its degree,
+    by the batched engine otherwise. The two compute the same Rayleigh quotient with different
+    rounding: a scalar call and a one-point array call give identical results, and a point in
+    a large batch differs by at most the round-off part of the error estimate,
+    eps (32 + 0.3 Omega^2) (measured: <= 8e-15 on Figure 1's 1,201 points, <= 2.6e-14 on 3,000
+    random points with |Omega(L)| < 50, nu <= 100).
+
     >>> round(critical_load(6.283185307179586, 1.5), 9)
     1.195993681
     """
+    one = _one_point(twist_angle, nu, n, tol, method, full_output)
+    if one is not None:
+        return one
     twist, nu_arr = check_twist(twist_angle), check_nu(nu)
     tol, method = check_tol(tol), check_method(method)
     if n is not None:

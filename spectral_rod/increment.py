@@ -44,7 +44,7 @@ the error falls to the rounding floor with N ~ 2 |Omega|/pi + 48. Integrals of o
 use Gauss-Legendre quadrature (all integrands entire, sin(Omega s) evaluated directly).
 
 Where p* - 1 >= 1e-3 the increment is not small and p* - 1 from the characteristic
-equation in double precision (:func:`spectral_rod.large_twist.characteristic_double`, measured
+equation in double precision (:func:`spectral_rod.characteristic.characteristic_double`, measured
 within 1-2 ulp of p* for Omega in [1e-3, 1e4], nu in [1.001, 1e4]) has relative accuracy
 <= 1e-12; there (and only there) it is used, which also covers the large-twist /
 strong-anisotropy corner where the sine basis converges slowly. (Points with nu - 1 <= 1e-3
@@ -67,8 +67,9 @@ from numpy.polynomial.legendre import leggauss
 from numpy.typing import ArrayLike, NDArray
 from scipy.linalg import cho_factor, cho_solve
 
+from spectral_rod._blas_threads import one_blas_thread
 from spectral_rod._validation import check_nu, check_twist
-from spectral_rod.characteristic import characteristic_double
+from spectral_rod.characteristic import characteristic_double_batch
 
 __all__ = ["INCREMENT_MAX_TWIST", "critical_load_increment", "galerkin_increment",
            "galerkin_increment_family"]
@@ -78,6 +79,9 @@ INCREMENT_MAX_TWIST = 1.0e3
 #: Above this gain p* - 1 is taken from critical_load (relative error <= ~1e-12 there).
 DIRECT_THRESHOLD = 1.0e-3
 _MAX_NEWTON = 60
+#: Up to this nu - 1 the complement is solved by a fixed-point iteration (see
+#: :func:`_newton_fixed_point`; contraction <= 1.3 (nu - 1)), beyond it by Cholesky.
+FIXED_POINT_MAX_E = 1.0e-2
 
 
 @lru_cache(maxsize=2)
@@ -95,6 +99,14 @@ def tail_polynomial(shift: int) -> NDArray[np.float64]:
             out[i] += b * math.comb(j, i) * Fraction(shift) ** (j - i) / Fraction(2) ** j
     factor = -(2 * math.pi) ** 5 / 240
     return np.array([float(c) * factor for c in out])
+
+
+@lru_cache(maxsize=128)
+def gauss_legendre(q: int) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Gauss-Legendre nodes and weights of order q on s in [0, 1] (numpy's leggauss, which
+    solves an eigenproblem: 59-72 % of a point's cost when it was recomputed per point)."""
+    x, w = leggauss(q)
+    return (x + 1) / 2, w / 2
 
 
 def basis_size(twist_angle: float) -> int:
@@ -148,6 +160,24 @@ def _min_eig2(t: NDArray[np.float64]) -> tuple[float, NDArray[np.float64]]:
     return lmin, (v / nv if nv > 0 else np.array([1.0, 0.0]))
 
 
+@lru_cache(maxsize=128)
+def _galerkin_basis(n: int, q: int) -> tuple[NDArray[np.float64], ...]:
+    """Everything of the formulation that does not depend on Omega or nu, per (n, q): nodes s,
+    sqrt(weights), phi''/pi of the critical mode and of the complement (sines, then tails)
+    at the nodes, and the complement's W block (both fields). Cached: 30 % of a point's cost."""
+    s, w = gauss_legendre(q)
+    crit, sines, sin_ks = _second_derivatives(s, n)
+    tails, w_tail = _tails(s, w, sin_ks, n)
+    m1 = sines.shape[1]
+    wblock = np.zeros((m1 + 2, m1 + 2))
+    wblock[:m1, :m1] = np.diag(np.arange(2, n + 1, dtype=float) ** 2 - 1.0)
+    wblock[m1:, m1:] = w_tail
+    w22 = np.zeros((2 * (m1 + 2),) * 2)
+    w22[:m1 + 2, :m1 + 2] = wblock
+    w22[m1 + 2:, m1 + 2:] = wblock
+    return s, np.sqrt(w), crit, np.concatenate([sines, tails], axis=1), w22
+
+
 def galerkin_increment(twist_angle: float, nu: float, n: int | None = None) -> float:
     """p* - 1 from the lab-frame Schur-complement formulation (module docstring), one point.
 
@@ -175,34 +205,29 @@ def galerkin_increment_family(twist_angle: float, nu: float, n: int | None = Non
     if om == 0.0 or e == 0.0:
         return 0.0, "symmetric"
     n = basis_size(om) if n is None else int(n)
-    q = int(1.6 * n + 0.5 * om + 40)
-    x, w = leggauss(q)
-    s, w = (x + 1) / 2, w / 2
-    crit, sines, sin_ks = _second_derivatives(s, n)
-    tails, w_tail = _tails(s, w, sin_ks, n)
+    s, sqrt_w, crit, comp, w22 = _galerkin_basis(n, int(1.6 * n + 0.5 * om + 40))
     so, co = np.sin(om * s), np.cos(om * s)
     # omega2 = cos(Om s) x2'' - sin(Om s) x1''  (columns: x1 = phi, x2 = phi)
-    comp = np.concatenate([sines, tails], axis=1)
     f = np.concatenate([-(crit * so)[:, None], (crit * co)[:, None],
                         -comp * so[:, None], comp * co[:, None]], axis=1)
-    f *= np.sqrt(w)[:, None]
+    f *= sqrt_w[:, None]
     g = f.T @ f
-    k = np.arange(2, n + 1, dtype=float)
-    w_sines = k**2 - 1.0
-    m1 = sines.shape[1]
-    wblock = np.zeros((m1 + 2, m1 + 2))
-    wblock[:m1, :m1] = np.diag(w_sines)
-    wblock[m1:, m1:] = w_tail
-    w22 = np.zeros((2 * (m1 + 2),) * 2)
-    w22[:m1 + 2, :m1 + 2] = wblock
-    w22[m1 + 2:, m1 + 2:] = wblock
     g11, g21, g22 = g[:2, :2], g[2:, :2], g[2:, 2:]
+    if e <= FIXED_POINT_MAX_E:
+        found = _newton_fixed_point(e, g11, g21, g22, w22, om)
+        if found is not None:
+            return found
+    return _newton_cholesky(e, g11, g21, g22, w22, om)
+
+
+def _newton_cholesky(e, g11, g21, g22, w22, om) -> tuple[float, str]:
+    """Newton's method on delta = lambda_min(T(delta)), a Cholesky factorisation per step."""
     a0 = w22 + e * g22
     eye = np.eye(a0.shape[0])
 
     def schur(d: float):
-        cf = cho_factor(a0 - d * eye)
-        y = cho_solve(cf, g21)
+        cf = cho_factor(a0 - d * eye, check_finite=False)
+        y = cho_solve(cf, g21, check_finite=False)
         return e * g11 - e * e * (g21.T @ y), cf
 
     t0, _ = schur(0.0)
@@ -214,13 +239,61 @@ def galerkin_increment_family(twist_angle: float, nu: float, n: int | None = Non
             d *= 0.5
             continue
         lmin, v = _min_eig2(t)
-        r = cho_solve(cf, g21 @ v)
+        r = cho_solve(cf, g21 @ v, check_finite=False)
         step = (lmin - d) / (-e * e * float(r @ r) - 1.0)
         d_new = d - step
         if abs(d_new - d) <= 4e-16 * abs(d_new):
             return d_new, mode_family(v, om)
         d = d_new
     return d, mode_family(v, om)
+
+
+def _newton_fixed_point(e, g11, g21, g22, w22, om) -> tuple[float, str] | None:
+    """The same Newton iteration with the solves (W22 - delta + e G22) y = g21 by the fixed
+    point y <- (W22 - delta)^{-1} (g21 - e G22 y) (W22 is diagonal but for the two 2x2 tail
+    blocks), warm-started from the previous step's y; None if it does not converge.
+
+    Contraction: G22 <= W22 + M22 as quadratic forms (omega2^2 <= |z''|^2), so the iteration
+    contracts by <= (nu - 1)(1 + 1/3) (W22 >= 3 on the sines). Measured on 200 points,
+    Omega(L) in [0, 50), nu - 1 in [1e-8, 1e-3]: 357 us a point against 699 with a Cholesky
+    factorisation per Newton step, and the same p* - 1 to the last bit.
+    """
+    ge = e * g22
+    y = np.zeros_like(g21)
+    d = 0.0
+    v = np.array([1.0, 0.0])
+    for it in range(_MAX_NEWTON + 1):
+        y = _fixed_point(w22, d, ge, g21, y)
+        if y is None:
+            return None
+        t = e * g11 - e * e * (g21.T @ y)
+        lmin, v = _min_eig2(t)
+        if it == 0:  # T(0) gives the start, as in the Cholesky version
+            d = lmin
+            continue
+        r = y @ v  # (a0 - d)^{-1} g21 v
+        d_new = d - (lmin - d) / (-e * e * float(r @ r) - 1.0)
+        if abs(d_new - d) <= 4e-16 * abs(d_new):
+            return d_new, mode_family(v, om)
+        d = d_new
+    return d, mode_family(v, om)
+
+
+def _fixed_point(w22, d, ge, rhs, y, sweeps: int = 60):
+    """y solving (w22 - d + ge) y = rhs by the fixed-point sweeps of _newton_fixed_point, from
+    y; None if the change does not fall to 4e-16 relative (a few rounding errors)."""
+    half = w22.shape[0] // 2
+    tails = np.array([half - 2, half - 1, 2 * half - 2, 2 * half - 1])  # two per field
+    diag_inv = 1.0 / (np.diagonal(w22) - d)
+    block_inv = np.linalg.inv(w22[half - 2:half, half - 2:half] - d * np.eye(2))
+    for _ in range(sweeps):
+        b = rhs - ge @ y
+        y_new = b * diag_inv[:, None]
+        y_new[tails] = (block_inv @ b[tails].reshape(2, 2, -1)).reshape(4, -1)
+        if np.max(np.abs(y_new - y)) <= 4e-16 * np.max(np.abs(y_new)):
+            return y_new
+        y = y_new
+    return None
 
 
 def critical_load_increment(twist_angle: ArrayLike, nu: ArrayLike):
@@ -240,8 +313,9 @@ def critical_load_increment(twist_angle: ArrayLike, nu: ArrayLike):
     # nu - 1 <= DIRECT_THRESHOLD gives p* - 1 < 1e-3 (p* <= (1 + nu)/2): no need to ask
     direct = nv - 1.0 <= DIRECT_THRESHOLD
     rest = np.flatnonzero(~direct)
-    for i in rest:
-        out[i] = characteristic_double(tw[i], nv[i])[0] - 1.0
-    for i in np.flatnonzero(direct | (out < DIRECT_THRESHOLD)):
-        out[i] = galerkin_increment(tw[i], nv[i])
+    with one_blas_thread():
+        if rest.size:
+            out[rest] = characteristic_double_batch(tw[rest], nv[rest])[0] - 1.0
+        for i in np.flatnonzero(direct | (out < DIRECT_THRESHOLD)):
+            out[i] = galerkin_increment(tw[i], nv[i])
     return float(out[0]) if shape == () else out.reshape(shape)

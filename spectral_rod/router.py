@@ -32,7 +32,7 @@ from numpy.typing import ArrayLike, NDArray
 from spectral_rod._validation import check_nu, check_resolution, check_twist
 
 __all__ = ["INCREMENT_MAX_TWIST", "NEAR_DEGENERATE", "ROD_METHODS", "TWIST_ROUTE",
-           "check_method", "choose_method", "route"]
+           "check_method", "choose_method", "route", "route_point"]
 
 #: The methods that compute p* (``method=`` of :func:`spectral_rod.critical_load`).
 ROD_METHODS = ("collocation", "characteristic", "increment", "ritz")
@@ -78,6 +78,19 @@ def route(twist: NDArray[np.float64], nu: NDArray[np.float64], n: int | None = N
     out[large] = "characteristic"
     out[~large & (nu - 1.0 <= NEAR_DEGENERATE)] = "increment"
     return out
+
+
+def route_point(twist: float, nu: float, n: int | None = None, method: str = "auto") -> str:
+    """:func:`route` for one validated point in Python floats (the scalar path's; the same
+    rule, tested against :func:`route`); a forced increment outside its range is left to
+    :func:`route` to reject."""
+    if method != "auto":
+        return method
+    if n is not None:
+        return "collocation"
+    if abs(twist) >= TWIST_ROUTE:
+        return "characteristic"
+    return "increment" if nu - 1.0 <= NEAR_DEGENERATE else "collocation"
 
 
 def choose_method(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None,

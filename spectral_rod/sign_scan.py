@@ -1,9 +1,12 @@
 """The lowest root of a function by a sign scan on a grid and a refinement in the bracket.
 
-One routine for every characteristic-determinant root in the package (mpmath and numpy): the
-paper computed its curves this way, and the scan is what guarantees the *lowest* root (a root
-finder started anywhere else may converge to a higher one). The guarantee holds when no two
-roots of one component lie within one step; the callers' steps are chosen for that (see them).
+One routine for every characteristic-determinant root in the package (mpmath for one point,
+numpy for batches of points): the paper computed its curves this way, and the scan is what
+guarantees the *lowest* root (a root finder started anywhere else may converge to a higher one).
+The guarantee holds when no two roots of one component lie within one step; the callers' steps
+are chosen for that (see them). :func:`lowest_roots` scans a batch of functions f_p (one per
+point p) together, each on its own grid; :func:`bracketed_roots` refines brackets of a batch at
+once (the double-precision refinement).
 
 >>> import math
 >>> lowest_root(lambda g: [[math.cos(x) for x in g]], lambda k, a, b: math.pi / 2, 0.0, 3.0, 0.25)
@@ -16,53 +19,140 @@ from collections.abc import Callable, Sequence
 from typing import Any
 
 import numpy as np
+from numpy.typing import NDArray
 
-__all__ = ["MAX_SCAN_POINTS", "lowest_root"]
+__all__ = ["MAX_SCAN_POINTS", "bracketed_roots", "lowest_root", "lowest_roots"]
 
-#: Largest number of grid points a scan may take (a bound on its cost).
+#: Largest number of grid points a scan may take per point (a bound on its cost).
 MAX_SCAN_POINTS = 10_000_000
+_EPS = float(np.finfo(float).eps)
 
 
-def _signs(values: Any) -> np.ndarray:
-    """Signs of a (components, points) table; exact comparisons for mpmath numbers (a float
-    conversion would flush values below 1e-308 to zero and fake a root)."""
-    if isinstance(values, np.ndarray) and values.dtype.kind == "f":
+def _signs(values: NDArray[Any]) -> NDArray[np.int_]:
+    """Signs of a table of values by exact comparisons (for mpmath numbers a float conversion
+    would flush values below 1e-308 to zero and fake a root)."""
+    if values.dtype.kind == "f":
         return np.sign(values).astype(int)
-    return np.array([[(v > 0) - (v < 0) for v in row] for row in values], dtype=int)
+    return (values > 0).astype(int) - (values < 0).astype(int)
+
+
+def lowest_roots(values: Callable[[NDArray[np.int_], NDArray[Any]], Any],
+                 refine: Callable[[NDArray[np.int_], NDArray[np.int_], NDArray[Any],
+                                   NDArray[Any]], NDArray[Any]],
+                 lo: Any, hi: Any, step: Any, chunk: int = 1
+                 ) -> tuple[NDArray[Any], NDArray[np.int_]]:
+    """Lowest root of any component of f_p on [lo_p, hi_p], and the component, for each point p.
+
+    ``values(points, grid)`` returns f_p at the abscissae ``grid`` (one row per entry of
+    ``points``), shape (len(points), components, grid columns); ``refine(points, k, a, b)``
+    returns the roots of component k[j] of f_{points[j]} in [a[j], b[j]]. ``lo``, ``hi``,
+    ``step`` are 1-d arrays (one entry per point; float or mpmath object arrays). The grid of
+    point p is lo_p, lo_p + step_p, ... (hi_p last), evaluated ``chunk`` columns at a time for all
+    points still scanning: 1 for expensive scalar functions (mpmath), tens to hundreds for
+    vectorised ones. A component that is exactly zero at a grid point counts as a sign change
+    there. Where several components change sign in a point's first bracket, every one is refined
+    and the smallest root wins. Returns (roots, components); component -1 and root nan where a
+    point has no sign change.
+    """
+    lo, hi, step = (np.atleast_1d(np.asarray(v)) for v in (lo, hi, step))
+    count = np.ceil(((hi - lo) / step).astype(float)).astype(int) + 1
+    if count.max() > MAX_SCAN_POINTS:
+        raise ValueError(f"scan in steps of {float(step.min()):g} needs {count.max()} points "
+                         f"(at most {MAX_SCAN_POINTS})")
+    roots = np.full(lo.size, np.nan, dtype=lo.dtype if lo.dtype.kind == "O" else float)
+    comp = np.full(lo.size, -1)
+    active = np.arange(lo.size)
+    prev_x = prev = None
+    for start in range(0, int(count.max()), chunk):
+        cols = np.arange(start, start + chunk)
+        xs = lo[active, None] + cols * step[active, None]
+        xs = np.where(xs < hi[active, None], xs, hi[active, None])
+        vals = np.asarray(values(active, xs))
+        if prev is not None:
+            xs, vals = np.concatenate([prev_x, xs], axis=1), np.concatenate([prev, vals], axis=2)
+        sign = _signs(vals)
+        change = sign[:, :, :-1] * sign[:, :, 1:] <= 0  # (points, components, brackets)
+        any_change = change.any(axis=1)
+        hit = np.flatnonzero(any_change.any(axis=1))
+        if hit.size:
+            first = np.argmax(any_change[hit], axis=1)
+            roots[active[hit]], comp[active[hit]] = _refine_first(
+                refine, active[hit], xs[hit, first], xs[hit, first + 1],
+                change[hit, :, first], sign[hit, :, first])
+        keep = np.ones(active.size, dtype=bool)
+        keep[hit] = False
+        keep &= count[active] > start + chunk
+        active, prev_x, prev = active[keep], xs[keep, -1:], vals[keep, :, -1:]
+        if not active.size:
+            break
+    return roots, comp
+
+
+def _refine_first(refine, points, a, b, change, sign_a) -> tuple[NDArray[Any], NDArray[np.int_]]:
+    """The smallest root over the components changing sign in each point's first bracket."""
+    rows, ks = np.nonzero(change)
+    found = np.empty(rows.size, dtype=a.dtype)
+    exact = sign_a[rows, ks] == 0
+    found[exact] = a[rows[exact]]
+    ref = np.flatnonzero(~exact)
+    if ref.size:
+        found[ref] = refine(points[rows[ref]], ks[ref], a[rows[ref]], b[rows[ref]])
+    best_root = np.empty(points.size, dtype=a.dtype)
+    best_comp = np.full(points.size, -1)
+    for j in range(rows.size):  # a handful: one or two components per point
+        r = rows[j]
+        if best_comp[r] < 0 or found[j] < best_root[r]:
+            best_root[r], best_comp[r] = found[j], ks[j]
+    return best_root, best_comp
 
 
 def lowest_root(values: Callable[[list[Any]], Sequence[Sequence[Any]]],
                 refine: Callable[[int, Any, Any], Any], lo: Any, hi: Any, step: Any,
                 chunk: int = 1) -> tuple[Any, int] | None:
-    """Lowest root of any component of f on [lo, hi] and the component's index, or None.
+    """:func:`lowest_roots` for one function: ``values(grid)`` gives (components, len(grid)),
+    ``refine(k, a, b)`` one root; returns (root, component) or None."""
+    def batch_values(_points, grid):
+        return np.array([values(list(grid[0]))], dtype=object)
 
-    ``values(grid)`` returns f at the grid points, shape (components, len(grid));
-    ``refine(k, a, b)`` returns the root of component k in the bracket [a, b]. The grid is
-    lo, lo + step, ... (hi last), evaluated ``chunk`` points at a time: 1 for expensive scalar
-    functions (mpmath), a few hundred for vectorised ones. A component that is exactly zero at
-    a grid point counts as a sign change there. Where several components change sign in the
-    first bracket, every one is refined and the smallest root wins.
+    def batch_refine(_points, k, a, b):
+        return np.array([refine(int(kj), aj, bj) for kj, aj, bj in zip(k, a, b, strict=True)],
+                        dtype=object)
+
+    root, comp = lowest_roots(batch_values, batch_refine, np.array([lo], dtype=object),
+                              np.array([hi], dtype=object), np.array([step], dtype=object),
+                              chunk)
+    return None if comp[0] < 0 else (root[0], int(comp[0]))
+
+
+def bracketed_roots(f: Callable[[NDArray[np.int_], NDArray[np.float64]], NDArray[np.float64]],
+                    a: NDArray[np.float64], b: NDArray[np.float64],
+                    rtol: float = 4 * _EPS, max_iter: int = 200) -> NDArray[np.float64]:
+    """Roots of a batch of functions, each in its bracket [a_j, b_j] (f changes sign there), to
+    |bracket| <= 1e-16 + 2 rtol |x| (the tolerance of :func:`scipy.optimize.brentq` with
+    xtol=1e-16).
+
+    ``f(j, x)`` evaluates the functions of entries j at x (arrays). Anderson-Bjorck regula falsi:
+    superlinear, and the bracket is kept. Measured on 500 large-twist determinant roots
+    (brackets 1/256 wide): 11 evaluations median, 24 at most (Illinois: 12, 25; Chandrupatla's
+    method: 11, 80; a bisection safeguard only added evaluations).
     """
-    count = int(np.ceil(float((hi - lo) / step))) + 1
-    if count > MAX_SCAN_POINTS:
-        raise ValueError(f"scan of [{float(lo):g}, {float(hi):g}] in steps of {float(step):g} "
-                         f"needs {count} points (at most {MAX_SCAN_POINTS})")
-    prev_x, prev = None, None
-    for start in range(0, count, chunk):
-        grid = [min(lo + i * step, hi) for i in range(start, min(start + chunk, count))]
-        xs = ([prev_x] if prev_x is not None else []) + grid
-        vals = values(grid)
-        if prev is not None:
-            vals = (np.concatenate([prev, vals], axis=1) if isinstance(vals, np.ndarray)
-                    else [[p, *v] for p, v in zip(prev, vals, strict=True)])
-        sign = _signs(vals)
-        change = sign[:, :-1] * sign[:, 1:] <= 0
-        hit = np.flatnonzero(change.any(axis=0))
-        if hit.size:
-            i = int(hit[0])
-            roots = [(xs[i] if sign[k, i] == 0 else refine(k, xs[i], xs[i + 1]), k)
-                     for k in map(int, np.flatnonzero(change[:, i]))]
-            return min(roots, key=lambda r: r[0])
-        prev_x = xs[-1]
-        prev = (vals[:, -1:] if isinstance(vals, np.ndarray) else [v[-1] for v in vals])
-    return None
+    a, b = np.array(a, dtype=float), np.array(b, dtype=float)
+    idx = np.arange(a.size)
+    fa, fb = f(idx, a), f(idx, b)
+    out = np.where(fa == 0, a, b)
+    active = np.flatnonzero((fa != 0) & (fb != 0))
+    for _ in range(max_iter):
+        if not active.size:
+            break
+        aa, bb, ffa, ffb = a[active], b[active], fa[active], fb[active]
+        c = bb - ffb * (bb - aa) / (ffb - ffa)
+        fc = f(active, c)
+        flip = fc * ffb < 0  # the root is between b and c: b becomes the other end
+        m = 1.0 - fc / ffb  # otherwise the kept end's value is scaled down (Anderson-Bjorck)
+        ffa = np.where(flip, ffb, ffa * np.where(m > 0, m, 0.5))
+        aa = np.where(flip, bb, aa)
+        a[active], fa[active], b[active], fb[active] = aa, ffa, c, fc
+        out[active] = c
+        done = (fc == 0) | (np.abs(c - aa) <= 1e-16 + 2 * rtol * np.abs(c))
+        active = active[~done]
+    return out

@@ -27,9 +27,12 @@ The modules
 * :mod:`.discretisation` -- Eq. ``inst1`` declared term by term and its collocation pencil per
   mode family;
 * :mod:`.resolution` -- the a priori degree, the mode's coefficient tail and the error model;
-* :mod:`.eigensolver` -- the lowest physical eigenpair (modal basis, Schur complement,
-  two-sided shift-and-invert iteration; full ``eig`` as the reference path);
-* :mod:`.collocation` -- p* for arrays of points with automatic resolution.
+* :mod:`.eigensolver` -- the lowest physical eigenpair for batches (modal basis, Schur
+  complement, two-sided shift-and-invert iteration; full ``eig`` as the reference path);
+* :mod:`.few_points` -- the same eigenvalue for one point or a few (dense LU by LAPACK, powers
+  of the shift-and-invert matrix): the scalar and small-batch path;
+* :mod:`.collocation` -- p* for arrays of points with automatic resolution (picks the engine
+  per degree group by the measured crossover, ``few_points_limit``).
 """
 
 from spectral_rod.straight_rod.collocation import (

@@ -18,15 +18,17 @@ from numpy.typing import NDArray
 from spectral_rod.families import FAMILIES
 from spectral_rod.straight_rod.discretisation import family_operator
 from spectral_rod.straight_rod.eigensolver import POWER_RTOL, physical_eig, solve_family
+from spectral_rod.straight_rod.few_points import solve_few
 from spectral_rod.straight_rod.resolution import (
     N_MAX,
     N_MIN,
     error_estimate,
     initial_degree,
+    raised_degree,
     roundoff_floor,
 )
 
-__all__ = ["N_MAX", "N_MIN", "CollocationResult", "collocation_critical_load",
+__all__ = ["FEW_POINTS", "N_MAX", "N_MIN", "CollocationResult", "collocation_critical_load",
            "collocation_family_load", "collocation_mode_coefficients"]
 
 
@@ -39,12 +41,28 @@ class CollocationResult(NamedTuple):
     family: NDArray[np.int_]
 
 
+#: Up to FEW_POINTS points of one degree n <= 30 the lean solver (:mod:`.few_points`) is used,
+#: above it the batched engine (:mod:`.eigensolver`); the lean solver's cost grows faster with n,
+#: so the limit falls as n^-3 above n = 30 (see :func:`few_points_limit`).
+FEW_POINTS = 24
+
+
+def few_points_limit(n: int) -> int:
+    """Most points of degree n handed to the lean solver: the measured crossover (Figure 1
+    points, tol 1e-12, lean/batched us a point: n = 22: 25/34 at 24 points, 37/29 at 32;
+    n = 36: 98/108 at 8, 85/70 at 16; n = 44: 134/159 at 8, 117/106 at 16; n = 56: 234/244 at 4,
+    191/151 at 8)."""
+    return FEW_POINTS if n <= 30 else max(4, int(FEW_POINTS * (30 / n) ** 3))
+
+
 def _solve_points(twist: NDArray[np.float64], nu: NDArray[np.float64], n: NDArray[np.int_],
                   tol: float = 1e-12):
     """p*, family index and tail for flat arrays of points at the given degrees.
 
-    The symmetric family first; the antisymmetric one then only has to be resolved where it
-    is not clearly above (1 + 1e-6 times) the symmetric eigenvalue.
+    Per degree: up to :func:`few_points_limit` points by the lean solver (both families, dense LU
+    and matrix powers), more by the batched engine: the symmetric family first, the
+    antisymmetric one then only resolved where it is not clearly above (1 + 1e-6 times) the
+    symmetric eigenvalue. Points the lean solver does not accept go to the batched engine.
     """
     p = np.empty(twist.size)
     fam = np.empty(twist.size, dtype=int)
@@ -52,22 +70,35 @@ def _solve_points(twist: NDArray[np.float64], nu: NDArray[np.float64], n: NDArra
     rtol = max(0.01 * tol, POWER_RTOL)
     for deg in np.unique(n):
         sel = np.flatnonzero(n == deg)
+        if sel.size <= few_points_limit(int(deg)):
+            lam, tl, ok = solve_few(int(deg), twist[sel], nu[sel], rtol)
+            p[sel], fam[sel], tails[sel] = pick_family(lam, tl)
+            sel = sel[~ok]
+            if not sel.size:
+                continue
         lam = np.empty((2, sel.size))
         tl = np.empty((2, sel.size))
         lam[0], tl[0], _ = solve_family(int(deg), FAMILIES[0], twist[sel], nu[sel], rtol=rtol)
         lam[1], tl[1], _ = solve_family(int(deg), FAMILIES[1], twist[sel], nu[sel], rtol=rtol,
                                         ceiling=lam[0] * (1 + 1e-6))
-        # a tie to round-off (e.g. nu = 1 at zero twist: the Euler mode in either plane) goes
-        # to the symmetric family, whose mode is the planar one in the (u0) plane
-        best = (lam[1] < lam[0] * (1.0 - 1e-14)).astype(int)
-        cols = np.arange(sel.size)
-        p[sel] = lam[best, cols] / np.pi**2
-        fam[sel] = best
-        # if the two families are within 1e-6 of each other either could be lowest;
-        # both must then be resolved
-        tails[sel] = np.where(np.abs(lam[0] - lam[1]) <= 1e-6 * lam.min(axis=0),
-                              tl.max(axis=0), tl[best, cols])
+        p[sel], fam[sel], tails[sel] = pick_family(lam, tl)
     return p, fam, tails
+
+
+def pick_family(lam: NDArray[np.float64], tails: NDArray[np.float64]
+                ) -> tuple[NDArray[np.float64], NDArray[np.int_], NDArray[np.float64]]:
+    """p*, family index and the tail that judges it, from both families' lambda and tails
+    (arrays (2, points)).
+
+    A tie to round-off (e.g. nu = 1 at zero twist: the Euler mode in either plane) goes to the
+    symmetric family, whose mode is the planar one in the (u0) plane. If the two families are
+    within 1e-6 of each other either could be lowest, and both must be resolved.
+    """
+    best = (lam[1] < lam[0] * (1.0 - 1e-14)).astype(int)
+    cols = np.arange(lam.shape[1])
+    close = np.abs(lam[0] - lam[1]) <= 1e-6 * lam.min(axis=0)
+    return (lam[best, cols] / np.pi**2, best,
+            np.where(close, tails.max(axis=0), tails[best, cols]))
 
 
 def collocation_critical_load(twist: NDArray[np.float64], nu: NDArray[np.float64], *,
@@ -85,7 +116,7 @@ def collocation_critical_load(twist: NDArray[np.float64], nu: NDArray[np.float64
     # raise the degree where the estimate misses tol, unless round-off alone does
     todo = np.flatnonzero((err > tol) & (deg < N_MAX) & (roundoff_floor(tw) < tol))
     while todo.size:
-        deg[todo] = np.minimum(N_MAX, deg[todo] + 2 * np.ceil(0.06 * deg[todo] + 1).astype(int))
+        deg[todo] = raised_degree(deg[todo])
         p[todo], fam[todo], tails[todo] = _solve_points(tw[todo], nu[todo], deg[todo], tol)
         err[todo] = error_estimate(tails[todo], tw[todo])
         todo = todo[(err[todo] > tol) & (deg[todo] < N_MAX)]

@@ -57,8 +57,15 @@ INST1 = (
 def term_coefficients(twist_angle: ArrayLike, nu: ArrayLike) -> NDArray[Any]:
     """The coefficients of :data:`INST1` at broadcast points, shape (..., len(INST1)); the dtype
     follows the input (float64, or longdouble for the extended-precision Rayleigh quotient)."""
-    om, nv = np.broadcast_arrays(twist_angle, nu)
-    return np.stack([np.broadcast_to(t.coefficient(om, nv), om.shape) for t in INST1], axis=-1)
+    om, nv = np.asarray(twist_angle), np.asarray(nu)
+    if om.ndim == nv.ndim == 0 and om.dtype == nv.dtype == np.float64:  # one point: floats
+        a, b = float(om), float(nv)
+        return np.array([t.coefficient(a, b) for t in INST1])
+    out = np.empty((*np.broadcast_shapes(om.shape, nv.shape), len(INST1)),
+                   dtype=np.result_type(om, nv, 1.0))
+    for i, t in enumerate(INST1):
+        out[..., i] = t.coefficient(om, nv)
+    return out
 
 
 @dataclass(frozen=True)
@@ -87,6 +94,21 @@ class FamilyOperator:
             block = (b.value, b.d1, b.d2)[t.order] * 2.0**t.order  # d/ds = 2 d/dx
             p[i, cols[t.equation], cols[t.field]] = block
         return p
+
+    @cached_property
+    def term_blocks(self) -> tuple[tuple[int, int, tuple[int, ...], NDArray[np.float64]], ...]:
+        """A's nonzero blocks, per (equation e, field f): (e, f, the indices of the terms of
+        :data:`INST1` there, their blocks 2^order (d/dx)^order basis stacked, shape
+        (terms * rows of e, unknowns of f)): products with A that skip its zero blocks."""
+        groups: dict[tuple[int, int], list[int]] = {}
+        for i, t in enumerate(INST1):
+            groups.setdefault((t.equation, t.field), []).append(i)
+        out = []
+        for (e, f), idx in groups.items():
+            b = self.bases[e][f]
+            out.append((e, f, tuple(idx), np.vstack([(b.value, b.d1, b.d2)[INST1[i].order]
+                                                     * 2.0 ** INST1[i].order for i in idx])))
+        return tuple(out)
 
     @cached_property
     def mass(self) -> NDArray[np.float64]:

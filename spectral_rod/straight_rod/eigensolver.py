@@ -41,12 +41,20 @@ from spectral_rod.straight_rod.discretisation import (
 )
 from spectral_rod.straight_rod.resolution import mode_tails
 
-__all__ = ["ModalFamily", "lowest_eigenpair", "modal_family", "physical_eig", "solve_family"]
+__all__ = ["ModalFamily", "lowest_eigenpair", "modal_family", "pencil_rayleigh_quotient",
+           "physical_eig", "solve_family"]
 
 #: Eigenvalues with |Im| above this fraction of |lambda| are complex, i.e. not physical.
 IMAG_REL = 1.0e-8
-#: Inverse iteration: first-order error bound of lambda accepted (relative), and step cap.
+#: Inverse iteration: first-order error bound of lambda accepted (relative), step cap, and the
+#: step of the first convergence check (every 2 steps after it; a check costs about a step).
 POWER_RTOL, POWER_STEPS, FIRST_CHECK = 1.0e-15, 40, 6
+#: From this rtol on the iteration is checked from step 2, and up to degree LOOSE_DEGREE the
+#: eigenvalue is the modal quotient w^T K z / w^T z instead of the pencil's: K's round-off
+#: (eps n^4 in its diagonal) limits that quotient to ~2e-12 relative (measured at n <= 50,
+#: Omega(L) < 50, against the mpmath reference), far below such an rtol, and it saves the
+#: pencil quotient's cost.
+LOOSE_RTOL, LOOSE_DEGREE = 1.0e-8, 64
 #: Above this |Omega| the final Rayleigh quotient is accumulated in extended precision.
 LONG_TWIST = 20.0
 #: Up to this many points per degree and family, and degree, the full eig is cheaper than the
@@ -262,7 +270,8 @@ def lowest_eigenpair(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np
         # checks (every 2 steps) keeps the vectors far from overflow and underflow
         x_prev, y_prev = x, y
         x, y = sk.solve(x), sk.solve_transposed(y)
-        if step < (FIRST_CHECK if ceiling is None else 4) or step % 2:
+        first = FIRST_CHECK if rtol < LOOSE_RTOL else 2
+        if step < (first if ceiling is None else min(first, 4)) or step % 2:
             continue
         sx, sy = _unit_rows(x), _unit_rows(y)
         x, y = x * sx, y * sy
@@ -295,7 +304,7 @@ def _start_vector(k: int) -> NDArray[np.float64]:
     return np.random.default_rng(20240607).standard_normal(k)
 
 
-def _pencil_rayleigh_quotient(op: FamilyOperator, twist: NDArray[np.float64],
+def pencil_rayleigh_quotient(op: FamilyOperator, twist: NDArray[np.float64],
                               nu: NDArray[np.float64], left: NDArray[np.float64],
                               right: NDArray[np.float64]) -> NDArray[np.float64]:
     """y^T A x / y^T B x per point, with A = sum_i coef_i P_i (:attr:`FamilyOperator.pieces`).
@@ -304,25 +313,39 @@ def _pencil_rayleigh_quotient(op: FamilyOperator, twist: NDArray[np.float64],
     and the sums are accumulated in extended precision (``np.longdouble``): this halves the
     round-off there (measured at Omega in [40, 100]: 0.39 -> 0.19 eps Omega^2).
     """
-    out = _rayleigh_sums(op, twist, nu, left, right, np.float64)
-    big = np.flatnonzero(np.abs(twist) > LONG_TWIST)
-    if big.size:
-        out[big] = _rayleigh_sums(op, twist[big], nu[big], left[big], right[big],
-                                  np.longdouble)
+    out = np.empty(twist.size)
+    big = np.abs(twist) > LONG_TWIST
+    for sel, dtype in ((np.flatnonzero(~big), np.float64), (np.flatnonzero(big), np.longdouble)):
+        if sel.size:
+            out[sel] = _rayleigh_sums(op, twist[sel], nu[sel], left[sel], right[sel], dtype)
     return out
+
+
+#: The terms of INST1 whose blocks are B's (the own field, order 0): y^T B x is their sum.
+_MASS_TERMS = [i for i, t in enumerate(INST1) if t.field == t.equation and t.order == 0]
+
+
+@lru_cache(maxsize=128)
+def _term_blocks(n: int, family: str, dtype: type) -> tuple:
+    """:attr:`FamilyOperator.term_blocks` transposed, in `dtype` (converted once)."""
+    return tuple((e, f, idx, np.ascontiguousarray(blocks.astype(dtype).T))
+                 for e, f, idx, blocks in family_operator(n, family).term_blocks)
 
 
 def _rayleigh_sums(op: FamilyOperator, twist: NDArray[np.float64], nu: NDArray[np.float64],
                    left: NDArray[np.float64], right: NDArray[np.float64], dtype: type
                    ) -> NDArray[np.float64]:
-    m = right.shape[1]
+    """y^T A x / y^T B x in `dtype` from the products y_e^T P_i x_f of A's nonzero blocks
+    (:attr:`FamilyOperator.term_blocks`; a quarter of the work of the full pieces)."""
+    k1 = op.sizes[0]
+    cols = (slice(0, k1), slice(k1, None))
     x, y = right.astype(dtype), left.astype(dtype)
-    k = len(INST1)
-    px = rows_matmul(x, op.pieces.astype(dtype).reshape(k * m, m).T).reshape(-1, k, m)
+    terms = np.empty((x.shape[0], len(INST1)), dtype=dtype)
+    for e, f, idx, blocks in _term_blocks(op.n, op.family, dtype):
+        px = rows_matmul(x[:, cols[f]], blocks).reshape(x.shape[0], len(idx), -1)
+        terms[:, idx] = np.einsum("pj,pij->pi", y[:, cols[e]], px)
     coef = term_coefficients(twist.astype(dtype), nu.astype(dtype))
-    num = (coef * np.einsum("pj,pij->pi", y, px)).sum(axis=1)
-    den = np.einsum("pj,pj->p", y, rows_matmul(x, op.mass.astype(dtype).T))
-    return (num / den).astype(np.float64)
+    return ((coef * terms).sum(axis=1) / terms[:, _MASS_TERMS].sum(axis=1)).astype(np.float64)
 
 
 def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np.float64],
@@ -354,10 +377,11 @@ def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np
     vec = np.hstack([rows_matmul(z[:, :k1], mf.u1.T), rows_matmul(z[:, k1:], mf.u2.T)])
     # the eigenvalue from the O(1) pencil itself: the two-sided Rayleigh quotient (its error is
     # the product of the vectors' errors; K carries round-off ~ eps n^4 in its diagonal)
-    good = np.flatnonzero(ok)
+    loose = rtol >= LOOSE_RTOL and n <= LOOSE_DEGREE
+    good = np.flatnonzero(ok) if not loose else np.zeros(0, dtype=int)
     w = w[good]
     left = np.hstack([rows_matmul(w[:, :k1], mf.left1), rows_matmul(w[:, k1:], mf.left2)])
-    lam[good] = _pencil_rayleigh_quotient(op, twist[good], nu[good], left, vec[good])
+    lam[good] = pencil_rayleigh_quotient(op, twist[good], nu[good], left, vec[good])
     bad = np.flatnonzero(~(ok | above))
     if bad.size:  # the full eig with the rule decides
         a, b = op.pencil(twist[bad], nu[bad])

@@ -17,7 +17,9 @@ from spectral_rod.straight_rod._blas import rows_matmul
 from spectral_rod.straight_rod.discretisation import FamilyOperator
 
 __all__ = ["ERR_LINEAR", "ERR_QUADRATIC", "N_MAX", "N_MIN", "ROUNDOFF_TWIST", "error_estimate",
-           "initial_degree", "mode_tails", "roundoff_floor", "tail_for_tolerance"]
+           "error_estimate_scalar", "initial_degree", "initial_degree_scalar", "mode_tails",
+           "raised_degree",
+           "roundoff_floor", "tail_for_tolerance"]
 
 N_MIN, N_MAX = 8, 512
 EPS = float(np.finfo(float).eps)
@@ -42,9 +44,38 @@ def initial_degree(twist_angle: NDArray[np.float64], nu: NDArray[np.float64],
     the needed degree varies by at most 2 over nu in [1, 100].
     """
     om = np.abs(np.asarray(twist_angle, dtype=float))
-    big_l = -math.log10(tol)
-    x = om / 2 + 3.5 + 0.5 * big_l + 1.3 * np.cbrt(1.0 + om) * math.sqrt(big_l)
+    x = _degree_formula(om, -math.log10(tol), np.cbrt)
     return np.clip(2 * np.ceil(x / 2).astype(int), N_MIN, N_MAX) + 0 * np.asarray(nu, int)
+
+
+def raised_degree(n):
+    """The next degree tried where the estimate misses tol: ~12 % higher, even, <= N_MAX (works
+    on ints and on integer arrays)."""
+    return np.minimum(N_MAX, n + 2 * np.ceil(0.06 * np.asarray(n) + 1).astype(int))
+
+
+def initial_degree_scalar(twist_angle: float, tol: float) -> int:
+    """:func:`initial_degree` for one point, in Python floats (the scalar path's)."""
+    x = _degree_formula(abs(twist_angle), -math.log10(tol), lambda v: v ** (1.0 / 3.0))
+    return min(N_MAX, max(N_MIN, 2 * math.ceil(x / 2)))
+
+
+def _degree_formula(om, big_l: float, cbrt):
+    """n0 of :func:`initial_degree` before rounding (om = |Omega|, big_l = log10(1/tol)).
+
+    The fit was made for tol <= 1e-4; for looser tolerances it fell short (at tol 1e-2 the
+    degree had to be raised at 427 of Figure 1's 1,201 points, each raise a second solve), so
+    big_l is taken >= 3.5 (measured: 0 raises at 1e-2, 4 at 1e-3).
+    """
+    big_l = max(big_l, 3.5)
+    return om / 2 + 3.5 + 0.5 * big_l + 1.3 * cbrt(1.0 + om) * math.sqrt(big_l)
+
+
+def error_estimate_scalar(tail_value: float, twist_angle: float) -> float:
+    """:func:`error_estimate` for one point, in Python floats (the scalar path's)."""
+    t = tail_value
+    return max(ERR_LINEAR * t, ERR_QUADRATIC * t * t) + EPS * (32.0 + ROUNDOFF_TWIST
+                                                            * twist_angle * twist_angle)
 
 
 def error_estimate(tail_value: ArrayLike, twist_angle: ArrayLike) -> NDArray[np.float64]:

@@ -1,7 +1,10 @@
-"""Benchmarks of issue 5 (pytest-benchmark): the registry the tests fill and the terminal line
-with the baseline/new ratio of the Figure 1 sweep.
+"""Benchmarks of issue 14 (pytest-benchmark): the registry the tests fill and the terminal table
+of same-run ratios (yardstick / new) per call pattern.
 
-Run with ``python -m pytest -m bench`` (the marker is excluded from the default run).
+Run with ``python -m pytest -m bench`` (the marker is excluded from the default run); add
+``--benchmark-autosave`` to keep the results (with ``extra_info``) under ``.benchmarks/`` and
+``--benchmark-compare --benchmark-compare-fail=min:50%`` to compare against the last saved run
+on the same machine (README, "More commands").
 """
 
 from __future__ import annotations
@@ -13,21 +16,28 @@ RATIO_KEY = pytest.StashKey[dict]()
 
 @pytest.fixture(scope="session")
 def bench_registry(request) -> dict:
-    """Timing statistics (seconds) by benchmark name, shared across the benchmark tests."""
+    """Per pattern: per-point (min, median) seconds of the yardstick and the new code, ratio."""
     return request.config.stash.setdefault(RATIO_KEY, {})
 
 
 def pytest_terminal_summary(terminalreporter, exitstatus, config) -> None:
     reg = config.stash.get(RATIO_KEY, {})
-    if "baseline" in reg and "figure1" in reg:
-        base, new = reg["baseline"], reg["figure1"]
-        terminalreporter.write_sep("=", "issue 5: Figure 1 sweep, baseline / new")
-        terminalreporter.write_line(
-            f"baseline (cheb n=24, eigvals per point): min {base['min'] * 1e3:.1f} ms, "
-            f"median {base['median'] * 1e3:.1f} ms")
-        terminalreporter.write_line(
-            f"new (critical_load, tol 1e-12):         min {new['min'] * 1e3:.1f} ms, "
-            f"median {new['median'] * 1e3:.1f} ms")
-        terminalreporter.write_line(
-            f"ratio baseline/new: {base['min'] / new['min']:.1f} (min), "
-            f"{base['median'] / new['median']:.1f} (median)")
+    rows = [(name, e) for name, e in reg.items() if "ratio" in e]
+    if not rows and "import" not in reg:
+        return
+    tr = terminalreporter
+    tr.write_sep("=", "issue 14: same-run ratios, yardstick / new (minimum over rounds)")
+    tr.write_line(f"{'pattern':<22}{'yardstick':<28}{'yardstick/pt':>14}{'new/pt':>12}"
+                  f"{'ratio':>8}{'floor':>7}")
+    for name, e in rows:
+        tr.write_line(f"{name:<22}{e['yardstick_name']:<28}{_us(e['yardstick'][0]):>14}"
+                      f"{_us(e['new'][0]):>12}{e['ratio']:>8.1f}{e['floor']:>7.1f}")
+    if "import" in reg:
+        imp = reg["import"]
+        tr.write_line(f"import spectral_rod: {imp['import_s'] * 1e3:.1f} ms; first call "
+                      f"critical_load(5.0, 1.3): {imp['first_call_s'] * 1e3:.0f} ms (fresh "
+                      f"interpreters, minimum of 5)")
+
+
+def _us(seconds: float) -> str:
+    return f"{seconds * 1e6:.1f} us"

@@ -1,92 +1,358 @@
-"""Timings (pytest-benchmark), issue 5. Not in the default run; run them with
+"""Timings of every call pattern (pytest-benchmark), issue 14. Not in the default run:
 
     python -m pytest -m bench
 
-Groups: single point, Figure 1 sweep, large twist, baseline (the obvious implementation of
-``spectral_rod.baseline``). Each records the resolution and the achieved accuracy (against
-the mpmath characteristic equation) in ``extra_info``; the terminal summary prints the
-baseline/new ratio of the Figure 1 sweep (same run, same points), from the minimum over rounds
-of the wall-clock time (on a shared machine the minimum is the round least disturbed by other
-jobs; the median is printed too). Not CPU time: idle OpenBLAS worker threads spin and would be
-charged to whichever code ran last. Speed is reported, never asserted; the accuracy asserts
-are there so that a fast wrong answer cannot pass.
+Each pattern is timed twice in the same run, in the same benchmark group: its yardstick first,
+then ``critical_load``. The yardstick is the obvious implementation (``spectral_rod.baseline``:
+Trefethen ``cheb``, n = 24, dense operator and ``eigvals`` per point) for the collocation
+patterns, and the pre-change per-point route (``yardsticks.py``, the code before issue 14) for
+large twist and near-degenerate points, where the baseline is not a meaningful comparison (n = 24
+does not resolve Omega(L) >= 50, and it returns p* - 1 with no significant digits at
+nu - 1 = 1e-8). Where the yardstick is slow it runs on a sample of the points and the ratio is
+per point (named in ``extra_info``). The ratio is yardstick/new from the minimum over rounds of
+wall-clock time (on a shared machine the minimum is the round least disturbed by other jobs).
+
+Each new-code test records the resolution and the achieved accuracy (against the mpmath
+characteristic equation on a sample) in ``extra_info`` and asserts it, so that a fast wrong answer
+cannot pass, and fails if its same-run ratio is below the floor stated with it (FLOORS): about half
+the lowest ratio measured on the project's shared 2-core machines, a margin for the 1.5-2x
+run-to-run swings measured there when other jobs load the cores. The terminal summary prints the
+table of ratios. Import time and the first (cold) call are timed in fresh interpreters.
 """
 
 from __future__ import annotations
 
+import json
+import subprocess
+import sys
+
 import numpy as np
 import pytest
+from scipy.optimize import brentq
+from yardsticks import pre_change_characteristic, pre_change_increment
 
-from spectral_rod import baseline_sweep, critical_load, load_figure1
-
-SAMPLE = 61  # every 61st point of the sweep is checked against the mpmath reference
+from spectral_rod import baseline_critical_load, baseline_sweep, critical_load, load_figure1
 
 pytestmark = pytest.mark.bench
 
+#: Same-run ratio floors (yardstick / new): about half the lowest ratio measured in the runs of
+#: 2026-12-01 on a shared 2-core machine (module docstring), e.g. the Figure 1 batch 17-18 ->
+#: 8; the near-degenerate yardstick runs on two BLAS threads and swings 7.6-109 ms a point
+#: with load (ratios 14-204), hence its floor of 10.
+FLOORS = {
+    "figure1 batch": 8.0, "figure1 per curve": 6.0, "batches of 100": 4.5,
+    "batches of 10": 2.5, "scalar loop": 2.0, "brentq search": 2.0,
+    "map collocation part": 3.0, "map all points": 3.0, "large twist": 20.0,
+    "near-degenerate": 10.0,
+}
+TOL = 1e-12
+
 
 @pytest.fixture(scope="module")
-def sweep_points():
+def fig1():
     d = load_figure1()
     return d["twist_angle"].to_numpy(), d["nu"].to_numpy()
 
 
-def _sampled_error(p, twist, nu, reference) -> float:
-    idx = np.arange(0, twist.size, SAMPLE)
+@pytest.fixture(scope="module")
+def grid_map():
+    om, nu = np.meshgrid(np.linspace(0.0, 100.0, 200), np.linspace(1.0, 100.0, 200))
+    return om.ravel(), nu.ravel()
+
+
+def _errors(p, twist, nu, reference, sample=40):
+    """Relative errors against the mpmath reference at `sample` evenly spaced points, and
+    their indices."""
+    idx = np.unique(np.linspace(0, twist.size - 1, sample).astype(int))
     ref = np.array([reference(float(twist[i]), float(nu[i])) for i in idx])
-    return float(np.max(np.abs(np.asarray(p)[idx] / ref - 1)))
+    return np.abs(np.asarray(p)[idx] / ref - 1), idx
 
 
-def _record(registry, name, benchmark) -> None:
+def _max_error(p, twist, nu, reference, sample=40) -> float:
+    return float(_errors(p, twist, nu, reference, sample)[0].max())
+
+
+def _yardstick(benchmark, registry, pattern, fn, points, rounds=5):
+    """Time a yardstick; store its per-point minimum for the pattern's ratio."""
+    benchmark.pedantic(fn, rounds=rounds, iterations=1, warmup_rounds=0)
     st = benchmark.stats.stats
-    registry[name] = {"min": st.min, "median": st.median}
+    registry.setdefault(pattern, {})["yardstick"] = (st.min / points, st.median / points)
+    benchmark.extra_info.update(points=points, role="yardstick")
 
 
-@pytest.mark.benchmark(group="baseline")
-def test_baseline_figure1_sweep(benchmark, sweep_points, reference, bench_registry):
-    twist, nu = sweep_points
-    p = benchmark.pedantic(baseline_sweep, args=(twist, nu), rounds=7, iterations=1,
-                           warmup_rounds=0)
-    err = _sampled_error(p, twist, nu, reference)
-    benchmark.extra_info.update(points=int(twist.size), n=24, max_rel_error_sampled=err)
-    _record(bench_registry, "baseline", benchmark)
-    assert err < 1e-9  # n = 24 is not enough for 1e-12 at Omega ~ 10, but it is the baseline
+def _new(benchmark, registry, pattern, fn, points, info, yardstick_name):
+    """Time the new code, store its per-point minimum, record and check the ratio."""
+    benchmark.pedantic(fn, rounds=15, iterations=1, warmup_rounds=2)
+    st = benchmark.stats.stats
+    entry = registry.setdefault(pattern, {})
+    entry["new"] = (st.min / points, st.median / points)
+    entry.update(floor=FLOORS[pattern], yardstick_name=yardstick_name)
+    ratio = entry["yardstick"][0] / entry["new"][0]
+    entry["ratio"] = ratio
+    benchmark.extra_info.update(points=points, ratio_min=ratio, floor=FLOORS[pattern],
+                                yardstick=yardstick_name, **info)
+    assert ratio >= FLOORS[pattern], f"{pattern}: ratio {ratio:.1f} below floor"
 
 
-@pytest.mark.benchmark(group="figure1 sweep", min_rounds=60, max_time=2.0)
-def test_figure1_sweep(benchmark, sweep_points, reference, bench_registry):
-    twist, nu = sweep_points
-    res = benchmark(critical_load, twist, nu, tol=1e-12, full_output=True)
-    err = _sampled_error(res.p_star, twist, nu, reference)
-    _record(bench_registry, "figure1", benchmark)
-    info = {"points": int(twist.size), "n_min": int(res.n.min()), "n_max": int(res.n.max()),
-            "n_median": float(np.median(res.n)), "max_error_estimate":
-            float(res.error_estimate.max()), "max_rel_error_sampled": err}
-    if "baseline" in bench_registry:
-        base = bench_registry["baseline"]
-        info["ratio_baseline_over_new_min"] = base["min"] / bench_registry["figure1"]["min"]
-        info["ratio_baseline_over_new_median"] = (base["median"]
-                                                  / bench_registry["figure1"]["median"])
-    benchmark.extra_info.update(info)
-    assert res.converged.all() and err <= 1e-12
+# --- Figure 1 sweep: one call, one call per curve, batches of 100 and 10 -------------------
+
+@pytest.mark.benchmark(group="figure1 batch")
+def test_figure1_baseline(benchmark, fig1, bench_registry):
+    _yardstick(benchmark, bench_registry, "figure1 batch", lambda: baseline_sweep(*fig1),
+               fig1[0].size)
 
 
-@pytest.mark.benchmark(group="single point")
-def test_single_point(benchmark, reference):
-    res = benchmark(critical_load, 5.0, 1.3, tol=1e-12, full_output=True)
-    err = abs(float(res.p_star) / reference(5.0, 1.3) - 1)
-    benchmark.extra_info.update(n=int(res.n), rel_error=err,
-                                error_estimate=float(res.error_estimate))
+@pytest.mark.benchmark(group="figure1 batch")
+def test_figure1_batch(benchmark, fig1, reference, bench_registry):
+    tw, nv = fig1
+    res = critical_load(tw, nv, tol=TOL, full_output=True)
+    err = _max_error(res.p_star, tw, nv, reference)
+    assert res.converged.all() and err <= 1e-13
+    _new(benchmark, bench_registry, "figure1 batch", lambda: critical_load(tw, nv, tol=TOL),
+         tw.size, {"n_min": int(res.n.min()), "n_max": int(res.n.max()),
+                   "max_rel_error_sampled": err}, "baseline")
+
+
+def _per_curve(tw, nv):
+    return [critical_load(tw[nv == v], v, tol=TOL) for v in np.unique(nv)]
+
+
+@pytest.mark.benchmark(group="figure1 per curve")
+def test_per_curve_baseline(benchmark, fig1, bench_registry):
+    tw, nv = fig1
+    _yardstick(benchmark, bench_registry, "figure1 per curve",
+               lambda: [baseline_sweep(tw[nv == v], nv[nv == v]) for v in np.unique(nv)],
+               tw.size, rounds=3)
+
+
+@pytest.mark.benchmark(group="figure1 per curve")
+def test_per_curve(benchmark, fig1, reference, bench_registry):
+    tw, nv = fig1
+    p = np.empty(tw.size)
+    for v, pv in zip(np.unique(nv), _per_curve(tw, nv), strict=True):
+        p[nv == v] = pv
+    err = _max_error(p, tw, nv, reference)
+    assert err <= 1e-13
+    _new(benchmark, bench_registry, "figure1 per curve", lambda: _per_curve(tw, nv), tw.size,
+         {"calls": 3, "max_rel_error_sampled": err}, "baseline")
+
+
+def _batches(tw, nv, size):
+    return np.concatenate([critical_load(tw[i:i + size], nv[i:i + size], tol=TOL)
+                           for i in range(0, tw.size, size)])
+
+
+@pytest.mark.parametrize("size", [100, 10])
+def test_batches_baseline(benchmark, fig1, bench_registry, size):
+    benchmark.group = f"batches of {size}"
+    tw, nv = fig1
+    _yardstick(benchmark, bench_registry, f"batches of {size}",
+               lambda: [baseline_sweep(tw[i:i + size], nv[i:i + size])
+                        for i in range(0, 600, size)], 600, rounds=3)
+
+
+@pytest.mark.parametrize("size", [100, 10])
+def test_batches(benchmark, fig1, reference, bench_registry, size):
+    benchmark.group = f"batches of {size}"
+    tw, nv = fig1
+    err = _max_error(_batches(tw, nv, size), tw, nv, reference)
+    assert err <= 1e-13
+    _new(benchmark, bench_registry, f"batches of {size}", lambda: _batches(tw, nv, size),
+         tw.size, {"batch": size, "max_rel_error_sampled": err}, "baseline")
+
+
+# --- scalar calls: a Python loop and a root finder ---------------------------------------
+
+def _scalar_points(fig1):
+    tw, nv = fig1
+    return tw[::6].tolist(), nv[::6].tolist()  # 201 points along the three curves
+
+
+@pytest.mark.benchmark(group="scalar loop")
+def test_scalar_loop_baseline(benchmark, fig1, bench_registry):
+    tw, nv = _scalar_points(fig1)
+    _yardstick(benchmark, bench_registry, "scalar loop",
+               lambda: [baseline_critical_load(a, b) for a, b in zip(tw, nv, strict=True)],
+               len(tw), rounds=3)
+
+
+@pytest.mark.benchmark(group="scalar loop")
+def test_scalar_loop(benchmark, fig1, reference, bench_registry):
+    tw, nv = _scalar_points(fig1)
+    res = [critical_load(a, b, tol=TOL, full_output=True) for a, b in zip(tw, nv, strict=True)]
+    p = np.array([r.p_star for r in res])
+    err = _max_error(p, np.array(tw), np.array(nv), reference)
+    same = np.max(np.abs(p / critical_load(np.array(tw), np.array(nv), tol=TOL) - 1))
+    assert err <= 1e-13 and all(r.converged for r in res)
+    _new(benchmark, bench_registry, "scalar loop",
+         lambda: [critical_load(a, b, tol=TOL) for a, b in zip(tw, nv, strict=True)], len(tw),
+         {"n": sorted({r.n for r in res}), "max_rel_error_sampled": err,
+          "max_rel_diff_scalar_vs_array": float(same)}, "baseline")
+
+
+BRENTQ_NU, BRENTQ_TARGET, BRENTQ_BRACKET = 1.3, 1.1, (2.0, 6.0)
+
+
+def _search(p_of):
+    calls = []
+
+    def f(om):
+        calls.append(om)
+        return p_of(om, BRENTQ_NU) - BRENTQ_TARGET
+
+    return brentq(f, *BRENTQ_BRACKET, xtol=1e-12), len(calls)
+
+
+@pytest.mark.benchmark(group="brentq search")
+def test_brentq_baseline(benchmark, bench_registry):
+    _, calls = _search(baseline_critical_load)
+    _yardstick(benchmark, bench_registry, "brentq search",
+               lambda: _search(baseline_critical_load), calls, rounds=5)
+
+
+@pytest.mark.benchmark(group="brentq search")
+def test_brentq(benchmark, reference, bench_registry):
+    om, calls = _search(lambda t, v: critical_load(t, v, tol=TOL))
+    err = abs(reference(om, BRENTQ_NU) / BRENTQ_TARGET - 1)  # p* at the root found
     assert err <= 1e-12
+    _new(benchmark, bench_registry, "brentq search",
+         lambda: _search(lambda t, v: critical_load(t, v, tol=TOL)), calls,
+         {"root_twist": om, "calls": calls, "rel_error_of_p_at_root": err}, "baseline")
+
+
+# --- a 200 x 200 map over Omega in [0, 100], nu in [1, 100] -------------------------------
+
+@pytest.mark.benchmark(group="map")
+def test_map_baseline(benchmark, grid_map, bench_registry):
+    tw, nv = grid_map
+    sample = np.arange(0, tw.size, 97)  # the baseline's cost does not depend on the point
+    _yardstick(benchmark, bench_registry, "map all points",
+               lambda: baseline_sweep(tw[sample], nv[sample]), sample.size, rounds=3)
+    bench_registry["map collocation part"] = {"yardstick":
+                                              bench_registry["map all points"]["yardstick"]}
+    benchmark.extra_info.update(sample="every 97th point of the map, per-point time")
+
+
+@pytest.mark.benchmark(group="map")
+def test_map_collocation_part(benchmark, grid_map, reference, bench_registry):
+    tw, nv = grid_map
+    res = critical_load(tw, nv, tol=TOL, full_output=True)
+    col = np.flatnonzero(res.method == "collocation")
+    errs, idx = _errors(res.p_star[col], tw[col], nv[col], reference)
+    err = float(errs.max())
+    # near |Omega| = 50 collocation's round-off, eps (32 + 0.3 Omega^2) ~ 1.6e-13, exceeds
+    # 1e-13 (also before issue 14): each point is held to max(1e-13, its error estimate)
+    assert res.converged.all()
+    assert np.all(errs <= np.maximum(1e-13, res.error_estimate[col][idx]))
+    _new(benchmark, bench_registry, "map collocation part",
+         lambda: critical_load(tw[col], nv[col], tol=TOL), col.size,
+         {"n_max": int(res.n[col].max()), "max_rel_error_sampled": err}, "baseline")
+
+
+@pytest.mark.benchmark(group="map")
+def test_map_all_points(benchmark, grid_map, reference, bench_registry):
+    tw, nv = grid_map
+    res = critical_load(tw, nv, tol=TOL, full_output=True)
+    errs, idx = _errors(res.p_star, tw, nv, reference, sample=60)
+    err = float(errs.max())
+    methods = {m: int((res.method == m).sum()) for m in np.unique(res.method)}
+    assert res.converged.all()
+    assert np.all(errs <= np.maximum(1e-13, res.error_estimate[idx]))  # as the part above
+    _new(benchmark, bench_registry, "map all points", lambda: critical_load(tw, nv, tol=TOL),
+         tw.size, {"methods": methods, "max_rel_error_sampled": err}, "baseline")
+
+
+# --- large twist and near-degenerate points (yardstick: the pre-change per-point routes) --
+
+@pytest.fixture(scope="module")
+def large_twist():
+    rng = np.random.default_rng(14)
+    return rng.uniform(50.0, 1000.0, 1000), np.exp(rng.uniform(0.0, np.log(100.0), 1000))
+
+
+@pytest.fixture(scope="module")
+def near_degenerate():
+    rng = np.random.default_rng(15)
+    return rng.uniform(0.0, 50.0, 1000), 1.0 + 10.0 ** rng.uniform(-8.0, -3.0, 1000)
 
 
 @pytest.mark.benchmark(group="large twist")
-def test_large_twist_collocation(benchmark, reference):
-    twist = np.array([50.0, 100.0, 100.0, 100.0])
-    nu = np.array([1.5, 1.5, 10.0, 100.0])
-    res = benchmark(critical_load, twist, nu, tol=1e-12, method="collocation",
-                    full_output=True)
-    ref = np.array([reference(float(a), float(b)) for a, b in zip(twist, nu, strict=True)])
-    err = float(np.max(np.abs(res.p_star / ref - 1)))
-    benchmark.extra_info.update(n=[int(v) for v in res.n], max_rel_error=err,
-                                max_error_estimate=float(res.error_estimate.max()))
-    assert res.converged.all() and err <= 1e-12
+def test_large_twist_pre_change(benchmark, large_twist, bench_registry):
+    tw, nv = (v[:50] for v in large_twist)
+    _yardstick(benchmark, bench_registry, "large twist",
+               lambda: [pre_change_characteristic(a, b) for a, b in zip(tw, nv, strict=True)],
+               tw.size, rounds=3)
+    benchmark.extra_info.update(sample="first 50 of the 1,000 points, per-point time")
+
+
+@pytest.mark.benchmark(group="large twist")
+def test_large_twist(benchmark, large_twist, reference, bench_registry):
+    tw, nv = large_twist
+    res = critical_load(tw, nv, tol=TOL, full_output=True)
+    err = _max_error(res.p_star, tw, nv, reference, sample=20)
+    assert (res.method == "characteristic").all() and err <= 1e-13
+    _new(benchmark, bench_registry, "large twist", lambda: critical_load(tw, nv, tol=TOL),
+         tw.size, {"max_rel_error_sampled": err}, "pre-change per-point route")
+
+
+@pytest.mark.benchmark(group="near-degenerate")
+def test_near_degenerate_pre_change(benchmark, near_degenerate, bench_registry):
+    tw, nv = (v[:20] for v in near_degenerate)
+    _yardstick(benchmark, bench_registry, "near-degenerate",
+               lambda: [pre_change_increment(a, b) for a, b in zip(tw, nv, strict=True)],
+               tw.size, rounds=3)
+    benchmark.extra_info.update(sample="first 20 of the 1,000 points, per-point time")
+
+
+@pytest.mark.benchmark(group="near-degenerate")
+def test_near_degenerate(benchmark, near_degenerate, reference, bench_registry):
+    from spectral_rod import critical_load_increment
+    from spectral_rod.characteristic import characteristic_critical_load
+
+    tw, nv = near_degenerate
+    res = critical_load(tw, nv, tol=TOL, full_output=True)
+    idx = np.arange(0, tw.size, 50)
+    ref = np.array([float(characteristic_critical_load(tw[i], nv[i], dps=50).p_star - 1)
+                    for i in idx])
+    gain = critical_load_increment(tw[idx], nv[idx])
+    err_gain = float(np.max(np.abs(gain / ref - 1)))
+    err = float(np.max(np.abs(res.p_star[idx] / (1 + ref) - 1)))
+    assert (res.method == "increment").all() and err <= 1e-13 and err_gain <= 1e-9
+    _new(benchmark, bench_registry, "near-degenerate", lambda: critical_load(tw, nv, tol=TOL),
+         tw.size, {"max_rel_error_sampled": err, "max_rel_error_of_increment": err_gain},
+         "pre-change per-point route")
+
+
+# --- import and the first (cold) call, in fresh interpreters ------------------------------
+
+_COLD = """
+import sys, time, json
+t0 = time.perf_counter()
+import spectral_rod
+t1 = time.perf_counter()
+spectral_rod.critical_load(5.0, 1.3)
+t2 = time.perf_counter()
+print(json.dumps({"import_s": t1 - t0, "first_call_s": t2 - t1,
+                  "scipy": "scipy" in sys.modules, "mpmath": "mpmath" in sys.modules,
+                  "modules": len(sys.modules)}))
+"""
+
+
+@pytest.mark.benchmark(group="import and cold call")
+def test_import_and_cold_call(benchmark, bench_registry):
+    runs = []
+
+    def run():
+        out = subprocess.run([sys.executable, "-c", _COLD], capture_output=True, text=True,
+                             check=True)
+        runs.append(json.loads(out.stdout))
+
+    benchmark.pedantic(run, rounds=5, iterations=1)
+    best_import = min(r["import_s"] for r in runs)
+    best_call = min(r["first_call_s"] for r in runs)
+    bench_registry["import"] = {"import_s": best_import, "first_call_s": best_call}
+    benchmark.extra_info.update(import_s=best_import, first_call_s=best_call,
+                                first_call_imports_scipy=runs[-1]["scipy"],
+                                first_call_imports_mpmath=runs[-1]["mpmath"],
+                                modules_after_first_call=runs[-1]["modules"])
+    assert best_import < 0.5

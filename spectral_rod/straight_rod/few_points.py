@@ -1,0 +1,167 @@
+r"""The lowest eigenvalue of both mode families for one point or a few (Eq. ``inst1``), lean.
+
+The batched engine (:mod:`.eigensolver`) pays a fixed cost per degree group of ~1 ms of array
+bookkeeping, which dominates for a scalar call or a batch of ten. Here each (point, family)
+keeps the dense collocation pencil (A, B) of :mod:`.discretisation` (m = n - 1 unknowns, both
+families the same size, so they are stacked), and:
+
+1. F = A - SHIFT B is factorised and inverted once by LAPACK (``dgetrf``/``dgetri`` called
+   directly: 5 us for m = 21, where ``numpy.linalg.inv`` takes 20 us);
+2. M = F^{-1} B, the shift-and-invert matrix, is squared 3 or 4 times: M^8 or M^16 x0 and
+   x0^T M^16 are the right and left power iterates of 8 or 16 steps, for a handful of batched
+   matrix products instead of 32 solves (above m = SQUARING_MAX the steps are taken one by one
+   with the vectors, cheaper there);
+3. the eigenvalue is the two-sided Rayleigh quotient of the pencil itself, y^T A x / y^T B x
+   (x = M x_k, y^T = x0^T M^{k+1} F^{-1}: its error is the product of the vectors' errors),
+   accumulated in extended precision above |Omega| = LONG_TWIST as in the batched engine
+   (without it the round-off reached 0.33 eps Omega^2 on Omega(L) in [40, 50], above the error
+   model's 0.3);
+4. convergence is judged from the power estimates theta_k = x0^T M^{k+1} x0 / x0^T M^k x0 of
+   1/(lambda - SHIFT) at k and 2k: their relative difference delta measures the vectors' error
+   after k steps (~ the contraction^k), so the quotient's error is ~ delta^2; a point is
+   accepted when delta^2 <= rtol and lambda >= SHIFT. Anything else (a slow contraction, a
+   spurious eigenvalue nearest the shift) goes back to the batched engine, which decides with
+   its own iteration or the full ``eig``.
+
+Both families are solved (no "ceiling" shortcut: the second family costs one LAPACK pair). The
+result differs from the batched engine's only by the rounding of two different computations of
+the same Rayleigh quotient (measured: see :func:`spectral_rod.critical_load`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+from numpy.typing import NDArray
+
+from spectral_rod.families import FAMILIES, SHIFT
+from spectral_rod.straight_rod.discretisation import INST1, family_operator, term_coefficients
+from spectral_rod.straight_rod.eigensolver import LONG_TWIST, pencil_rayleigh_quotient
+
+__all__ = ["SQUARING_MAX", "DensePencils", "dense_pencils", "solve_few"]
+
+#: Up to this size m the powers of M are taken by squaring (a few matrix products), above it by
+#: products with the vectors: a squaring costs ~m^3, a step ~m^2 but ~1 us of call overhead;
+#: measured at one to 24 points: faster from n = 30 on (e.g. 24 points at n = 30: 67 -> 43 us a
+#: point; one point at n = 44: 357 -> 309 us).
+SQUARING_MAX = 27
+
+
+@dataclass(frozen=True)
+class DensePencils:
+    """Both families' pencils at degree n, stored for the lean solver (see module docstring).
+
+    ``pieces``: (len(INST1) + 1, 2 * 3 m m): coefficients (those of :data:`INST1`, then 1) @
+    pieces gives, per family, [F^T, A^T, B^T] with F = A - SHIFT B, each in C order (= the
+    matrix in Fortran order, which LAPACK reads without a copy); ``mass`` B (2, m, m);
+    ``tail_rows`` (2, n + 1, m): the Chebyshev coefficients of the fields' own parity, the two
+    last of each field first; ``start`` the start vector x0.
+    """
+
+    n: int
+    pieces: NDArray[np.float64]
+    mass: NDArray[np.float64]
+    tail_rows: NDArray[np.float64]
+    start: NDArray[np.float64]
+
+
+@lru_cache(maxsize=64)
+def dense_pencils(n: int) -> DensePencils:
+    """Assemble :class:`DensePencils` for degree n once (from :func:`family_operator`)."""
+    ops = [family_operator(n, f) for f in FAMILIES]
+    m, k = ops[0].mass.shape[0], len(INST1)
+    pieces = np.zeros((k + 1, 2, 3, m, m))
+    for f, op in enumerate(ops):
+        p_t, b_t = np.swapaxes(op.pieces, 1, 2), op.mass.T
+        pieces[:k, f, 0] = pieces[:k, f, 1] = p_t
+        pieces[k, f, 0], pieces[k, f, 2] = -SHIFT * b_t, b_t
+    start = np.random.default_rng(20240607).standard_normal(m)
+    return DensePencils(n, pieces.reshape(k + 1, -1), np.stack([op.mass for op in ops]),
+                        np.stack([_tail_rows(op) for op in ops]), start / np.linalg.norm(start))
+
+
+def _tail_rows(op) -> NDArray[np.float64]:
+    """Rows mapping an eigenvector c to the Chebyshev coefficients of its fields' own parity:
+    the last two of omega1, the last two of omega2, then the rest (:func:`mode_tails`' order)."""
+    k1 = op.sizes[0]
+    blocks = []
+    for f, b in enumerate((op.bases[0][0], op.bases[1][1])):
+        rows = np.zeros((b.coefficients.shape[0], op.mass.shape[0]))
+        rows[:, slice(0, k1) if f == 0 else slice(k1, None)] = b.coefficients
+        blocks.append(rows[b.parity::2])
+    return np.vstack([blk[-2:] for blk in blocks] + [blk[:-2] for blk in blocks])
+
+
+def _inverses(f_t: NDArray[np.float64]) -> NDArray[np.float64] | None:
+    """F^{-1} for each matrix of a stack given as F^T in C order (LU and inverse by LAPACK,
+    overwriting the input), or None if any F is singular (the caller then falls back)."""
+    from scipy.linalg.lapack import dgetrf, dgetri
+
+    flat = f_t.reshape(-1, *f_t.shape[-2:])
+    out = []
+    for j in range(flat.shape[0]):
+        lu, piv, info = dgetrf(flat[j].T, overwrite_a=1)
+        if info != 0:
+            return None
+        inv, info = dgetri(lu, piv, overwrite_lu=1)
+        if info != 0:
+            return None
+        out.append(inv)
+    return np.array(out).reshape(f_t.shape)
+
+
+def _dot(a: NDArray[np.float64], b: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Dot products over the last axis (as a batched matmul: the fastest for short vectors)."""
+    return (a[..., None, :] @ b[..., :, None])[..., 0, 0]
+
+
+def solve_few(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol: float
+              ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.bool_]]:
+    """lambda = pi^2 p of both families, the modes' coefficient tails (both (2, points)) and
+    whether both families converged, at flat arrays of points at degree n (module docstring).
+
+    ``rtol`` is the accepted relative error of lambda (as ``POWER_RTOL`` of the batched
+    engine); 3 squarings (8 steps) where rtol >= 1e-8, else 4 (16 steps).
+    """
+    dp = dense_pencils(n)
+    pts, m = twist.size, dp.mass.shape[1]
+    if pts == 1:  # Python floats: a third of the array version's cost
+        a, b = float(twist[0]), float(nu[0])
+        coef = np.array([[*(t.coefficient(a, b) for t in INST1), 1.0]])
+    else:
+        coef = np.hstack([term_coefficients(twist, nu), np.ones((pts, 1))])
+    mats = (coef @ dp.pieces).reshape(pts, 2, 3, m, m)
+    f_inv = _inverses(mats[:, :, 0])  # overwrites F^T (not needed after)
+    if f_inv is None:
+        return np.full((2, pts), np.nan), np.full((2, pts), np.inf), np.zeros(pts, bool)
+    with np.errstate(all="ignore"):  # overflow (a spurious eigenvalue at SHIFT): rejected below
+        mat = f_inv @ dp.mass
+        steps = 8 if rtol >= 1e-8 else 16
+        if m <= SQUARING_MAX:  # log2(steps) products of matrices
+            power = mat
+            for _ in range(steps.bit_length() - 1):
+                power = power @ power
+            x = power @ dp.start  # M^k x0
+            u = dp.start @ power  # x0^T M^k
+        else:  # steps products with vectors
+            x = u = np.broadcast_to(dp.start, (pts, 2, m))
+            for _ in range(steps):
+                x, u = (mat @ x[..., None])[..., 0], (u[..., None, :] @ mat)[..., 0, :]
+        x1 = (mat @ x[..., None])[..., 0]
+        y = ((u[..., None, :] @ mat) @ f_inv)[..., 0, :]  # left eigenvector of the pencil
+        ab_x = (x1[:, :, None, None, :] @ mats[:, :, 1:])[..., 0, :]  # (A x1, B x1)
+        theta_k = (x1 @ dp.start) / (x @ dp.start)  # x0^T M^(k+1) x0 / x0^T M^k x0
+        theta_2k = _dot(u, x1) / _dot(u, x)
+        lam = _dot(y, ab_x[:, :, 0]) / _dot(y, ab_x[:, :, 1])
+        big = np.flatnonzero(np.abs(twist) > LONG_TWIST)
+        for f, family in enumerate(FAMILIES):  # as the batched engine: extended precision
+            if big.size:
+                lam[big, f] = pencil_rayleigh_quotient(family_operator(n, family), twist[big],
+                                                        nu[big], y[big, f], x1[big, f])
+        delta = np.abs(theta_2k - theta_k) / np.abs(theta_2k)
+        coef = np.abs(dp.tail_rows @ x1[..., None])[..., 0]
+        tails = coef[..., :4].max(-1) / coef.max(-1)
+    ok = (delta * delta <= rtol) & (theta_2k > 0) & (lam >= SHIFT) & np.isfinite(tails)
+    return lam.T, tails.T, ok.all(axis=1)

@@ -1,0 +1,147 @@
+"""Issue 14: the fast paths give the answers of the paths they shortcut, and keep the guarantees.
+
+References are independent where accuracy is checked (the mpmath characteristic equation via
+the ``reference`` fixture, closed-form roots); elsewhere two code paths that must agree are
+compared with each other (the lean solver against the batched engine, the scalar path against
+the array path, the batched sign scan against the one-point scan).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from threadpoolctl import threadpool_info, threadpool_limits
+
+from spectral_rod import critical_load
+from spectral_rod._blas_threads import one_blas_thread
+from spectral_rod.characteristic import characteristic_double_batch
+from spectral_rod.router import NEAR_DEGENERATE, TWIST_ROUTE, route, route_point
+from spectral_rod.sign_scan import bracketed_roots, lowest_root, lowest_roots
+from spectral_rod.straight_rod.eigensolver import solve_family
+from spectral_rod.straight_rod.few_points import solve_few
+
+TWISTS = (0.0, 1e-3, 0.7, 3.0, 6.3, 9.9, 20.0, 45.0)
+NUS = (1.0 + 1e-6, 1.001, 1.1, 1.5, 4.0, 100.0)
+
+
+def test_route_point_is_the_router_rule():
+    tw = np.array([0.0, 10.0, TWIST_ROUTE, TWIST_ROUTE - 1e-9, 200.0, 10.0, 10.0])
+    nv = np.array([1.5, 1.0, 1.5, 1.0, 1.0, 1.0 + NEAR_DEGENERATE, 1.0 + 2 * NEAR_DEGENERATE])
+    for method in ("auto", "collocation", "characteristic"):
+        for n in (None, 16):
+            want = route(tw, nv, n, method) if not (n and method == "characteristic") else None
+            if want is None:
+                continue
+            got = [route_point(float(a), float(b), n, method) for a, b in zip(tw, nv,
+                                                                             strict=True)]
+            assert got == want.tolist()
+
+
+def test_scalar_path_equals_the_array_path_for_one_point():
+    for om in TWISTS:
+        for nu in NUS:
+            a = critical_load(om, nu, full_output=True)
+            b = critical_load(np.array([om]), np.array([nu]), full_output=True)
+            assert a.p_star == float(b.p_star[0]) and a.family == b.family[0]
+            assert a.method == b.method[0] and a.n == int(b.n[0])
+
+
+def test_scalar_and_large_batch_agree_to_the_stated_bound(reference):
+    # a batch of more than FEW_POINTS points of one degree takes the batched engine
+    tw = np.linspace(4.0, 4.6, 60)
+    nv = np.full(tw.size, 1.3)
+    batch = critical_load(tw, nv)
+    single = np.array([critical_load(float(a), 1.3) for a in tw])
+    bound = np.finfo(float).eps * (32 + 0.3 * tw**2)  # critical_load's docstring
+    assert np.all(np.abs(single / batch - 1) <= bound)
+    for i in (0, 30, 59):
+        assert abs(single[i] / reference(float(tw[i]), 1.3) - 1) <= 1e-13
+
+
+def test_lean_solver_matches_the_batched_engine():
+    om = np.array([0.3, 2.0, 6.0, 9.0, 15.0])
+    nu = np.array([1.1, 1.5, 1.3, 3.0, 10.0])
+    for n in (24, 40):
+        lam, _, ok = solve_few(n, om, nu, 1e-14)
+        assert ok.all()
+        for f, fam in enumerate(("symmetric", "antisymmetric")):
+            ref, _, _ = solve_family(n, fam, om, nu, rtol=1e-14)
+            assert np.max(np.abs(lam[f] / ref - 1)) <= 2e-14
+
+
+def test_lean_solver_declines_what_it_cannot_certify():
+    # degree 8 at Omega = 30 resolves nothing: either it declines or its value is an eigenvalue
+    # the batched engine finds too; critical_load flags it in any case
+    lam, _, ok = solve_few(8, np.array([30.0]), np.array([1.5]), 1e-14)
+    if ok[0]:
+        ref, _, _ = solve_family(8, "symmetric", np.array([30.0]), np.array([1.5]), rtol=1e-14)
+        assert math.isfinite(lam[0, 0]) and lam[0, 0] > 0 and math.isfinite(ref[0])
+    with pytest.warns(Warning):
+        res = critical_load(30.0, 1.5, n=8, full_output=True)
+    assert not res.converged
+
+
+@pytest.mark.parametrize("tol", [1e-2, 1e-4, 1e-8])
+def test_loose_tolerances_are_met(tol, reference):
+    tw = np.array([0.5, 3.0, 6.2, 9.5])
+    for nu in (1.1, 1.5):
+        res = critical_load(tw, nu, tol=tol, full_output=True)
+        assert res.converged.all()
+        for t, p in zip(tw, res.p_star, strict=True):
+            assert abs(p / reference(float(t), nu) - 1) <= tol
+            assert abs(critical_load(float(t), nu, tol=tol) / reference(float(t), nu) - 1) <= tol
+
+
+def test_one_blas_thread_restores_the_callers_setting():
+    blas = [i for i in threadpool_info() if i["user_api"] == "blas"]
+    if not blas:
+        pytest.skip("no BLAS library visible to threadpoolctl")
+    with threadpool_limits(limits=2, user_api="blas"):
+        before = [i["num_threads"] for i in threadpool_info() if i["user_api"] == "blas"]
+        with one_blas_thread():
+            inside = [i["num_threads"] for i in threadpool_info() if i["user_api"] == "blas"]
+        after = [i["num_threads"] for i in threadpool_info() if i["user_api"] == "blas"]
+    assert set(inside) == {1} and after == before
+
+
+def test_batched_scan_is_the_one_point_scan():
+    # sin(a x) on [0.1, 10]: lowest root pi/a; cos(b x) as a second component: pi/(2b)
+    a, b = np.array([1.0, 2.0, 0.5, 3.0]), np.array([0.3, 0.2, 1.0, 0.25])
+
+    def values(points, grid):
+        return np.stack([np.sin(a[points, None] * grid), np.cos(b[points, None] * grid)], 1)
+
+    def refine(points, k, lo, hi):
+        rate = np.where(k == 0, a[points], b[points])
+        return bracketed_roots(lambda j, x: np.where(k[j] == 0, np.sin(rate[j] * x),
+                                                     np.cos(rate[j] * x)), lo, hi)
+
+    roots, comp = lowest_roots(values, refine, np.full(4, 0.1), np.full(4, 10.0),
+                               np.full(4, 0.05), chunk=17)
+    want = np.minimum(np.pi / a, np.pi / (2 * b))
+    assert np.allclose(roots, want, rtol=4e-16, atol=0)
+    assert comp.tolist() == np.argmin([np.pi / a, np.pi / (2 * b)], axis=0).tolist()
+    for i in range(4):
+        one = lowest_root(lambda g, i=i: [[math.sin(a[i] * x) for x in g],
+                                          [math.cos(b[i] * x) for x in g]],
+                          lambda k, lo, hi, i=i: (math.pi / a[i], math.pi / (2 * b[i]))[k],
+                          0.1, 10.0, 0.05)
+        assert one == (pytest.approx(want[i], rel=1e-15), int(comp[i]))
+
+
+def test_no_root_is_reported_as_such():
+    roots, comp = lowest_roots(lambda p, g: np.ones((p.size, 1, g.shape[1])),
+                               lambda *args: None, np.zeros(2), np.ones(2), np.full(2, 0.1),
+                               chunk=4)
+    assert comp.tolist() == [-1, -1] and np.isnan(roots).all()
+
+
+def test_batched_characteristic_route_against_the_reference(reference):
+    tw = np.array([50.0, 120.0, 640.0, 1000.0])
+    nv = np.array([1.5, 1.0 + 1e-9, 30.0, 4.0])
+    p, fam = characteristic_double_batch(tw, nv)
+    for t, v, pv in zip(tw, nv, p, strict=True):
+        assert abs(pv / reference(float(t), float(v)) - 1) <= 1e-13
+    assert set(fam.tolist()) <= {0, 1}
