@@ -60,7 +60,12 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from spectral_rod._validation import check_nu, check_twist
+from spectral_rod._validation import (
+    check_int,
+    check_real,
+    scalar_nu,
+    scalar_twist,
+)
 from spectral_rod.errors import RootNotFoundError
 from spectral_rod.families import FAMILIES, check_family
 from spectral_rod.sign_scan import bracketed_roots, lowest_root, lowest_roots
@@ -200,6 +205,24 @@ def _closed_form_root(family: str, twist_angle: float, nu: float, dps: int
         return CharacteristicRoot(r, family, xm, xp)
 
 
+#: Allowed ranges of the reference's knobs: working digits, and the scan step in p (below the
+#: default the cost grows, above 1/64 the lowest-root guarantee -- no two roots of one family
+#: within a step -- is no longer backed by the tests' grids).
+DPS_RANGE, SCAN_STEP_RANGE = (15, 200), (1.0e-4, 1.0 / 64)
+
+
+def _reference_args(twist_angle: object, nu: object, dps: object, scan_step: object,
+                    p_max: object, p_floor: float) -> tuple[float, float, int, float, float | None]:
+    """Validated (twist, nu, dps, scan_step, p_max) of the mpmath reference (names in errors)."""
+    om = scalar_twist(twist_angle, max_abs=1e6)
+    nu = scalar_nu(nu, max_value=1e8)
+    dps = check_int(dps, "dps", *DPS_RANGE)
+    scan_step = check_real(scan_step, "scan_step", *SCAN_STEP_RANGE)
+    if p_max is not None:
+        p_max = check_real(p_max, "p_max", p_floor, 1e8, lo_open=True)
+    return om, nu, dps, scan_step, p_max
+
+
 def characteristic_critical_load(twist_angle: float, nu: float, *, dps: int = 40,
                                  scan_step: float = MP_SCAN_STEP,
                                  p_max: float | None = None) -> CharacteristicRoot:
@@ -212,8 +235,8 @@ def characteristic_critical_load(twist_angle: float, nu: float, *, dps: int = 40
     >>> float(characteristic_critical_load(0.0, 1.5).p_star)
     1.0
     """
-    om_f = float(check_twist(twist_angle, max_abs=1e6))
-    nu_f = float(check_nu(nu, max_value=1e8))
+    om_f, nu_f, dps, scan_step, p_max = _reference_args(twist_angle, nu, dps, scan_step, p_max,
+                                                        1.0)
     if nu_f == 1.0 or om_f == 0.0:
         return _closed_form_root("symmetric", om_f, nu_f, dps)
     top = (1 + nu_f) / 2 + 1e-6 if p_max is None else p_max
@@ -234,8 +257,8 @@ def family_critical_load(family: str, twist_angle: float, nu: float, *, dps: int
     twist; both 1 for nu = 1). p* is the smaller of the two families' roots.
     """
     check_family(family)
-    om_f = float(check_twist(twist_angle, max_abs=1e6))
-    nu_f = float(check_nu(nu, max_value=1e8))
+    om_f, nu_f, dps, scan_step, p_max = _reference_args(twist_angle, nu, dps, scan_step, p_max,
+                                                        1.0)
     if nu_f == 1.0 or om_f == 0.0:
         return _closed_form_root(family, om_f, nu_f, dps)
     top = nu_f + 1e-6 if p_max is None else p_max
@@ -302,6 +325,8 @@ def characteristic_determinant(family: str, p_star: float, twist_angle: float, n
     """
     import mpmath as mp
 
-    with mp.workdps(dps):
-        return float(determinant(family, mp.pi**2 * mp.mpf(p_star), mp.mpf(abs(twist_angle)),
-                                 mp.mpf(nu)))
+    check_family(family)
+    p_star = check_real(p_star, "p_star", 0.0, 1e8, lo_open=True)
+    om, nu = abs(scalar_twist(twist_angle, max_abs=1e6)), scalar_nu(nu, max_value=1e8)
+    with mp.workdps(check_int(dps, "dps", *DPS_RANGE)):
+        return float(determinant(family, mp.pi**2 * mp.mpf(p_star), mp.mpf(om), mp.mpf(nu)))

@@ -23,7 +23,13 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from spectral_rod._blas_threads import one_blas_thread
-from spectral_rod._validation import check_nu, check_resolution, check_tol, check_twist
+from spectral_rod._validation import (
+    broadcast_points,
+    check_nu,
+    check_resolution,
+    check_tol,
+    check_twist,
+)
 from spectral_rod.errors import ConvergenceWarning
 from spectral_rod.families import FAMILIES
 from spectral_rod.results import CriticalLoad, as_output
@@ -93,10 +99,20 @@ _MODULES = {"collocation": "spectral_rod.straight_rod",
 assert set(_SOLVERS) == set(ROD_METHODS) == set(_MODULES)
 
 
+#: Points solved together at most: bounds the memory of a large call (the batched engine holds
+#: ~k^2 doubles per point and family; 2^15 points stay below ~300 MB at any degree).
+CHUNK = 1 << 15
+
+
 def solve_points(tw: NDArray[np.float64], nv: NDArray[np.float64], methods: NDArray[np.str_],
                  n: int | None, tol: float) -> PointResults:
-    """Run each method on its points (flat, validated arrays; methods from the router), with
-    small dense linear algebra on one BLAS thread (:mod:`spectral_rod._blas_threads`)."""
+    """Run each method on its points (flat, validated arrays; methods from the router), in
+    chunks of at most :data:`CHUNK` points, with small dense linear algebra on one BLAS thread
+    (:mod:`spectral_rod._blas_threads`)."""
+    if tw.size > CHUNK:
+        parts = [solve_points(tw[i:i + CHUNK], nv[i:i + CHUNK], methods[i:i + CHUNK], n, tol)
+                 for i in range(0, tw.size, CHUNK)]
+        return PointResults(*(np.concatenate(v) for v in zip(*parts, strict=True)))
     p, deg, err = np.empty(tw.size), np.zeros(tw.size, dtype=int), np.empty(tw.size)
     fam = np.empty(tw.size, dtype="<U13")
     names = [str(name) for name in np.unique(methods)]
@@ -218,7 +234,7 @@ def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None
                              f"not to method={method!r}")
     if not isinstance(full_output, (bool, np.bool_)):
         raise TypeError(f"full_output must be True or False, got {type(full_output).__name__}")
-    shape = np.broadcast_shapes(twist.shape, nu_arr.shape)
+    shape = broadcast_points(twist_angle=twist, nu=nu_arr)
     tw = np.abs(np.broadcast_to(twist, shape).ravel())
     nv = np.broadcast_to(nu_arr, shape).ravel()
     res = solve_points(tw, nv, route(tw, nv, n, method), n, tol)

@@ -68,7 +68,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.linalg import cho_factor, cho_solve
 
 from spectral_rod._blas_threads import one_blas_thread
-from spectral_rod._validation import check_nu, check_twist
+from spectral_rod._validation import broadcast_points, check_nu, check_twist
 from spectral_rod.characteristic import characteristic_double_batch
 
 __all__ = ["INCREMENT_MAX_TWIST", "critical_load_increment", "galerkin_increment",
@@ -306,7 +306,7 @@ def critical_load_increment(twist_angle: ArrayLike, nu: ArrayLike):
     """
     twist = check_twist(twist_angle, max_abs=INCREMENT_MAX_TWIST)
     nu_arr = check_nu(nu)
-    shape = np.broadcast_shapes(twist.shape, nu_arr.shape)
+    shape = broadcast_points(twist_angle=twist, nu=nu_arr)
     tw = np.abs(np.broadcast_to(twist, shape).ravel())
     nv = np.broadcast_to(nu_arr, shape).ravel()
     out = np.zeros(tw.size)

@@ -155,7 +155,13 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.linalg import blas, eigh, qr, solve_triangular
 
-from spectral_rod._validation import check_nu, check_resolution, check_tol, check_twist
+from spectral_rod._validation import (
+    broadcast_points,
+    check_nu,
+    check_resolution,
+    check_tol,
+    check_twist,
+)
 from spectral_rod.errors import ConvergenceWarning
 from spectral_rod.families import FAMILIES, check_family
 
@@ -483,7 +489,7 @@ def ritz_critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None =
         family = check_family(family)
     if not isinstance(full_output, (bool, np.bool_)):
         raise TypeError(f"full_output must be True or False, got {type(full_output).__name__}")
-    shape = np.broadcast_shapes(twist.shape, nu_arr.shape)
+    shape = broadcast_points(twist_angle=twist, nu=nu_arr)
     tw = np.broadcast_to(twist, shape).ravel()
     nv = np.broadcast_to(nu_arr, shape).ravel()
     rows = [ritz_point(float(a), float(b), family, tol, n) for a, b in zip(tw, nv, strict=True)]

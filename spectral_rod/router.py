@@ -29,7 +29,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from spectral_rod._validation import check_nu, check_resolution, check_twist
+from spectral_rod._validation import broadcast_points, check_nu, check_resolution, check_twist
 
 __all__ = ["INCREMENT_MAX_TWIST", "NEAR_DEGENERATE", "ROD_METHODS", "TWIST_ROUTE",
            "check_method", "choose_method", "route", "route_point"]
@@ -100,7 +100,7 @@ def choose_method(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None
     twist, nu_arr = check_twist(twist_angle), check_nu(nu)
     if n is not None:
         check_resolution(n)
-    shape = np.broadcast_shapes(twist.shape, nu_arr.shape)
+    shape = broadcast_points(twist_angle=twist, nu=nu_arr)
     out = route(np.broadcast_to(twist, shape).ravel(), np.broadcast_to(nu_arr, shape).ravel(),
                 n, check_method(method)).reshape(shape)
     return str(out) if shape == () else out

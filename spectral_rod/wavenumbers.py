@@ -27,7 +27,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from spectral_rod._validation import check_nu, check_twist, real_array
+from spectral_rod._validation import broadcast_points, check_nu, check_twist, real_array
 
 __all__ = ["beta_difference", "characteristic_roots", "critical_wavenumbers"]
 
@@ -49,8 +49,10 @@ def _loads(p_star: ArrayLike, twist_angle: ArrayLike, nu: ArrayLike
     p = real_array(p_star, "p_star")
     if np.any(p <= 0):
         raise ValueError(f"p_star must be positive, got min {np.min(p):g}")
+    om, nv = np.abs(check_twist(twist_angle)), check_nu(nu)
+    broadcast_points(p_star=p, twist_angle=om, nu=nv)
     lam = np.pi**2 * p
-    return lam, lam / check_nu(nu), np.abs(check_twist(twist_angle))
+    return lam, lam / nv, om
 
 
 def critical_wavenumbers(p_star: ArrayLike, twist_angle: ArrayLike, nu: ArrayLike):

@@ -1,0 +1,133 @@
+"""Issue 15: the cases a reliability reviewer found, one regression test each -- no silent wrong
+answer, no hang, clear errors that name the argument, bounded memory."""
+
+from __future__ import annotations
+
+import math
+import time
+import warnings
+
+import numpy as np
+import pytest
+
+import spectral_rod as sr
+from spectral_rod import ConvergenceWarning
+
+
+def test_forced_coarse_degree_warns_flags_and_stays_in_bounds():
+    # was: 38.008 (true ~1.13, above the bound 1.15), no warning
+    with pytest.warns(ConvergenceWarning, match="not met"):
+        res = sr.critical_load(30.0, 1.3, n=8, full_output=True)
+    assert not res.converged and 1.0 <= res.p_star <= 1.15
+
+
+def test_forced_coarse_degree_mode_is_flagged():
+    # was: p* 851.85 and no flag at all
+    with pytest.warns(ConvergenceWarning):
+        mode = sr.buckling_mode(100.0, 1.3, n=8)
+    assert not mode.converged and 1.0 <= mode.p_star <= 1.15
+
+
+@pytest.mark.parametrize("twist", [50.0, 60.0, 1000.0, 1e4])
+def test_isotropic_rod_never_below_euler(twist):
+    # was: 0.9999999999999998 at 50, 0.9999999999999989 at 60
+    assert sr.critical_load(twist, 1.0) >= 1.0
+
+
+@pytest.mark.parametrize("kwargs, exc", [
+    ({"scan_step": 1e300}, ValueError), ({"scan_step": math.nan}, ValueError),
+    ({"scan_step": 0.0}, ValueError), ({"scan_step": -0.01}, ValueError),
+    ({"scan_step": 1e-300}, ValueError), ({"dps": 0}, ValueError), ({"dps": -5}, ValueError),
+    ({"dps": True}, TypeError), ({"dps": 10**9}, ValueError), ({"dps": "30"}, TypeError),
+    ({"p_max": 0.5}, ValueError),
+])
+@pytest.mark.parametrize("func", ["characteristic_critical_load", "family_critical_load"])
+def test_reference_knobs_are_validated_before_any_work(func, kwargs, exc):
+    # was: a root that is not the lowest (scan_step=1e300), nan, or a hang (12 cases)
+    f = getattr(sr, func)
+    args = ("symmetric", 3.0, 100.0) if func == "family_critical_load" else (3.0, 100.0)
+    t0 = time.perf_counter()
+    with pytest.raises(exc, match=next(iter(kwargs))):
+        f(*args, **kwargs)
+    assert time.perf_counter() - t0 < 1.0
+
+
+def test_closed_forms_refuse_arguments_outside_their_validity():
+    with pytest.raises(ValueError, match=r"\bn\b"):
+        sr.crossing_closed_form(10**8, 1.3)  # was: p* = 0.0
+    with pytest.raises(ValueError, match="twist_angle"):
+        sr.large_twist_expansion(1e-80, 1.3)  # was: -inf
+
+
+@pytest.mark.parametrize("twist", [1000.0, 3000.0, 1e4])
+def test_large_twist_mode_is_the_characteristic_route_and_fast(twist):
+    # was: 118 s at 1000, > 120 s at 3000, 8 GB exhausted at 1e4
+    t0 = time.perf_counter()
+    mode = sr.buckling_mode(twist, 1.3, tol=1e-10)  # 1e-12 is below the route's eps |Omega|
+    assert time.perf_counter() - t0 < 10.0
+    assert mode.method == "characteristic" and mode.converged
+    assert np.all(np.isfinite(mode.omega1)) and abs(mode.x1[-1]) < 1e-12
+
+
+def test_output_grid_size_is_checked_before_the_solve():
+    t0 = time.perf_counter()
+    with pytest.raises(ValueError, match="points"):
+        sr.buckling_mode(5.0, 1.5, points=10**8)
+    assert time.perf_counter() - t0 < 0.5
+    assert sr.buckling_mode(5.0, 1.5, points=np.int64(201)).s.size == 201
+
+
+def test_increment_at_large_twist_is_bounded():
+    # was: 5.5 s a point at (1000, 1.0005)
+    t0 = time.perf_counter()
+    d = sr.critical_load_increment(1000.0, 1.0005)
+    assert time.perf_counter() - t0 < 10.0
+    assert 0 < d < 2.5e-4 * 1.01
+
+
+@pytest.mark.parametrize("call, name", [
+    (lambda: sr.large_twist_limit(np.array([1.5, 2.0])), "nu"),
+    (lambda: sr.imaginary_beta1_window([1.5, 2.0]), "nu"),
+    (lambda: sr.family_crossing(2 * math.pi, 1.5, dps="30"), "dps"),
+    (lambda: sr.family_crossing(2 * math.pi, 1.5, p_guess=True), "p_guess"),
+    (lambda: sr.ring_buckling(2, 1.5, raise_on_failure="no"), "raise_on_failure"),
+    (lambda: sr.ring_buckling(2, 1.5, max_frequency=np.float64(30.0)), "max_frequency"),
+    (lambda: sr.critical_load([1.0, 2.0], [1.1, 1.2, 1.3]), "twist_angle, nu"),
+    (lambda: sr.critical_wavenumbers(1.1, [1.0, 2.0], [1.5, 1.6, 1.7]), "p_star"),
+])
+def test_errors_name_the_argument(call, name):
+    with pytest.raises((ValueError, TypeError), match=name):
+        call()
+
+
+def test_numpy_scalars_are_accepted():
+    # were rejected: points=np.int64(201), tol=np.float32(1e-10)
+    q = sr.ring_critical_load(2, 1.5, tol=np.float32(1e-10))
+    assert q == pytest.approx(sr.ring_critical_load(2, 1.5), rel=1e-9)
+    assert sr.critical_load(np.float32(5.0), np.float64(1.5), tol=np.float32(1e-10)) > 1
+
+
+def test_scalar_and_array_calls_agree_to_the_stated_bound():
+    rng = np.random.default_rng(7)
+    tw, nv = rng.uniform(0, 49, 400), rng.uniform(1.01, 50, 400)
+    arr = sr.critical_load(tw, nv)
+    one = np.array([sr.critical_load(float(a), float(b)) for a, b in zip(tw, nv, strict=True)])
+    bound = np.finfo(float).eps * (32 + 0.3 * tw**2)
+    assert np.all(np.abs(arr - one) / one <= bound)
+    assert sr.critical_load(5.0, 1.5) == sr.critical_load(np.array([5.0]), 1.5)[0]
+
+
+@pytest.mark.slow
+def test_a_million_random_points_stay_within_the_memory_bound():
+    import tracemalloc
+
+    rng = np.random.default_rng(1)
+    tw, nv = rng.uniform(-1e4, 1e4, 10**6), 1 + 10 ** rng.uniform(-8, 4, 10**6)
+    tracemalloc.start()
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ConvergenceWarning)
+        p = sr.critical_load(tw, nv)
+    peak = tracemalloc.get_traced_memory()[1]
+    tracemalloc.stop()
+    assert peak < 500e6, f"peak {peak / 1e6:.0f} MB"
+    assert np.all((p >= 1) & (p <= (1 + nv) / 2))
