@@ -105,7 +105,105 @@ def _ring_q(r: Any, a: dict[str, Any]) -> bool:
     return bool(np.isfinite(r) and r > 0)
 
 
+def _load_ok(r: Any, a: dict[str, Any]) -> bool:
+    p = getattr(r, "p_star", r)
+    return finite(p) and p_in_bounds(p, a["nu"])
+
+
+def _mode_ok(r: Any, a: dict[str, Any]) -> bool:
+    return (p_in_bounds(r.p_star, a["nu"]) and finite(r.omega1) and finite(r.x1)
+            and r.method in sr.ROD_METHODS)
+
+
+#: twist and nu for the solvers: anywhere in the documented ranges, with the boundaries drawn
+SOLVER_TWIST = Arg(st.one_of(st.floats(-1e4, 1e4), st.floats(-60, 60), st.sampled_from(
+    [0.0, 49.999, 50.0, -1e4, 1e4])), NOT_REAL + [(1.5e4, ValueError)])
+SOLVER_NU = Arg(st.one_of(st.floats(1.0, 1e4), st.sampled_from([1.0, 1.0 + 1e-12, 1.001, 1e4]),
+                          st.floats(1.0, 1.01)), NOT_REAL + [(0.5, ValueError), (2e4, ValueError)])
+TOL = real(1e-14, 1e-2, 0.0, 0.5)
+METHOD_AUTO = choice("auto", invalid=NOT_STR)
+ARRAYS = Arg(st.lists(st.floats(0.0, 60.0), min_size=1, max_size=5).map(np.array),
+             [([1.0, NAN], ValueError), (["a"], TypeError)])
+
 SPECS: dict[str, Spec] = {
+    "critical_load": Spec(
+        sr.critical_load,
+        {"twist_angle": SOLVER_TWIST, "nu": SOLVER_NU, "tol": TOL, "method": METHOD_AUTO,
+         "n": optional(integer(8, 512, 7, 1024, even=True)), "full_output": boolean()},
+        _load_ok, positional=("twist_angle", "nu")),
+    "critical_load_arrays": Spec(
+        sr.critical_load, {"twist_angle": ARRAYS, "nu": real(1.0, 100.0, 0.5), "tol": TOL},
+        _load_ok, positional=("twist_angle", "nu")),
+    "critical_load_forced": Spec(
+        sr.critical_load,
+        {"twist_angle": real(-100.0, 100.0), "nu": real(1.0, 100.0, 0.5), "tol": TOL,
+         "method": choice("collocation", "characteristic", "ritz")},
+        _load_ok, positional=("twist_angle", "nu")),
+    "buckling_mode": Spec(
+        sr.buckling_mode,
+        {"twist_angle": SOLVER_TWIST, "nu": SOLVER_NU, "tol": TOL,
+         "points": integer(2, 2001, 1, 10**8)},
+        _mode_ok, positional=("twist_angle", "nu")),
+    "choose_method": Spec(sr.choose_method, {"twist_angle": SOLVER_TWIST, "nu": SOLVER_NU},
+                          lambda r, a: r in sr.ROD_METHODS, positional=("twist_angle", "nu")),
+    "critical_load_increment": Spec(
+        sr.critical_load_increment,
+        {"twist_angle": real(-100.0, 100.0, 2e3), "nu": Arg(
+            st.floats(1.0, 1.001), NOT_REAL + [(0.9, ValueError)])},
+        lambda r, a: math.isfinite(r) and 0 <= r <= (a["nu"] - 1) / 2 * (1 + 1e-12),
+        positional=("twist_angle", "nu")),
+    "ritz_critical_load": Spec(
+        sr.ritz_critical_load,
+        {"twist_angle": real(-100.0, 100.0, 2e3), "nu": real(1.0, 100.0, 0.5), "tol": TOL,
+         "family": optional(choice("symmetric", "antisymmetric"))},
+        lambda r, a: finite(r) and r >= 1 - 1e-13, positional=("twist_angle", "nu")),
+    "characteristic_critical_load": Spec(
+        sr.characteristic_critical_load,
+        {"twist_angle": real(-1e3, 1e3, 2e6), "nu": real(1.0, 1e3, 0.5),
+         "dps": integer(15, 40, 0, 10**9), "scan_step": real(1e-3, 1.0 / 64, 0.0, 1e300)},
+        lambda r, a: p_in_bounds(float(r.p_star), a["nu"]), positional=("twist_angle", "nu")),
+    "family_critical_load": Spec(
+        sr.family_critical_load,
+        {"family": choice("symmetric", "antisymmetric"), "twist_angle": real(-50.0, 50.0),
+         "nu": real(1.0, 20.0, 0.5), "dps": integer(15, 30, 14)},
+        lambda r, a: 1 - 1e-12 <= float(r.p_star) <= a["nu"] + 1e-9,
+        positional=("family", "twist_angle", "nu")),
+    "characteristic_determinant": Spec(
+        sr.characteristic_determinant,
+        {"family": choice("symmetric", "antisymmetric"), "p_star": real(0.5, 10.0, 0.0),
+         "twist_angle": real(-100.0, 100.0), "nu": real(1.0, 100.0, 0.5)},
+        lambda r, a: math.isfinite(r), positional=("family", "p_star", "twist_angle", "nu")),
+    "critical_wavenumbers": Spec(
+        sr.critical_wavenumbers,
+        {"p_star": real(1.0, 2.0, 0.0, -1.0), "twist_angle": real(-100.0, 100.0),
+         "nu": real(1.0, 100.0, 0.5)},
+        lambda r, a: np.isfinite(abs(r[0])) and np.isfinite(r[1]),
+        positional=("p_star", "twist_angle", "nu")),
+    "beta_difference": Spec(
+        sr.beta_difference,
+        {"p_star": real(1.0, 2.0, 0.0), "twist_angle": real(-100.0, 100.0),
+         "nu": real(1.0, 100.0, 0.5)},
+        lambda r, a: np.isfinite(r), positional=("p_star", "twist_angle", "nu")),
+    "collocation_mode_coefficients": Spec(
+        sr.collocation_mode_coefficients,
+        {"twist_angle": real(-40.0, 40.0, 2e4), "nu": real(1.0, 100.0, 0.5),
+         "n": integer(8, 64, 7, 1025, even=True),
+         "family": choice("symmetric", "antisymmetric")},
+        lambda r, a: finite(r[0]) and finite(r[1]),
+        positional=("twist_angle", "nu", "n", "family")),
+    "tail_for_tolerance": Spec(sr.tail_for_tolerance, {"tol": TOL}, lambda r, a: r > 0,
+                               positional=("tol",)),
+    "family_crossing": Spec(
+        sr.family_crossing,
+        {"twist_guess": real(6.0, 30.0, 0.0, -1.0, 2e3), "nu": real(1.05, 5.0, 0.5)},
+        lambda r, a: math.isfinite(float(r.twist)), faults=(sr.RootNotFoundError,),
+        positional=("twist_guess", "nu")),
+    "collocation_crossing": Spec(
+        sr.collocation_crossing,
+        {"twist_guess": real(6.0, 30.0, 0.0, 500.0), "nu": real(1.05, 5.0, 0.5),
+         "half_width": real(0.05, 0.3, 0.0, 5.0)},
+        lambda r, a: math.isfinite(r.twist), faults=(sr.RootNotFoundError,),
+        positional=("twist_guess", "nu")),
     "large_twist_limit": Spec(sr.large_twist_limit, {"nu": NU},
                               lambda r, a: 1 <= r < 2, positional=("nu",)),
     "large_twist_coefficients": Spec(sr.large_twist_coefficients, {"nu": NU},

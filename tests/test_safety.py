@@ -122,7 +122,7 @@ def test_a_million_random_points_stay_within_the_memory_bound():
     import tracemalloc
 
     rng = np.random.default_rng(1)
-    tw, nv = rng.uniform(-1e4, 1e4, 10**6), 1 + 10 ** rng.uniform(-8, 4, 10**6)
+    tw, nv = rng.uniform(-1e4, 1e4, 10**6), np.minimum(1 + 10 ** rng.uniform(-8, 4, 10**6), 1e4)
     tracemalloc.start()
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ConvergenceWarning)

@@ -15,7 +15,8 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
-from spectral_rod.families import FAMILIES
+from spectral_rod._validation import check_resolution, scalar_nu, scalar_twist
+from spectral_rod.families import FAMILIES, check_family
 from spectral_rod.straight_rod.discretisation import family_operator
 from spectral_rod.straight_rod.eigensolver import POWER_RTOL, physical_eig, solve_family
 from spectral_rod.straight_rod.few_points import solve_few
@@ -139,7 +140,8 @@ def collocation_mode_coefficients(twist_angle: float, nu: float, n: int, family:
     """Chebyshev coefficients (in x = 2 s - 1) of (omega1, omega2) of the family's lowest mode at
     degree n, from the full ``eig`` (an exact eigenvector of the discrete pencil), for
     Omega(L) >= 0 (the mode of -Omega is the mirror image, omega2 -> -omega2)."""
-    op = family_operator(n, family)
-    a, b = op.pencil(abs(float(twist_angle)), float(nu))
+    om, nu = abs(scalar_twist(twist_angle)), scalar_nu(nu)
+    op = family_operator(check_resolution(n, minimum=N_MIN, maximum=N_MAX), check_family(family))
+    a, b = op.pencil(om, nu)
     _, vec = physical_eig(np.linalg.solve(a, b)[None])
     return op.split(vec[0])

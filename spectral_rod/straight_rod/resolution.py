@@ -101,7 +101,9 @@ def error_estimate(tail_value: ArrayLike, twist_angle: ArrayLike) -> NDArray[np.
 def tail_for_tolerance(tol: float) -> float:
     """The coefficient tail at which the linear branch of :func:`error_estimate` equals `tol`
     (tol / ERR_LINEAR): the level a resolved mode's coefficients must have decayed to."""
-    return tol / ERR_LINEAR
+    from spectral_rod._validation import check_tol
+
+    return check_tol(tol) / ERR_LINEAR
 
 
 def roundoff_floor(twist_angle: ArrayLike) -> NDArray[np.float64]:
