@@ -100,8 +100,10 @@ assert set(_SOLVERS) == set(ROD_METHODS) == set(_MODULES)
 
 
 #: Points solved together at most: bounds the memory of a large call (the batched engine holds
-#: ~k^2 doubles per point and family; 2^15 points stay below ~300 MB at any degree).
-CHUNK = 1 << 15
+#: ~k^2 doubles per point and family, the large-twist scan ~20 grid columns of 257 doubles per
+#: point; with 2^12 points a call of 10^6 random points peaks at a few hundred MB, measured by
+#: tests/test_safety.py, where 2^15 took 680 MB).
+CHUNK = 1 << 12
 
 
 def solve_points(tw: NDArray[np.float64], nv: NDArray[np.float64], methods: NDArray[np.str_],

@@ -129,5 +129,6 @@ def test_a_million_random_points_stay_within_the_memory_bound():
         p = sr.critical_load(tw, nv)
     peak = tracemalloc.get_traced_memory()[1]
     tracemalloc.stop()
+    print(f"10^6 random points: traced peak {peak / 1e6:.0f} MB")
     assert peak < 500e6, f"peak {peak / 1e6:.0f} MB"
     assert np.all((p >= 1) & (p <= (1 + nv) / 2))
