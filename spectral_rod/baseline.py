@@ -16,7 +16,14 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
-from spectral_rod._validation import check_int, scalar_nu, scalar_twist
+from spectral_rod._validation import (
+    broadcast_points,
+    check_int,
+    check_nu,
+    check_twist,
+    scalar_nu,
+    scalar_twist,
+)
 
 
 def cheb(n: int) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
@@ -46,6 +53,9 @@ def baseline_critical_load(twist_angle: float, nu: float, n: int = 24) -> float:
 
 
 def baseline_sweep(twist: NDArray[np.float64], nu: NDArray[np.float64]) -> NDArray[np.float64]:
-    """The baseline at every point, one after the other."""
-    return np.array([baseline_critical_load(float(t), float(v))
-                     for t, v in zip(twist, nu, strict=True)])
+    """The baseline at every point (broadcast arrays), one after the other."""
+    tw, nv = check_twist(twist, "twist"), check_nu(nu)
+    shape = broadcast_points(twist=tw, nu=nv)
+    return np.array([baseline_critical_load(float(t), float(v)) for t, v in
+                     zip(np.broadcast_to(tw, shape).ravel(), np.broadcast_to(nv, shape).ravel(),
+                         strict=True)]).reshape(shape)

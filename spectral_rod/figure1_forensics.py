@@ -61,6 +61,7 @@ import pandas as pd
 from numpy.typing import NDArray
 from scipy.optimize import brentq, linprog
 
+from spectral_rod._validation import real_array
 from spectral_rod.asymptotics import crossing_closed_form, imaginary_beta1_window
 from spectral_rod.characteristic import combine_determinant, determinants
 from spectral_rod.critical import critical_load
@@ -142,6 +143,8 @@ def picture_environment(tex: str) -> str:
 
     Example: ``picture_environment(open(paper).read()).count(r"\circle*") == 1201``.
     """
+    if not isinstance(tex, str):
+        raise TypeError(f"tex must be the LaTeX source as a str, got {type(tex).__name__}")
     lines = tex.splitlines(keepends=True)
     begin = next((i for i, ln in enumerate(lines) if r"\begin{picture}" in ln), None)
     end = next((i for i, ln in enumerate(lines) if r"\end{picture}" in ln), None)
@@ -172,7 +175,7 @@ def picture_lines(tex: str) -> pd.DataFrame:
         rows.append((curve, k + 1, x, y, text.endswith(" "), k > 0 and not env[k - 1].strip(),
                      text.rstrip(" ") == PUT_FORMAT % (x, y), text))
     if curve != len(FIGURE1_NU):
-        raise ValueError(f"expected {len(FIGURE1_NU)} curves in the picture, found {curve}")
+        raise ValueError(f"tex: expected {len(FIGURE1_NU)} curves in the picture, found {curve}")
     return pd.DataFrame(rows, columns=["curve", "line", "picture_x", "picture_y",
                                        "trailing_blank", "after_blank_line", "fixed_format",
                                        "text"])
@@ -1282,6 +1285,19 @@ def analyse_figure1(points: pd.DataFrame, lines: pd.DataFrame | None = None, *,
     p* at the points (default: ``p_star_fn``); p_star_fn(twist, nu): the converged p* anywhere
     (default ``critical_load(..., tol=1e-12)``), used at missing grid points and shifted twists.
     """
+    need = {"curve", "nu", "picture_x", "picture_y", "twist_angle", "p_star"}
+    if not isinstance(points, pd.DataFrame) or not need <= set(points.columns):
+        raise TypeError(f"points must be the DataFrame of load_figure1() (columns {sorted(need)}), "
+                        f"got {type(points).__name__}")
+    if lines is not None and not isinstance(lines, pd.DataFrame):
+        raise TypeError(f"lines must be None or picture_lines(...), got {type(lines).__name__}")
+    if p_true is not None:
+        p_true = real_array(p_true, "p_true")
+        if p_true.shape != (len(points),):
+            raise ValueError(f"p_true must have one value per point ({len(points)}), got shape "
+                             f"{p_true.shape}")
+    if p_star_fn is not None and not callable(p_star_fn):
+        raise TypeError(f"p_star_fn must be callable, got {type(p_star_fn).__name__}")
     p_star_fn = p_star_fn or _default_p_star
     pts = points.reset_index(drop=True).rename(columns={"p_star": "p_digitised"})
     t, nu, y = (pts[c].to_numpy() for c in ("twist_angle", "nu", "picture_y"))

@@ -15,6 +15,7 @@ a new curve starts where x falls back to the left edge. Curves 1, 2, 3 are nu = 
 from __future__ import annotations
 
 import json
+import os
 import re
 from functools import cache
 from importlib import resources
@@ -177,6 +178,8 @@ def load_figure1(path: str | Path | None = None) -> pd.DataFrame:
     >>> len(df), sorted(df["nu"].unique().tolist())
     (1201, [1.1, 1.3, 1.5])
     """
+    if path is not None and not isinstance(path, (str, os.PathLike)):
+        raise TypeError(f"path must be None, a str or a path, got {type(path).__name__}")
     path = figure1_path() if path is None else Path(path)
     num = _numeric(_read_table(path), path)
     _check_consistency(num, path)

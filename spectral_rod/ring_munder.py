@@ -671,7 +671,12 @@ AGREEMENT_CASES: tuple[tuple[int, float, float, str], ...] = (
 
 def _case(c: Mapping[str, object] | tuple) -> tuple[object, object, object, object]:
     if isinstance(c, Mapping):
+        if "N" not in c or "nu" not in c:
+            raise ValueError(f"cases: a dict case needs keys 'N' and 'nu', got {sorted(c)}")
         return c["N"], c["nu"], c.get("e_ratio", 1.0), c.get("load", "hydrostatic")
+    if not isinstance(c, (tuple, list)) or not 2 <= len(c) <= 4:
+        raise TypeError(f"cases: each case must be (N, nu[, e_ratio[, load]]) or a dict, got "
+                        f"{c!r}")
     N, nu, *rest = c
     return N, nu, rest[0] if rest else 1.0, rest[1] if len(rest) > 1 else "hydrostatic"
 
@@ -689,8 +694,14 @@ def ring_formulation_agreement(cases: Iterable[Mapping[str, object] | tuple] = A
     from spectral_rod.ring_stability import ring_buckling
 
     rows = []
-    for c in cases:
+    tol = _check_tol(tol)
+    for i, c in enumerate(cases):
         N, nu, e, ld = _case(c)
+        try:  # validate the case before any solve; errors say which case
+            check_twist_count(N, maximum=MAX_TWIST), check_scalar_nu(nu)
+            check_e_ratio(e), check_load(ld)
+        except (ValueError, TypeError) as exc:
+            raise type(exc)(f"cases[{i}]: {exc}") from None
         t0 = time.perf_counter()
         ref = ring_buckling(N, nu, e_ratio=e, load=ld)
         t1 = time.perf_counter()
