@@ -121,7 +121,8 @@ def _mode_ok(r: Any, a: dict[str, Any]) -> bool:
 SOLVER_TWIST = Arg(st.one_of(st.floats(-1e4, 1e4), st.floats(-60, 60), st.sampled_from(
     [0.0, 49.999, 50.0, -1e4, 1e4])), [*NOT_REAL, (15000.0, ValueError)])
 SOLVER_NU = Arg(st.one_of(st.floats(1.0, 1e4), st.sampled_from([1.0, 1.0 + 1e-12, 1.001, 1e4]),
-                          st.floats(1.0, 1.01)), [*NOT_REAL, (0.5, ValueError), (20000.0, ValueError)])
+                          st.floats(1.0, 1.01)),
+                [*NOT_REAL, (0.5, ValueError), (20000.0, ValueError)])
 TOL = real(1e-14, 1e-2, 0.0, 0.5)
 METHOD_AUTO = choice("auto", invalid=NOT_STR)
 ARRAYS = Arg(st.lists(st.floats(0.0, 60.0), min_size=1, max_size=5).map(np.array),
