@@ -46,6 +46,8 @@ __all__ = ["MAX_POINTS", "buckling_mode"]
 
 #: Largest output grid of :func:`buckling_mode`.
 MAX_POINTS = 100_000
+#: Points of the fixed grid the mode's scale (max |omega| = 1) is taken on, besides the output's.
+SCALE_POINTS = 257
 
 
 def _check_points(points: object) -> int:
@@ -130,11 +132,15 @@ def buckling_mode(twist_angle: float, nu: float, *, n: int | None = None, tol: f
     warn_unconverged("buckling_mode", converged, res, tw, nv, tol)
     p, fam, how, deg = float(res.p_star[0]), str(res.family[0]), str(res.method[0]), int(res.n[0])
     s = np.linspace(0.0, 1.0, npts)
+    # the scale comes from a fixed fine grid as well, so that a coarse output grid (even just
+    # the two hinges, where omega = 0) is normalised like any other
+    both_s = np.concatenate([s, np.linspace(0.0, 1.0, SCALE_POINTS)])
     if how == "collocation":
-        w1, w2, x1, x2 = _collocation_fields(twist, nu_f, deg, fam, s)
+        fields = _collocation_fields(twist, nu_f, deg, fam, both_s)
     else:
-        w1, w2, x1, x2 = _closed_form_fields(twist, nu_f, p, fam, s)
-    both = np.concatenate([w1, w2])
+        fields = _closed_form_fields(twist, nu_f, p, fam, both_s)
+    w1, w2, x1, x2 = (f[:npts] for f in fields)
+    both = np.concatenate([fields[0], fields[1]])
     scale = both[np.argmax(np.abs(both))]  # max |omega| = 1, the largest entry positive
     beta1, beta2 = critical_wavenumbers(p, twist, nu_f)
     return BucklingMode(s=s, omega1=w1 / scale, omega2=w2 / scale, x1=x1 / scale, x2=x2 / scale,

@@ -230,8 +230,8 @@ SPECS: dict[str, Spec] = {
                                    positional=("nu",)),
     "crossing_closed_form": Spec(sr.crossing_closed_form,
                                  {"n": integer(2, 10_000, 1, 10**8), "nu": NU},
-                                 lambda r, a: finite([r.twist, r.p_star]) and r.p_star >= 1 - 1e-9
-                                 and r.p_star <= (1 + a["nu"]) / 2, positional=("n", "nu")),
+                                 lambda r, a: finite([r.twist, r.p_star])
+                                 and p_in_bounds(r.p_star, a["nu"]), positional=("n", "nu")),
     "crossing_twist_asymptotic": Spec(sr.crossing_twist_asymptotic,
                                       {"n": integer(2, 10_000, 1), "nu": NU},
                                       lambda r, a: math.isfinite(r), positional=("n", "nu")),

@@ -132,3 +132,11 @@ def test_a_million_random_points_stay_within_the_memory_bound():
     print(f"10^6 random points: traced peak {peak / 1e6:.0f} MB")
     assert peak < 500e6, f"peak {peak / 1e6:.0f} MB"
     assert np.all((p >= 1) & (p <= (1 + nv) / 2))
+
+
+def test_a_two_point_mode_grid_is_normalised():
+    # found by the fuzz suite: points=2 gave the two hinges only (omega = 0), scale 0 -> NaN
+    m = sr.buckling_mode(0.0, 2.0, points=2)
+    assert np.all(np.isfinite(m.omega1)) and np.all(np.isfinite(m.x1))
+    fine = sr.buckling_mode(0.0, 2.0)
+    assert m.x1 == pytest.approx(fine.x1[[0, -1]], abs=1e-14)
