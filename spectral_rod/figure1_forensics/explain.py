@@ -1,0 +1,405 @@
+"""Per-site physics and the explanation of each cluster and missing grid point: computed
+causes (window, double root in one step, scan failure, edited lines) and value rules
+(straight line, flanking value, lattice point).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+from numpy.typing import NDArray
+from scipy.optimize import linprog
+
+from spectral_rod.asymptotics import crossing_closed_form, imaginary_beta1_window
+from spectral_rod.critical import critical_load
+from spectral_rod.figure1_forensics.physics import family_loads, twist_ranges, wavenumbers_squared
+from spectral_rod.figure1_forensics.picture import PRINT_QUANTUM, X_PER_TWIST, Y_PER_P
+from spectral_rod.figure1_forensics.quantisation import (
+    VARIABLES,
+    Hypothesis,
+    _y_of_p,
+    printed,
+    quantise,
+    reproduced,
+)
+from spectral_rod.figure1_forensics.runs import chord_values
+
+
+def _default_p_star(twist: NDArray, nu: NDArray) -> NDArray:
+    """The converged p* (collocation to 1e-12, the package's production route)."""
+    return np.asarray(critical_load(twist, nu, tol=1e-12), dtype=float)
+
+
+def _same_step(p_a: NDArray, p_b: NDArray, twist: NDArray, nu: NDArray, variable: str,
+               step: float) -> NDArray[np.bool_]:
+    """Both loads in one lattice step (k step, (k+1) step] of `variable`: a double sign change."""
+    var = VARIABLES[variable]
+    ka = np.ceil(var.forward(p_a, twist, nu) / step)
+    kb = np.ceil(var.forward(p_b, twist, nu) / step)
+    return np.isfinite(ka) & (ka == kb)
+
+
+def site_physics(sites: pd.DataFrame, runs: dict[str, Hypothesis]) -> pd.DataFrame:
+    """Add the computed physics of every site (data point or missing grid point).
+
+    Columns added: x_minus (beta_1^2 L^2 at p*), imaginary_beta1 (x_minus < 0), in_window
+    (closed-form window), p_sym, p_anti (each family's lowest root), and for each run r in
+    `runs` ('low', 'high'): r_double_root (both roots in one step of the run's lattice),
+    r_root_below_start (the root lies below v = 0, where a coefficient scan starts).
+    """
+    t, nu, p = (sites[c].to_numpy() for c in ("twist_angle", "nu", "p_true"))
+    out = sites.copy()
+    out["x_minus"] = wavenumbers_squared(p, t, nu)[0]
+    out["imaginary_beta1"] = out["x_minus"] < 0
+    out["in_window"] = twist_ranges(t, nu) == "window"
+    out["p_sym"], out["p_anti"] = family_loads(t, nu)
+    gap = np.abs(np.fmin(out["p_sym"], out["p_anti"]) - p)
+    if not (gap < 1e-9).all():  # two independent routes to p* must agree
+        raise RuntimeError(f"family loads disagree with p_true at {(~(gap < 1e-9)).sum()} "
+                           f"sites (max {np.nanmax(gap):.1e})")
+    for r, h in runs.items():
+        out[f"{r}_double_root"] = _same_step(out["p_sym"].to_numpy(), out["p_anti"].to_numpy(),
+                                             t, nu, h.variable, h.step)
+        out[f"{r}_root_below_start"] = VARIABLES[h.variable].forward(p, t, nu) < 0
+    return out
+
+
+def _flanks(curve_rows: pd.DataFrame, first: int, last: int, ok: NDArray[np.bool_]
+            ) -> tuple[pd.Series | None, pd.Series | None]:
+    """The nearest reproduced points before `first` and after `last` (positions in curve_rows)."""
+    before = [i for i in range(first - 1, -1, -1) if ok[i]]
+    after = [i for i in range(last + 1, len(curve_rows)) if ok[i]]
+    return (curve_rows.iloc[before[0]] if before else None,
+            curve_rows.iloc[after[0]] if after else None)
+
+
+def _lower_end_rule(rows: pd.DataFrame, runs: dict[str, Hypothesis]) -> NDArray[np.bool_]:
+    """Printed value = the lattice point just below the step holding both family roots."""
+    t, nu, y = (rows[c].to_numpy() for c in ("twist_angle", "nu", "picture_y"))
+    lo = np.fmin(rows["p_sym"].to_numpy(), rows["p_anti"].to_numpy())
+    out = np.zeros(len(rows), dtype=bool)
+    for r, h in runs.items():
+        sel = (rows["run"] == r).to_numpy() & rows[f"{r}_double_root"].to_numpy()
+        var = VARIABLES[h.variable]
+        below = quantise(var.forward(lo, t, nu), h.step, "ceil") - h.step
+        out |= sel & reproduced(_y_of_p(var.inverse(below, t, nu)), y)
+    return out
+
+
+@dataclass(frozen=True)
+class LineFit:
+    """A straight line y = a + b x through a cluster and its flanks, to the print quantum.
+
+    on_line: cluster points within half a print quantum of the line (printed values a rounding
+    of it); the flanks are always kept; residual: the largest |line - y| over the kept points.
+    """
+
+    a: float
+    b: float
+    residual: float
+    on_line: NDArray[np.bool_]
+
+
+def _minimax_line(x: NDArray, y: NDArray) -> tuple[float, float, float]:
+    """(a, b, e): the line minimising max |a + b x - y| (a linear programme)."""
+    ones = np.ones_like(x)
+    a_ub = np.vstack([np.column_stack([ones, x, -ones]), np.column_stack([-ones, -x, -ones])])
+    res = linprog([0.0, 0.0, 1.0], A_ub=a_ub, b_ub=np.concatenate([y, -y]),
+                  bounds=[(None, None)] * 3, method="highs")
+    if not res.success:  # pragma: no cover - the programme is always feasible
+        raise RuntimeError(f"minimax line fit failed: {res.message}")
+    return float(res.x[0]), float(res.x[1]), float(res.x[2])
+
+
+def straight_line(x: NDArray, y: NDArray, flank_x: NDArray, flank_y: NDArray,
+                  tol: float = PRINT_QUANTUM / 2) -> LineFit:
+    """Is the cluster a straight line between its flanks, up to rounding?
+
+    The minimax line through the cluster points and the two flanks; while its residual exceeds
+    ``tol`` (+1e-9) the cluster point farthest from the chord between the flanks (computed,
+    trusted points) is set aside as a slip and the line refitted. Example: x = [1, 2,
+    3], y = [1.0, 2.5, 3.0], flanks (0, 0), (4, 4) -> on_line = [True, False, True].
+    """
+    x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
+    chord = chord_values(x, (flank_x[0], flank_y[0]), (flank_x[-1], flank_y[-1]))
+    keep = np.ones(x.size, dtype=bool)
+    while True:
+        a, b, e = _minimax_line(np.concatenate([x[keep], flank_x]),
+                                np.concatenate([y[keep], flank_y]))
+        if e <= tol + 1e-9 or keep.sum() == 0:
+            return LineFit(a, b, e, keep)
+        keep[int(np.argmax(np.where(keep, np.abs(y - chord), -1.0)))] = False
+
+
+def value_rules(rows: pd.DataFrame, left: pd.Series | None, right: pd.Series | None,
+                runs: dict[str, Hypothesis]) -> tuple[dict[str, NDArray[np.bool_]], LineFit | None]:
+    """Which printed values of a cluster follow a rule, and the straight-line fit.
+
+    Rules: 'straight line' (:func:`straight_line` between the flanking reproduced points),
+    'flank value' (equal to a flanking printed value), 'lower end of the shared step' (the
+    lattice point just below the step holding both family roots).
+    """
+    y = rows["picture_y"].to_numpy()
+    rules: dict[str, NDArray[np.bool_]] = {}
+    fit = None
+    flanks = [f for f in (left, right) if f is not None]
+    if len(flanks) == 2:
+        fit = straight_line(rows["picture_x"].to_numpy(), y,
+                            np.array([f["picture_x"] for f in flanks]),
+                            np.array([f["picture_y"] for f in flanks]))
+        rules["straight line"] = fit.on_line
+    rules["flank value"] = np.isin(printed(y), printed(np.array([f["picture_y"]
+                                                                 for f in flanks])))
+    rules["lower end of the shared step"] = _lower_end_rule(rows, runs)
+    return rules, fit
+
+
+def point_causes(rows: pd.DataFrame) -> dict[str, NDArray[np.bool_]]:
+    """Computed reasons why the covering run's procedure fails at each row.
+
+    'imaginary beta_1': X_- < 0 at p* *and* inside the closed-form window (both computations
+    must agree); 'double root in one step': both family roots in one step of the run's lattice;
+    'no sign change': the run's real-wavenumber scan finds none; 'edited line': the LaTeX line
+    lacks the program's trailing blank (if the LaTeX lines were given).
+    """
+    causes = {"imaginary beta_1": (rows["imaginary_beta1"] & rows["in_window"]).to_numpy(),
+              "double root in one step": rows["double_root"].to_numpy(dtype=bool),
+              "no sign change": ~rows["scan_found"].to_numpy(dtype=bool)}
+    if "edited" in rows:
+        causes["edited line"] = rows["edited"].to_numpy(dtype=bool)
+    return causes
+
+
+def _twists(rows: pd.DataFrame, mask: NDArray[np.bool_]) -> list[float]:
+    return [round(float(v), 6) for v in rows["twist_angle"].to_numpy()[mask]]
+
+
+def _nearest_crossing(nu: float, t0: float, t1: float) -> dict:
+    """The family crossing (corner maximum) nearest the interval [t0, t1], closed form."""
+    cands = [crossing_closed_form(n, nu) for n in range(2, 2 + max(2, math.ceil(t1 / math.pi)))]
+    c = min(cands, key=lambda c: max(t0 - c.twist, c.twist - t1, 0.0))
+    dist = max(t0 - c.twist, c.twist - t1, 0.0)
+    return {"n": c.n, "twist": c.twist, "p_star": c.p_star, "distance": dist,
+            "inside": bool(dist == 0.0)}
+
+
+def _cause_sentences(rows: pd.DataFrame, causes: dict[str, NDArray[np.bool_]],
+                     runs: dict[str, Hypothesis], nu: float) -> list[str]:
+    """The computed causes of a cluster (or missing point) in words, every number from rows."""
+    n, out = len(rows), []
+    t0, t1 = float(rows["twist_angle"].min()), float(rows["twist_angle"].max())
+    im = causes["imaginary beta_1"]
+    if im.any():
+        w = imaginary_beta1_window(nu)
+        out.append(f"β₁ is imaginary (X₋ < 0 at p*) at {im.sum()} of {n}: the closed-form window "
+                   f"for ν = {nu} is {w.omega_a:.4f} < Ω(L) < {w.omega_b:.4f} "
+                   f"(asymptotics.imaginary_beta1_window)"
+                   + (f"; outside it: Ω = {_twists(rows, ~im)}" if (~im).any() else ""))
+        if "low" in runs and rows["low_root_below_start"].any():
+            var = VARIABLES[runs["low"].variable]
+            out.append(f"the low-twist run scans {var.name} ({var.description}) upward from 0,"
+                       f" and the root lies below that start ({var.name} < 0 at p*) at "
+                       f"{int(rows['low_root_below_start'].sum())} of {n}")
+    dr = causes["double root in one step"]
+    if dr.any():
+        run = rows["run"].to_numpy()[dr][0]
+        h = runs[run]
+        c = _nearest_crossing(nu, t0, t1)
+        where = "inside the cluster" if c["inside"] else f"{c['distance']:.3f} away"
+        out.append(f"both families' lowest roots lie in one step of the {run}-twist lattice "
+                   f"({h.variable} = k·{h.step:g}) at {dr.sum()} of {n} (Ω = "
+                   f"{_twists(rows, dr)[0]:.3f}…{_twists(rows, dr)[-1]:.3f}), so D_sym·D_anti "
+                   f"(the 4x4 determinant / 16Ω²) changes sign twice within one step; the family"
+                   f" crossing Ω_{c['n']} = {c['twist']:.4f} (p* = {c['p_star']:.6f}, "
+                   f"crossing_closed_form) is {where}")
+    ns = causes["no sign change"]
+    if ns.any():
+        run = rows["run"].to_numpy()[ns][0]
+        out.append(f"the {run}-twist run's simulated scan ({runs[run].variable} = k·"
+                   f"{runs[run].step:g}, real wavenumbers) finds no sign change below "
+                   f"p = (1 + ν)/2 at {ns.sum()} of {n}")
+    return out
+
+
+def _value_sentences(rows: pd.DataFrame, rules: dict[str, NDArray[np.bool_]],
+                     fit: LineFit | None, left: pd.Series | None, right: pd.Series | None
+                     ) -> list[str]:
+    """What was printed instead of the procedure's value, in words."""
+    n, out = len(rows), []
+    x, y = rows["picture_x"].to_numpy(), rows["picture_y"].to_numpy()
+    on_line = fit is not None and fit.on_line.sum() > n / 2
+    if on_line:
+        shape = ("a horizontal line" if abs(fit.b) < 1e-9 else
+                 f"a straight line (slope {fit.b * X_PER_TWIST:.3f} per rad)")
+        s = (f"{shape} through the flanking computed points (x, y) = "
+             f"({left['picture_x']:.2f}, {left['picture_y']:.2f}) and "
+             f"({right['picture_x']:.2f}, {right['picture_y']:.2f}) reproduces "
+             f"{fit.on_line.sum()} of {n} to the print quantum (largest residual "
+             f"{abs(fit.residual):.4f})")
+        for i in np.flatnonzero(~fit.on_line):
+            line_y = fit.a + fit.b * x[i]
+            s += (f"; x = {x[i]:.2f} is printed {y[i]:.2f} where the line gives {line_y:.3f} "
+                  f"({(y[i] - line_y) / PRINT_QUANTUM:+.1f} quanta: an isolated slip)")
+        out.append(s)
+    low, flat = rules["lower end of the shared step"], rules["flank value"]
+    if low.any():
+        out.append(f"{low.sum()} of {n} are the lattice point just below the step holding both "
+                   f"roots")
+    if flat.any() and not on_line:
+        vals = sorted({f"{f['picture_y']:.2f}" for f in (left, right) if f is not None})
+        out.append(f"{flat.sum()} of {n} equal a flanking printed value ({', '.join(vals)})")
+    rest = np.zeros(n, dtype=bool) if on_line else ~(low | flat)
+    if rest.any():
+        out.append("matched by no value rule: " + ", ".join(
+            f"x = {r['picture_x']:.2f} printed {r['picture_y']:.2f} (p* gives "
+            f"{Y_PER_P * (r['p_true'] - 1):.3f})" for _, r in rows[rest].iterrows()))
+    return out
+
+
+def _latex_sentence(rows: pd.DataFrame, with_blank: int | None,
+                    off_runs: list[dict] | None = None) -> str | None:
+    """The LaTeX facts of a cluster's lines; with_blank: how many lines of the whole picture
+    end in the trailing blank (the program's format); off_runs: :func:`off_grid_runs` of the
+    curve."""
+    if "edited" not in rows:
+        return None
+    n, h = len(rows), int(rows["edited"].sum())
+    first, last = int(rows["line"].iloc[0]), int(rows["line"].iloc[-1])
+    s = (f"LaTeX (picture lines {first}–{last}): {h} of {n} lines lack the trailing blank "
+         f"that {with_blank} of the picture's lines end in (inserted separately from the "
+         f"scan program's output)")
+    blank = rows["after_blank_line"].to_numpy(dtype=bool)
+    if blank[0]:
+        s += "; a blank line precedes the block"
+    if blank[1:].any():
+        s += "; blank lines inside it before x = " + ", ".join(
+            f"{v:.2f}" for v in rows["picture_x"].to_numpy()[1:][blank[1:]])
+    off = int(rows["off_grid"].sum())
+    x0, x1 = rows["picture_x"].min(), rows["picture_x"].max()
+    for r in off_runs or []:
+        if off and r["first"] <= x1 and r["last"] >= x0:
+            s += (f"; {off} x values are off the regular grid: the picture's {r['count']} "
+                  f"off-grid x ({r['first']:.2f}…{r['last']:.2f}) divide {r['left']:.2f}…"
+                  f"{r['right']:.2f} into {r['count'] + 1} equal steps of {r['spacing']:.4f} "
+                  f"(to {r['max_deviation']:.4f})")
+    return s
+
+
+def _uncaused_sentence(rows: pd.DataFrame, causes: dict[str, NDArray[np.bool_]],
+                       runs: dict[str, Hypothesis]) -> str | None:
+    """Points where no computed failure applies: what each run's procedure would print."""
+    none = ~(causes["imaginary beta_1"] | causes["double root in one step"]
+             | causes["no sign change"])
+    if not none.any():
+        return None
+    items = []
+    for _, r in rows[none].iterrows():
+        got = ", ".join(f"{k}-twist scan {r[f'{k}_scan_y']:.2f}" for k in runs
+                        if np.isfinite(r[f"{k}_scan_y"]))
+        items.append(f"Ω = {r['twist_angle']:.3f}: printed {r['picture_y']:.2f}, {got}")
+    return ("The procedure does not fail at " + "; ".join(items)
+            + " -- these values were replaced together with their neighbours.")
+
+
+def _cluster_kind(causes: dict[str, NDArray[np.bool_]]) -> str:
+    if causes["imaginary beta_1"].any():
+        return "imaginary-beta1 window"
+    if causes["double root in one step"].any():
+        return "double root in one scan step"
+    if causes["no sign change"].any():
+        return "no sign change"
+    return "edited lines" if causes.get("edited line", np.zeros(1, bool)).any() else "unexplained"
+
+
+def explain_cluster(rows: pd.DataFrame, left: pd.Series | None, right: pd.Series | None,
+                    runs: dict[str, Hypothesis], with_blank: int | None = None,
+                    off_runs: list[dict] | None = None) -> dict:
+    """The cluster record: where, how big, and why, from the rows' computed columns.
+
+    rows: the cluster's data sites (columns of :func:`site_physics` and :func:`_run_scans`,
+    plus run, double_root, scan_found, ok, p_digitised and the LaTeX columns if known);
+    left/right: the flanking reproduced points; with_blank: lines of the picture in the
+    program's format, off_runs: the curve's :func:`off_grid_runs` (both for the text).
+    'explained' is True iff every point has a computed cause or is an edited line;
+    'window_points' lists only points inside the window.
+    """
+    nu = float(rows["nu"].iloc[0])
+    causes = point_causes(rows)
+    rules, fit = value_rules(rows, left, right, runs)
+    covered = np.logical_or.reduce(list(causes.values()))
+    dev = np.abs(rows["p_digitised"] - rows["p_true"]).to_numpy()
+    physics = [v for k, v in causes.items() if k != "edited line"]
+    parts = [f"ν = {nu}, Ω(L) = {rows['twist_angle'].min():.3f}…"
+             f"{rows['twist_angle'].max():.3f}: {len(rows)} points, "
+             f"{int((~rows['ok']).sum())} not reproduced by the best model, "
+             f"max |digitised − p*| = {dev.max():.2e}.",
+             ("Cause: " + "; ".join(_cause_sentences(rows, causes, runs, nu)) + ".")
+             if np.logical_or.reduce(physics).any() else "No computed failure of the procedure."]
+    values = _value_sentences(rows, rules, fit, left, right)
+    if values:
+        parts.append("Printed instead: " + "; ".join(values) + ".")
+    for extra in (_uncaused_sentence(rows, causes, runs),
+                  _latex_sentence(rows, with_blank, off_runs)):
+        if extra:
+            parts.append(extra if extra.endswith(".") else extra + ".")
+    return {"nu": nu, "twist_from": float(rows["twist_angle"].min()),
+            "twist_to": float(rows["twist_angle"].max()), "points": len(rows),
+            "not_reproduced": int((~rows["ok"]).sum()),
+            "max_abs_deviation": float(dev.max()), "kind": _cluster_kind(causes),
+            "explanation": " ".join(parts), "explained": bool(covered.all()),
+            "window_points": _twists(rows, causes["imaginary beta_1"]),
+            "double_root_points": _twists(rows, causes["double root in one step"]),
+            "no_sign_change_points": _twists(rows, causes["no sign change"]),
+            "edited_points": (_twists(rows, causes["edited line"])
+                                  if "edited line" in causes else None),
+            "crossing": (_nearest_crossing(nu, float(rows["twist_angle"].min()),
+                                           float(rows["twist_angle"].max()))
+                         if causes["double root in one step"].any() else None),
+            "value_rules": {k: int(v.sum()) for k, v in rules.items()},
+            "line": (None if fit is None else
+                     {"a": fit.a, "b": fit.b, "residual": fit.residual,
+                      "off_line": _twists(rows, ~fit.on_line)}),
+            "twists": _twists(rows, np.ones(len(rows), dtype=bool))}
+
+
+def explain_missing(row: pd.Series, sites: pd.DataFrame, runs: dict[str, Hypothesis]) -> dict:
+    """Why a regular grid point is absent: its computed causes, and the same twist elsewhere.
+
+    row: the missing site (columns of :func:`site_physics`); sites: all sites (for the other
+    curves at the same twist and for off-grid points of the same curve nearby).
+    """
+    nu, t = float(row["nu"]), float(row["twist_angle"])
+    one = row.to_frame().T.reset_index(drop=True)
+    for c in ("imaginary_beta1", "in_window", "double_root", "scan_found"):
+        one[c] = one[c].astype(bool)
+    causes = point_causes(one.assign(edited=False))
+    parts = _cause_sentences(one, causes, runs, nu)
+    p_s, p_a = float(row["p_sym"]), float(row["p_anti"])
+    text = (f"ν = {nu}, Ω(L) = {t:.3f} (x = {row['picture_x']:.2f}) is absent from the picture. "
+            f"p* = {row['p_true']:.7f} (p_sym = {p_s:.7f}, p_anti = {p_a:.7f}). ")
+    text += ("Cause: " + "; ".join(parts) + ". ") if parts else "No computed cause. "
+    same = sites[(np.abs(sites["twist_angle"] - t) < 1e-9) & (sites["nu"] != nu)
+                 & sites["in_data"]]
+    for _, o in same.iterrows() if causes["double root in one step"].any() else ():
+        text += (f"At ν = {o['nu']} the same twist is present and "
+                 f"{'reproduced' if o['ok'] else 'not reproduced'} by the best model (its roots "
+                 f"p_sym = {o['p_sym']:.7f}, p_anti = {o['p_anti']:.7f} lie "
+                 f"{'in one step' if o['double_root'] else 'in different steps'}). ")
+    off = sites[(sites["curve"] == row["curve"]) & sites["in_data"] & sites["off_grid"]
+                & (np.abs(sites["twist_angle"] - t) < 0.25)]
+    if len(off):
+        text += (f"The picture has {len(off)} off-grid points of this curve within 0.25 rad "
+                 f"(x = {off['picture_x'].min():.2f}…{off['picture_x'].max():.2f}) instead.")
+    else:
+        text += "No line was written for it (no inserted substitute)."
+    return {"nu": nu, "twist_angle": t, "picture_x": float(row["picture_x"]),
+            "explanation": text.strip(),
+            "causes": [k for k, v in causes.items() if v.any() and k != "edited line"],
+            "crossing": (_nearest_crossing(nu, t, t) if causes["double root in one step"].any()
+                         else None),
+            "explained": bool(any(v.any() for k, v in causes.items() if k != "edited line"))}
+
+
