@@ -81,3 +81,40 @@ def test_increment_at_twist_1000():
     for e in (1e-8, 1e-4):
         ref = ref_increment(1000.0, 1 + e, dps=50)
         assert abs(critical_load_increment(1000.0, 1 + e) / ref - 1) <= 1e-9
+
+
+@pytest.mark.parametrize("twist", [0.3, 2 * math.pi, 17.77, 49.0, 300.0])
+def test_closed_form_moments_equal_the_quadrature(twist):
+    # the batched route's closed forms (sinc sums) against the Gauss-Legendre quadrature of the
+    # same integrals: two independent evaluations of every omega2 moment
+    from spectral_rod.increment import _moments_closed, _moments_dense, bucket
+
+    n, q = bucket(twist)
+    om = np.array([twist, 0.5 * twist])
+    a, b = _moments_dense(om, n, q), _moments_closed(om, n, q)
+    # 1e-13 of the largest entry: at Omega = 300 the quadrature (q ~ 1.6 N + Omega/2 + 40 points)
+    # is itself ~5e-14 off in the highest modes' entries, whose integrands oscillate fastest
+    for i in range(om.size):
+        scale = np.abs(a.g22(i)).max()
+        assert np.abs(a.g22(i) - b.g22(i)).max() <= 1e-13 * scale
+        assert np.abs(a.g21[i] - b.g21[i]).max() <= 1e-13 * scale
+        assert np.abs(a.g11[i] - b.g11[i]).max() <= 1e-14
+    y = np.random.default_rng(1).standard_normal((om.size, a.dense.shape[1], 2))
+    assert np.abs(a.g22_times(y) - b.g22_times(y)).max() <= 1e-13 * np.abs(a.g22_times(y)).max()
+
+
+def test_a_point_does_not_depend_on_the_other_points_of_the_call():
+    # stacks iterate until their slowest point converges; a finished point must keep its value,
+    # so on one route (here the closed forms: > DENSE_POINTS points share each bucket) a point's
+    # result is the same to the last bit whatever else is in the call
+    from spectral_rod.increment import DENSE_POINTS, bucket, galerkin_increments
+
+    rng = np.random.default_rng(3)
+    tw, nu = rng.uniform(20.0, 23.0, 40), 1.0 + 10.0 ** rng.uniform(-8.0, -3.0, 40)
+    assert len({bucket(t) for t in tw}) == 1 and tw.size // 2 > DENSE_POINTS
+    whole = galerkin_increments(tw, nu)[0]
+    np.testing.assert_array_equal(whole[::2], galerkin_increments(tw[::2], nu[::2])[0])
+    np.testing.assert_array_equal(whole[::-1], galerkin_increments(tw[::-1], nu[::-1])[0])
+    # a point alone takes the few-point route (quadrature moments): equal to rounding
+    alone = np.array([galerkin_increments(tw[i:i + 1], nu[i:i + 1])[0][0] for i in range(9)])
+    assert np.max(np.abs(alone / whole[:9] - 1)) <= 1e-13

@@ -43,7 +43,7 @@ FLOORS = {
     "figure1 batch": 8.0, "figure1 per curve": 6.0, "batches of 100": 4.5,
     "batches of 10": 2.5, "scalar loop": 2.0, "brentq search": 2.0,
     "map collocation part": 3.0, "map all points": 3.0, "large twist": 20.0,
-    "near-degenerate": 10.0,
+    "near-degenerate": 20.0,
 }
 TOL = 1e-12
 

@@ -5,6 +5,7 @@ issue 14 (commit 5beb5ca), condensed to what they ran. Not part of the library.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Sequence
 from typing import Any
 
@@ -16,11 +17,9 @@ from scipy.optimize import brentq
 from spectral_rod.characteristic import DOUBLE_SCAN_STEP, SCAN_START, determinants
 from spectral_rod.increment import (
     _MAX_NEWTON,
-    _min_eig2,
     _second_derivatives,
     _tails,
     basis_size,
-    mode_family,
 )
 
 _EPS = float(np.finfo(float).eps)
@@ -124,19 +123,35 @@ def pre_change_increment(twist_angle: float, nu: float, n: int | None = None
         return e * g11 - e * e * (g21.T @ y), cf
 
     t0, _ = schur(0.0)
-    d, v = _min_eig2(t0)
+    d, v = _min_eig2_scalar(t0)
     for _ in range(_MAX_NEWTON):
         try:
             t, cf = schur(d)
         except np.linalg.LinAlgError:  # pragma: no cover - d beyond the complement's spectrum
             d *= 0.5
             continue
-        lmin, v = _min_eig2(t)
+        lmin, v = _min_eig2_scalar(t)
         r = cho_solve(cf, g21 @ v)
         step = (lmin - d) / (-e * e * float(r @ r) - 1.0)
         d_new = d - step
         if abs(d_new - d) <= 4e-16 * abs(d_new):
-            return d_new, mode_family(v, om)
+            return d_new, _mode_family_scalar(v, om)
         d = d_new
-    return d, mode_family(v, om)
+    return d, _mode_family_scalar(v, om)
 
+
+def _min_eig2_scalar(t: np.ndarray) -> tuple[float, np.ndarray]:
+    """The pre-change scalar 2x2 kernel (the library's is batched now)."""
+    a, b, c = t[0, 0], t[0, 1], t[1, 1]
+    lmax = 0.5 * (a + c + math.hypot(a - c, 2 * b))
+    lmin = (a * c - b * b) / lmax if lmax > 0 else 0.0
+    v1, v2 = np.array([c - lmin, -b]), np.array([-b, a - lmin])
+    v = v1 if np.linalg.norm(v1) >= np.linalg.norm(v2) else v2
+    nv = np.linalg.norm(v)
+    return lmin, (v / nv if nv > 0 else np.array([1.0, 0.0]))
+
+
+def _mode_family_scalar(c1: np.ndarray, twist_angle: float) -> str:
+    """The pre-change scalar parity test (the library's is batched now)."""
+    ang = math.atan2(c1[1], c1[0]) - twist_angle / 2
+    return "symmetric" if abs(math.cos(ang)) >= abs(math.sin(ang)) else "antisymmetric"
