@@ -98,7 +98,7 @@ def test_closed_form_moments_equal_the_quadrature(twist):
         scale = np.abs(a.g22(i)).max()
         assert np.abs(a.g22(i) - b.g22(i)).max() <= 1e-13 * scale
         assert np.abs(a.g21[i] - b.g21[i]).max() <= 1e-13 * scale
-        assert np.abs(a.g11[i] - b.g11[i]).max() <= 1e-14
+        assert np.abs(a.g11[i] - b.g11[i]).max() <= 1e-13  # entries ~0.5
     y = np.random.default_rng(1).standard_normal((om.size, a.dense.shape[1], 2))
     assert np.abs(a.g22_times(y) - b.g22_times(y)).max() <= 1e-13 * np.abs(a.g22_times(y)).max()
 
