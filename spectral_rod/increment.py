@@ -41,17 +41,20 @@ boundary tails sum_{k>N} (+-1)^k sin(k pi s)/k^5 (closed form: Bernoulli polynom
 partial sum). The true mode's sine coefficients decay like k^-5 (its odd extension has a
 jump in z''''), which alone would limit the error to O(N^-5); the tails absorb that jump and
 the error falls to the rounding floor with N ~ 2 |Omega|/pi + 48. The omega2 moments between
-sines are closed forms (sums of sinc, :func:`_sine_moments`); those of the tails use
-Gauss-Legendre quadrature (all integrands entire, sin(Omega s) evaluated directly); for a few
-points the whole moment matrix is taken from the quadrature (fewer numpy calls). Points are
+sines in the complement block are closed forms (sums of sinc, :func:`_sine_moments`); the
+critical mode's moments and the tails' use Gauss-Legendre quadrature
+(:func:`spectral_rod.quadrature.gauss_legendre`; all integrands entire, sin(Omega s) evaluated
+directly); for a few points the whole moment matrix is taken from the quadrature (fewer numpy
+calls). Points are
 solved in stacks that share N (:func:`bucket`), all at once (:func:`galerkin_increments`): a
 point's result is the same whatever else is in its stack, and differs between the few-point
 and the stacked route by rounding only (<= 1e-13 relative, tested).
 
 Where p* - 1 >= 1e-3 the increment is not small and p* - 1 from the characteristic
-equation in double precision (:func:`spectral_rod.characteristic.characteristic_double`, measured
-within 1-2 ulp of p* for Omega in [1e-3, 1e4], nu in [1.001, 1e4]) has relative accuracy
-<= 1e-12; there (and only there) it is used, which also covers the large-twist /
+equation in double precision (:func:`spectral_rod.characteristic.characteristic_double`, whose
+p* is within its error estimate ~eps |Omega| of the mpmath reference) keeps its relative
+accuracy to ~eps |Omega| / 1e-3 (measured: <= 1.9e-11 at Omega(L) = 999); there (and only
+there) it is used, which also covers the large-twist /
 strong-anisotropy corner where the sine basis converges slowly. (Points with nu - 1 <= 1e-3
 always take the Galerkin route: p* - 1 <= (nu - 1)/2 there.)
 
@@ -70,20 +73,19 @@ from functools import lru_cache
 import numpy as np
 from numpy.lib.stride_tricks import sliding_window_view
 from numpy.polynomial import polynomial as P
-from numpy.polynomial.legendre import leggauss
 from numpy.typing import ArrayLike, NDArray
 from scipy.linalg import cho_factor, cho_solve
 
 from spectral_rod._blas_threads import one_blas_thread
 from spectral_rod._validation import broadcast_points, check_nu, check_twist
 from spectral_rod.characteristic import characteristic_double_batch
+from spectral_rod.quadrature import gauss_legendre_unit
 
-__all__ = ["INCREMENT_MAX_TWIST", "critical_load_increment", "galerkin_increment",
-           "galerkin_increment_family", "galerkin_increments"]
+__all__ = ["INCREMENT_MAX_TWIST", "critical_load_increment", "galerkin_increments"]
 
 #: |Omega(L)| limit of :func:`critical_load_increment` (the basis needs N ~ 2|Omega|/pi + 48).
 INCREMENT_MAX_TWIST = 1.0e3
-#: Above this gain p* - 1 is taken from critical_load (relative error <= ~1e-12 there).
+#: Above this gain p* - 1 is taken from the double-precision characteristic equation.
 DIRECT_THRESHOLD = 1.0e-3
 _MAX_NEWTON = 60
 #: Up to this nu - 1 the complement is solved by a fixed-point iteration (see
@@ -108,25 +110,17 @@ def tail_polynomial(shift: int) -> NDArray[np.float64]:
     return np.array([float(c) * factor for c in out])
 
 
-@lru_cache(maxsize=128)
-def gauss_legendre(q: int) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """Gauss-Legendre nodes and weights of order q on s in [0, 1] (numpy's leggauss, which
-    solves an eigenproblem: 59-72 % of a point's cost when it was recomputed per point)."""
-    x, w = leggauss(q)
-    return (x + 1) / 2, w / 2
-
-
 def basis_size(twist_angle: float) -> int:
-    """Sine modes per field: N = max(32, ceil(2 |Omega|/pi) + 48) (validated, see module)."""
-    return max(32, math.ceil(2 * abs(twist_angle) / math.pi) + 48)
+    """Sine modes per field a point needs: N = ceil(2 |Omega|/pi) + 48 (validated, see module)."""
+    return math.ceil(2 * abs(twist_angle) / math.pi) + 48
 
 
 def _second_derivatives(s: NDArray[np.float64], n: int
                         ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
     """phi'' / pi at the nodes for the M-normalised complement basis and the critical mode.
 
-    Returns (critical (q,), sines k = 2..n (q, n-1), tails (q, 2)) with int phi'^2 = 1 for
-    every column (the two tails M-orthonormalised), and the tails' W/pi^2 matrix via the caller.
+    Returns (critical mode (q,), sines k = 2..n (q, n - 1), sin(k pi s) for k = 1..n (q, n), the
+    tails' input); every column has int phi'^2 = 1.
     """
     k = np.arange(1, n + 1)
     kp = np.pi * k
@@ -175,12 +169,12 @@ def _min_eig2(t: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.f
 
 
 @lru_cache(maxsize=128)
-def _galerkin_basis(n: int, q: int) -> tuple[NDArray[np.float64], ...]:
-    """Everything of the formulation that does not depend on Omega or nu, per (n, q): nodes s,
-    sqrt(weights), the complement's W block (both fields), phi''/pi of the critical mode and of
-    the complement (sines, then tails) at the nodes, and H0 = int a a^T over the complement and
-    then the critical mode (:func:`_moments`). Cached: 30 % of a point's cost."""
-    s, w = gauss_legendre(q)
+def _galerkin_basis(n: int) -> tuple[NDArray[np.float64], ...]:
+    """Everything of the formulation that depends on neither Omega nor nu, per N = n: nodes s
+    and weights w of the quadrature (order :func:`quadrature_order`), the complement's W block
+    (both fields), phi''/pi of the critical mode and of the complement (sines, then tails) at
+    the nodes, and H0 = int a a^T over the complement (:func:`_moments_closed`)."""
+    s, w = gauss_legendre_unit(quadrature_order(n))
     crit, sines, sin_ks = _second_derivatives(s, n)
     tails, w_tail = _tails(s, w, sin_ks, n)
     m1 = sines.shape[1]
@@ -191,14 +185,11 @@ def _galerkin_basis(n: int, q: int) -> tuple[NDArray[np.float64], ...]:
     w22[:m1 + 2, :m1 + 2] = wblock
     w22[m1 + 2:, m1 + 2:] = wblock
     comp = np.concatenate([sines, tails], axis=1)
-    both = np.concatenate([comp, crit[:, None]], axis=1)
-    h0 = both.T @ (w[:, None] * both)
-    # between sines, int a_j a_k = j^2 delta_jk exactly (the closed forms of _sine_moments)
+    h0 = comp.T @ (w[:, None] * comp)
+    # between sines, int a_j a_k = j^2 delta_jk exactly (as the closed forms of _sine_moments)
     j = np.arange(2, n + 1)
     h0[:n - 1, :n - 1] = np.diag(j * j.astype(float))
-    h0[-1, :n - 1] = h0[:n - 1, -1] = 0.0
-    h0[-1, -1] = 1.0
-    return s, np.sqrt(w), w22, crit, comp, h0
+    return s, w, w22, crit, comp, h0
 
 
 def mode_family(c1: NDArray[np.float64], twist_angle: ArrayLike) -> NDArray[np.str_]:
@@ -214,46 +205,32 @@ def mode_family(c1: NDArray[np.float64], twist_angle: ArrayLike) -> NDArray[np.s
 
 
 #: Points are solved together in buckets of this many sine modes: N rounded up to a multiple
-#: of it (more modes than :func:`basis_size` asks, never fewer), and the quadrature order of the
-#: bucket's largest twist, so that a point's result does not depend on the other points of
+#: of it (more modes than :func:`basis_size` asks, never fewer), with the quadrature order of
+#: the bucket's largest twist, so that a point's result does not depend on the other points of
 #: the call. Measured (1,000 points, Omega(L) in [0, 50), nu - 1 in [1e-8, 1e-3]): the same
 #: p* - 1 as per-point sizes to <= 3e-15 relative.
 BUCKET = 8
-#: Points per stack are limited so that one stack's G22 and products hold <= this many numbers
-#: (4e6: 32 MB).
+#: Points per stack are limited so that one stack's moments hold <= this many numbers (24 MB).
 STACK_ELEMENTS = 3_000_000
 
 
-def bucket(twist_angle: float) -> tuple[int, int]:
-    """(sine modes N, Gauss-Legendre order q) used for a point of twist |Omega| (see BUCKET)."""
-    n = BUCKET * math.ceil(basis_size(twist_angle) / BUCKET)
-    om_max = max(0.0, (n - 48) * math.pi / 2)  # the largest |Omega| with basis_size <= n
-    return n, int(1.6 * n + 0.5 * max(om_max, abs(twist_angle)) + 40)
+def bucket(twist_angle: float) -> int:
+    """Sine modes N used for a point of twist |Omega| (see BUCKET)."""
+    return BUCKET * math.ceil(basis_size(twist_angle) / BUCKET)
 
 
-def galerkin_increment(twist_angle: float, nu: float, n: int | None = None) -> float:
-    """p* - 1 from the lab-frame Schur-complement formulation (module docstring), one point.
-
-    twist_angle = Omega(L) (any sign), nu = I2/I1 >= 1; n sine modes per field (default: the
-    bucket of :func:`basis_size`). Exact zero at nu = 1 or Omega = 0.
-    """
-    return galerkin_increment_family(twist_angle, nu, n)[0]
+def quadrature_order(n: int) -> int:
+    """Gauss-Legendre order for N = n sine modes: 1.6 N + |Omega|/2 + 40 at the largest
+    |Omega| whose :func:`basis_size` is <= N, (N - 48) pi/2 (the integrands' frequencies grow
+    with N and |Omega|; validated with the module's grid)."""
+    return int(1.6 * n + 0.5 * max(0.0, (n - 48) * math.pi / 2) + 40)
 
 
-def galerkin_increment_family(twist_angle: float, nu: float, n: int | None = None
-                              ) -> tuple[float, str]:
-    """(p* - 1, mode family) from the Schur-complement formulation; see galerkin_increment."""
-    om = abs(float(twist_angle))
-    size = None if n is None else (int(n), int(1.6 * int(n) + 0.5 * om + 40))
-    d, fam, _ = galerkin_increments(np.array([om]), np.array([float(nu)]), size=size)
-    return float(d[0]), str(fam[0])
-
-
-def galerkin_increments(twist: NDArray[np.float64], nu: NDArray[np.float64],
-                        size: tuple[int, int] | None = None
+def galerkin_increments(twist: NDArray[np.float64], nu: NDArray[np.float64]
                         ) -> tuple[NDArray[np.float64], NDArray[np.str_], NDArray[np.int_]]:
-    """(p* - 1, mode family, sine modes N) at flat arrays of points, all points of a bucket
-    (:func:`bucket`; or the given (N, q) for all) solved together.
+    """(p* - 1, mode family, sine modes N) at flat arrays of points (any sign of the twist,
+    nu >= 1; exact zero at nu = 1 or Omega = 0), the points of a bucket (:func:`bucket`) solved
+    together.
 
     >>> d, fam, n = galerkin_increments(np.array([1.0, 30.0]), np.array([1.0 + 1e-6, 1.001]))
     >>> [f"{x:.6e}" for x in d], fam.tolist(), n.tolist()
@@ -262,37 +239,33 @@ def galerkin_increments(twist: NDArray[np.float64], nu: NDArray[np.float64],
     om, e = np.abs(twist), nu - 1.0
     d = np.zeros(om.size)
     fam = np.full(om.size, "symmetric", dtype="<U13")
-    sizes = (np.array([bucket(float(a)) for a in om]) if size is None
-             else np.tile(np.array(size), (om.size, 1))).reshape(om.size, 2)
+    sizes = BUCKET * np.ceil((np.ceil(2 * om / np.pi) + 48) / BUCKET).astype(int)  # bucket()
     live = (om > 0) & (e > 0)
-    key = sizes[:, 0] * (1 << 24) + sizes[:, 1]  # one integer per (N, q)
-    for k in np.unique(key[live]):
-        n, q = int(k) >> 24, int(k) & ((1 << 24) - 1)
-        sel = np.flatnonzero(live & (key == k))
+    for n in np.unique(sizes[live]).tolist():
+        sel = np.flatnonzero(live & (sizes == n))
         sel = sel[np.argsort(e[sel], kind="stable")]  # similar contraction: fewer sweeps a stack
-        m = 2 * n + 1  # complement functions per point, both fields
-        per = max(1, STACK_ELEMENTS // (m * m + q * m))  # memory bound of one stack
+        m = 2 * (n + 1)  # complement functions per point, both fields
+        per = max(1, STACK_ELEMENTS // (m * m + quadrature_order(n) * m))
         for i in range(0, sel.size, per):
             part = sel[i:i + per]
-            d[part], fam[part] = _bucket_increments(om[part], e[part], n, q)
-    return d, fam, sizes[:, 0].astype(int)
+            d[part], fam[part] = _bucket_increments(om[part], e[part], n)
+    return d, fam, sizes
 
 
-def _bucket_increments(om: NDArray[np.float64], e: NDArray[np.float64], n: int, q: int
+def _bucket_increments(om: NDArray[np.float64], e: NDArray[np.float64], n: int
                        ) -> tuple[NDArray[np.float64], NDArray[np.str_]]:
-    """The increments of points sharing (N, q): the moments, then Newton on
-    delta = lambda_min(T(delta)) with the fixed-point solves (Cholesky where they do not apply)."""
-    mom = _moments(om, n, q)
-    w22 = _galerkin_basis(n, q)[2]
+    """The increments of points sharing N (ordered by nu - 1): the moments, then Newton on
+    delta = lambda_min(T(delta)) with the fixed-point solves, Cholesky where those do not
+    apply (nu - 1 > FIXED_POINT_MAX_E: the last points of the stack) or fail."""
+    mom = _moments(om, n)
+    w22 = _galerkin_basis(n)[2]
     d = np.empty(om.size)
     v = np.empty((om.size, 2))
-    small = e <= FIXED_POINT_MAX_E
-    fixed = np.flatnonzero(small)
-    found = _newton_fixed_point(e[fixed], mom if fixed.size == om.size else mom.take(fixed),
-                                w22)
-    d[fixed], v[fixed] = found[0], found[1]
-    small[fixed] = found[2]
-    for i in np.flatnonzero(~small):
+    k = int(np.searchsorted(e, FIXED_POINT_MAX_E, side="right"))  # e ascending
+    ok = np.zeros(om.size, dtype=bool)
+    if k:
+        d[:k], v[:k], ok[:k] = _newton_fixed_point(e[:k], mom.head(k), w22)
+    for i in np.flatnonzero(~ok):
         d[i], v[i] = _newton_cholesky(e[i], mom.g11[i], mom.g21[i], mom.g22(i), w22)
     return d, mode_family(v, om)
 
@@ -302,7 +275,8 @@ class _Moments:
     """The omega2 moments of a stack of points (see :func:`_moments`): g11 (P, 2, 2) of the
     critical mode, g21 (P, 2m, 2) complement x critical mode, and G22 (P, 2m, 2m) held as its
     pieces: 2 G22 = [[H0 - HC, -HS], [-HS, H0 + HC]] on the complement (m functions a field),
-    H0 (m, m) shared, HC and HS (P, m, m). Products with G22 read HC and HS only (half of G22)."""
+    H0 (m, m) shared, HC and HS (P, m, m) -- or, for a few points, G22 itself (``dense``).
+    Products with G22 then read HC and HS only (half of G22)."""
 
     g11: NDArray[np.float64]
     g21: NDArray[np.float64]
@@ -311,10 +285,11 @@ class _Moments:
     hs: NDArray[np.float64] | None = None
     dense: NDArray[np.float64] | None = None  # G22 itself (few points, :func:`_moments_dense`)
 
-    def take(self, idx: NDArray[np.int_]) -> _Moments:
+    def head(self, k: int) -> _Moments:
+        """The first k points (views)."""
         if self.dense is not None:
-            return _Moments(self.g11[idx], self.g21[idx], dense=self.dense[idx])
-        return _Moments(self.g11[idx], self.g21[idx], self.h0, self.hc[idx], self.hs[idx])
+            return _Moments(self.g11[:k], self.g21[:k], dense=self.dense[:k])
+        return _Moments(self.g11[:k], self.g21[:k], self.h0, self.hc[:k], self.hs[:k])
 
     def g22_times(self, y: NDArray[np.float64]) -> NDArray[np.float64]:
         """G22 y for y (P, 2m, c)."""
@@ -346,81 +321,84 @@ class _Moments:
 DENSE_POINTS = 4
 
 
-def _moments(om: NDArray[np.float64], n: int, q: int) -> _Moments:
+def _moments(om: NDArray[np.float64], n: int) -> _Moments:
     """The moments of a stack (:func:`_moments_dense` for at most DENSE_POINTS points, else
     :func:`_moments_closed`; the two agree to <= 1e-13 of the largest entry,
     tests/test_increment.py)."""
-    return (_moments_dense if om.size <= DENSE_POINTS else _moments_closed)(om, n, q)
+    return (_moments_dense if om.size <= DENSE_POINTS else _moments_closed)(om, n)
 
 
-def _moments_dense(om: NDArray[np.float64], n: int, q: int) -> _Moments:
+def _moments_dense(om: NDArray[np.float64], n: int) -> _Moments:
     """G = int f f^T by the Gauss-Legendre quadrature of the basis, f = (-sin(Omega s) a,
     cos(Omega s) a) over the critical mode and the complement (x1 then x2 of each)."""
-    s, sqrt_w, _, crit, comp, _ = _galerkin_basis(n, q)
-    so, co = np.sin(np.outer(om, s)) * sqrt_w, np.cos(np.outer(om, s)) * sqrt_w
+    s, w, _, crit, comp, _ = _galerkin_basis(n)
+    r = np.sqrt(w)
+    so, co = np.sin(np.outer(om, s)) * r, np.cos(np.outer(om, s)) * r
     f = np.concatenate([-(crit * so)[:, :, None], (crit * co)[:, :, None],
                         -comp * so[:, :, None], comp * co[:, :, None]], axis=2)
     g = np.swapaxes(f, 1, 2) @ f
     return _Moments(g[:, :2, :2], g[:, 2:, :2], dense=g[:, 2:, 2:])
 
 
-def _moments_closed(om: NDArray[np.float64], n: int, q: int) -> _Moments:
-    """The moments G = int f f^T of omega2 = cos(Omega s) x2'' - sin(Omega s) x1'' over the
+def _moments_closed(om: NDArray[np.float64], n: int) -> _Moments:
+    """The moments G = int f f^T of omega2 = cos(Omega s) x2'' - sin(Omega s) x1'', f over the
     critical mode and the complement, per point.
 
-    With a_k = phi_k''/pi = -sqrt(2) k sin(k pi s) (k = 1 the critical mode) and the two tails,
-    every moment is a combination of H0 = int a a^T, HC = int a a^T cos(2 Omega s) and
-    HS = int a a^T sin(2 Omega s) (sin^2 = (1 - cos 2x)/2, cos^2 = (1 + cos 2x)/2,
-    sin cos = sin(2x)/2). Between two sines these are closed forms (:func:`_sine_moments`);
-    only the tails' rows use the quadrature.
+    The critical mode's moments (g11, g21) set the leading order of p* - 1 and are taken from
+    the quadrature with sin(Omega s) and cos(Omega s) themselves: written with cos(2 Omega s)
+    they would be 1 - cos(2 Omega s) ~ Omega^2, cancelling at small twist (measured: -2e-3
+    relative error of p* - 1 at Omega(L) = 1e-6). G22 enters only as (nu - 1) G22 beside
+    W22 >= 3, so absolute accuracy is enough there: with a_k = phi_k''/pi and the tails,
+    2 G22 = [[H0 - HC, -HS], [-HS, H0 + HC]], HC = int a a^T cos(2 Omega s),
+    HS = int a a^T sin(2 Omega s), closed forms between sines (:func:`_sine_moments`) and the
+    quadrature in the tails' rows.
     """
-    s, sqrt_w, _, crit, comp, h0 = _galerkin_basis(n, q)
-    w = sqrt_w**2
-    jc, j1 = np.arange(2, n + 1), np.array([1])
-    m = comp.shape[1]
+    s, w, _, crit, comp, h0 = _galerkin_basis(n)
+    so, co = np.sin(np.outer(om, s)), np.cos(np.outer(om, s))
+    fc = np.stack([-(crit * so), crit * co], axis=2)  # (P, q, 2): the critical mode's columns
+    wf = w[:, None] * fc
+    g11 = np.swapaxes(fc, 1, 2) @ wf
+    g21 = np.concatenate([comp.T @ (-so[:, :, None] * wf), comp.T @ (co[:, :, None] * wf)],
+                         axis=1)
+    m, jc = comp.shape[1], np.arange(2, n + 1)
     hc, hs = np.empty((2, om.size, m, m))
-    h1 = np.empty((2, om.size, m))  # HC, HS between the critical mode and the complement
-    _sine_moments(om, jc, jc, out=(hc[:, :n - 1, :n - 1], hs[:, :n - 1, :n - 1]))
-    c1, s1 = _sine_moments(om, j1, np.append(j1, jc))
-    h1[0, :, :n - 1], h1[1, :, :n - 1] = c1[:, 0, 1:], s1[:, 0, 1:]
-    for h, hv, trig in ((hc, h1[0], np.cos), (hs, h1[1], np.sin)):
+    _sine_moments(om, jc, out=(hc[:, :n - 1, :n - 1], hs[:, :n - 1, :n - 1]))
+    for h, trig in ((hc, np.cos), (hs, np.sin)):
         wt = (w * trig(np.outer(2 * om, s)))[:, :, None] * comp[None, :, n - 1:]  # (P, q, 2)
         h[:, :, n - 1:] = comp.T @ wt
         h[:, n - 1:, :n - 1] = np.swapaxes(h[:, :n - 1, n - 1:], 1, 2)
-        hv[:, n - 1:] = (crit @ wt)
-    h0_1, h0_11 = h0[-1][:m], h0[-1][m]  # H0 with the critical mode (h0 is (m + 1)^2)
-    c11, s11 = c1[:, 0, 0], s1[:, 0, 0]
-    g11 = 0.5 * np.stack([np.stack([h0_11 - c11, -s11], axis=1),
-                          np.stack([-s11, h0_11 + c11], axis=1)], axis=1)
-    g21 = 0.5 * np.concatenate([np.stack([h0_1 - h1[0], -h1[1]], axis=2),
-                                np.stack([-h1[1], h0_1 + h1[0]], axis=2)], axis=1)
-    return _Moments(g11, g21, np.ascontiguousarray(h0[:m, :m]), hc, hs)
+    return _Moments(g11, g21, h0, hc, hs)
 
 
-def _sine_moments(om: NDArray[np.float64], rows: NDArray[np.int_], cols: NDArray[np.int_],
+def _sine_moments(om: NDArray[np.float64], j: NDArray[np.int_],
                   out: tuple[NDArray[np.float64], NDArray[np.float64]] | None = None
                   ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """int a_j a_k cos(2 Omega s) and int a_j a_k sin(2 Omega s) on [0, 1] for j in `rows`,
-    k in `cols` (consecutive integers; arrays (P, rows, cols), written into `out` if given).
-    From sin A sin B cos C and sin A sin B sin C as sums of cos and sin of (j -+ k) pi +- 2 Omega:
+    """int a_j a_k cos(2 Omega s) and int a_j a_k sin(2 Omega s) on [0, 1] for j, k in `j`
+    (consecutive integers; arrays (P, j, j), written into `out` if given). From
+    sin A sin B cos C and sin A sin B sin C as sums of cos and sin of (j -+ k) pi +- 2 Omega:
     (jk/2) [S((j-k)pi - 2W) + S((j-k)pi + 2W) - S((j+k)pi - 2W) - S((j+k)pi + 2W)] with
     S(x) = sin(x)/x, and (jk/2) [T(2W + (j-k)pi) + T(2W - (j-k)pi) - T(2W + (j+k)pi)
     - T(2W - (j+k)pi)] with T(x) = (1 - cos x)/x = (x/2) sinc(x/2pi)^2, W = Omega. Both depend
-    on j - k and j + k only, so O(n) sinc values per point fill the matrices."""
-    j0, k0, nr, nc = int(rows[0]), int(cols[0]), rows.size, cols.size
-    top = j0 + nr - 1 + k0 + nc - 1  # the largest j + k
+    on j - k and j + k only, so O(n) sinc values per point fill the matrices.
+
+    >>> hc, hs = _sine_moments(np.array([0.0]), np.arange(1, 3))  # Omega = 0: int a_j a_k
+    >>> np.round(hc[0], 12).tolist(), float(np.abs(hs[0]).max())
+    ([[1.0, 0.0], [0.0, 4.0]], 0.0)
+    """
+    j0, size = int(j[0]), j.size
+    top = 2 * (j0 + size - 1)  # the largest j + k
     mm = np.arange(-top, top + 1)  # every j - k and j + k
     x = (2 * om / np.pi)[:, None]
-    jk = 0.5 * (rows[:, None] * cols[None, :])
+    jk = 0.5 * (j[:, None] * j[None, :])
     if out is None:
-        out = (np.empty((om.size, nr, nc)), np.empty((om.size, nr, nc)))
+        out = (np.empty((om.size, size, size)), np.empty((om.size, size, size)))
     sums = (np.sinc(mm - x) + np.sinc(mm + x),  # S(m pi - 2W) + S(m pi + 2W)
             _t(x + mm) + _t(x - mm))
     for dest, v in zip(out, sums, strict=True):
         # v at j - k (Toeplitz) and at j + k (Hankel) as strided views: no index arrays
-        lo = top - j0 + k0 - nr + 1
-        dest[...] = sliding_window_view(v[:, ::-1], nc, axis=1)[:, lo:lo + nr][:, ::-1]
-        dest -= sliding_window_view(v, nc, axis=1)[:, top + j0 + k0:top + j0 + k0 + nr]
+        dest[...] = sliding_window_view(v[:, ::-1], size, axis=1)[:, top - size + 1:top + 1][
+            :, ::-1]
+        dest -= sliding_window_view(v, size, axis=1)[:, top + 2 * j0:top + 2 * j0 + size]
         dest *= jk
     return out
 
@@ -480,6 +458,7 @@ def _newton_fixed_point(e: NDArray[np.float64], mom: _Moments, w22: NDArray[np.f
     for it in range(_MAX_NEWTON + 1):
         y, conv = _fixed_point(w22, d, e1, mom, y)
         ok &= conv | done
+        done |= ~ok  # a failed fixed point goes to Cholesky: stop iterating it
         lmin, v_new = _min_eig2(e1 * mom.g11 - e2 * (g12 @ y))
         v = np.where(done[:, None], v, v_new)  # finished points keep delta and v
         if it == 0:  # T(0) gives the start, as in the Cholesky version

@@ -85,7 +85,7 @@ bound times the matrix size bounds ||delta K||), so the quadrature changes the q
 relative 1e-18 at most (K >= I); q = n + (d + 1)/2 (rounded up, and >= n + 2 so that the mass
 is exact). d ~ Omega + 12 Omega^(1/3): q ~ n + Omega/2. The integrands are even, so
 only the nodes t >= 0 are used (weights doubled). The nodes and weights are computed here by
-Newton's method on the three-term recurrence (:func:`gauss_legendre`), because numpy's
+Newton's method on the three-term recurrence (:func:`spectral_rod.quadrature.gauss_legendre`), because numpy's
 ``leggauss`` and scipy's ``roots_legendre`` weights were measured wrong by 1e-11 (q = 120) to
 5e-10 (q = 400) relative -- enough to spoil 1e-12 (orthonormality of Pn_k: 3e-13 at q = 120
 with ``leggauss``, 7e-15 with these).
@@ -164,6 +164,7 @@ from spectral_rod._validation import (
 )
 from spectral_rod.errors import ConvergenceWarning
 from spectral_rod.families import FAMILIES, check_family
+from spectral_rod.quadrature import gauss_legendre
 
 __all__ = [
     "FAMILIES",
@@ -171,7 +172,6 @@ __all__ = [
     "RITZ_MAX_TWIST",
     "RitzLoad",
     "family_ritz_value",
-    "gauss_legendre",
     "initial_degree",
     "ritz_critical_load",
 ]
@@ -188,38 +188,6 @@ EPS = float(np.finfo(float).eps)
 # ---------------------------------------------------------------------------------------------
 # Quadrature and basis
 # ---------------------------------------------------------------------------------------------
-
-def _legendre_pair(x: NDArray[np.float64], q: int) -> tuple[NDArray[np.float64], ...]:
-    """(P_{q-1}(x), P_q(x)) by the three-term recurrence (stable on [-1, 1])."""
-    p0, p1 = np.ones_like(x), x.copy()
-    for j in range(1, q):
-        p0, p1 = p1, ((2 * j + 1) * x * p1 - j * p0) / (j + 1)
-    return p0, p1
-
-
-@lru_cache(maxsize=16)
-def gauss_legendre(q: int) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """Gauss–Legendre nodes and weights on [-1, 1] (q >= 2) to a few ulp.
-
-    Newton's method on P_q from the asymptotic guess -cos(pi (k - 1/4)/(q + 1/2)), weights
-    2 / ((1 - x^2) P_q'(x)^2) with 1 - x^2 = (1 - x)(1 + x); symmetrised. Example:
-    ``gauss_legendre(2)`` gives nodes -+1/sqrt(3) and weights 1, 1.
-    """
-    k = np.arange(1, q + 1)
-    x = -np.cos(np.pi * (k - 0.25) / (q + 0.5))
-    for _ in range(30):
-        p0, p1 = _legendre_pair(x, q)
-        dx = p1 / (q * (x * p1 - p0) / ((x - 1) * (x + 1)))
-        x = x - dx
-        if np.max(np.abs(dx)) <= 4 * EPS:
-            break
-    p0, p1 = _legendre_pair(x, q)
-    dp = q * (x * p1 - p0) / ((x - 1) * (x + 1))
-    w = 2.0 / ((1 - x) * (1 + x) * dp * dp)
-    x, w = (x - x[::-1]) / 2, (w + w[::-1]) / 2
-    x.flags.writeable = w.flags.writeable = False
-    return x, w
-
 
 def legendre_values(t: NDArray[np.float64], n: int) -> NDArray[np.float64]:
     """Orthonormal Legendre polynomials Pn_0..Pn_n at t, shape (len(t), n + 1).

@@ -83,17 +83,16 @@ def test_increment_at_twist_1000():
         assert abs(critical_load_increment(1000.0, 1 + e) / ref - 1) <= 1e-9
 
 
-@pytest.mark.parametrize("twist", [0.3, 2 * math.pi, 17.77, 49.0, 300.0])
+@pytest.mark.parametrize("twist", [1e-6, 0.3, 2 * math.pi, 17.77, 49.0, 300.0])
 def test_closed_form_moments_equal_the_quadrature(twist):
     # the batched route's closed forms (sinc sums) against the Gauss-Legendre quadrature of the
     # same integrals: two independent evaluations of every omega2 moment
     from spectral_rod.increment import _moments_closed, _moments_dense, bucket
 
-    n, q = bucket(twist)
+    n = bucket(twist)
     om = np.array([twist, 0.5 * twist])
-    a, b = _moments_dense(om, n, q), _moments_closed(om, n, q)
-    # 1e-13 of the largest entry: at Omega = 300 the quadrature (q ~ 1.6 N + Omega/2 + 40 points)
-    # is itself ~5e-14 off in the highest modes' entries, whose integrands oscillate fastest
+    a, b = _moments_dense(om, n), _moments_closed(om, n)
+    # 1e-13 of the largest entry: round-off of sums over q ~ 1.6 N + Omega/2 + 40 nodes
     for i in range(om.size):
         scale = np.abs(a.g22(i)).max()
         assert np.abs(a.g22(i) - b.g22(i)).max() <= 1e-13 * scale
@@ -118,3 +117,17 @@ def test_a_point_does_not_depend_on_the_other_points_of_the_call():
     # a point alone takes the few-point route (quadrature moments): equal to rounding
     alone = np.array([galerkin_increments(tw[i:i + 1], nu[i:i + 1])[0][0] for i in range(9)])
     assert np.max(np.abs(alone / whole[:9] - 1)) <= 1e-13
+
+
+@pytest.mark.parametrize("twist", TWISTS)
+def test_relative_accuracy_of_a_stack(twist):
+    # the same grid as one array call: more than DENSE_POINTS points share each bucket, so the
+    # stacked route (closed-form moments) answers; reference: mpmath characteristic equation
+    from spectral_rod.increment import DENSE_POINTS
+
+    small = [e for e in NU_MINUS_1 if e <= 1e-3]
+    nu = 1.0 + np.repeat(small, 2)
+    assert nu.size > DENSE_POINTS
+    got = critical_load_increment(np.full(nu.size, twist), nu)
+    ref = np.repeat([ref_increment(twist, 1 + e) for e in small], 2)
+    assert np.max(np.abs(got / ref - 1)) <= 1e-12

@@ -19,11 +19,11 @@ from numpy.polynomial import legendre as npleg
 import spectral_rod.ritz as ritz
 from spectral_rod import ConvergenceWarning
 from spectral_rod.characteristic import family_critical_load
+from spectral_rod.quadrature import gauss_legendre
 from spectral_rod.ritz import (
     RITZ_MAX_TWIST,
     RitzLoad,
     family_ritz_value,
-    gauss_legendre,
     initial_degree,
     legendre_values,
     mass_root,
