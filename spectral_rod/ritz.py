@@ -84,9 +84,9 @@ smallest d with nu (n + 1) times that bound <= :data:`QUADRATURE_BUDGET` = 1e-18
 bound times the matrix size bounds ||delta K||), so the quadrature changes the quotient by a
 relative 1e-18 at most (K >= I); q = n + (d + 1)/2 (rounded up, and >= n + 2 so that the mass
 is exact). d ~ Omega + 12 Omega^(1/3): q ~ n + Omega/2. The integrands are even, so
-only the nodes t >= 0 are used (weights doubled). The nodes and weights are computed here by
-Newton's method on the three-term recurrence (:func:`spectral_rod.quadrature.gauss_legendre`), because numpy's
-``leggauss`` and scipy's ``roots_legendre`` weights were measured wrong by 1e-11 (q = 120) to
+only the nodes t >= 0 are used (weights doubled). The nodes and weights come from Newton's
+method on the three-term recurrence (:func:`spectral_rod.quadrature.gauss_legendre`), because
+numpy's ``leggauss`` and scipy's ``roots_legendre`` weights were measured wrong by 1e-11 (q = 120) to
 5e-10 (q = 400) relative -- enough to spoil 1e-12 (orthonormality of Pn_k: 3e-13 at q = 120
 with ``leggauss``, 7e-15 with these).
 
