@@ -86,9 +86,9 @@ relative 1e-18 at most (K >= I); q = n + (d + 1)/2 (rounded up, and >= n + 2 so 
 is exact). d ~ Omega + 12 Omega^(1/3): q ~ n + Omega/2. The integrands are even, so
 only the nodes t >= 0 are used (weights doubled). The nodes and weights come from Newton's
 method on the three-term recurrence (:func:`spectral_rod.quadrature.gauss_legendre`), because
-numpy's ``leggauss`` and scipy's ``roots_legendre`` weights were measured wrong by 1e-11 (q = 120) to
-5e-10 (q = 400) relative -- enough to spoil 1e-12 (orthonormality of Pn_k: 3e-13 at q = 120
-with ``leggauss``, 7e-15 with these).
+numpy's ``leggauss`` and scipy's ``roots_legendre`` weights were measured wrong by 1e-11
+(q = 120) to 5e-10 (q = 400) relative -- enough to spoil 1e-12 (orthonormality of Pn_k:
+3e-13 at q = 120 with ``leggauss``, 7e-15 with these).
 
 Stable eigen-solve: F = Q R (QR, backward stable), C = (G R^{-1})^T (G R^{-1}) = R^{-T} M
 R^{-1}, and theta_max = the largest eigenvalue of C (``scipy.linalg.eigh``) is the largest
