@@ -40,6 +40,7 @@ from spectral_rod.critical import apply_bounds, solve_points, warn_unconverged
 from spectral_rod.results import BucklingMode
 from spectral_rod.router import check_method, route
 from spectral_rod.straight_rod import N_MAX, N_MIN, collocation_mode_coefficients
+from spectral_rod.straight_rod.chebyshev import interpolation_coefficients
 from spectral_rod.wavenumbers import characteristic_roots, critical_wavenumbers
 
 __all__ = ["MAX_POINTS", "buckling_mode"]
@@ -70,7 +71,7 @@ def _centreline(c1: NDArray[np.float64], c2: NDArray[np.float64], twist: float, 
            (w1 * np.sin(twist * s) + w2 * np.cos(twist * s)))
     out = []
     for f in rot:
-        g = C.Chebyshev(C.chebint(C.chebfit(xs, f / 4.0, m - 1), 2))  # d2/ds2 = 4 d2/dx2
+        g = C.Chebyshev(C.chebint(interpolation_coefficients(f / 4.0), 2))  # d2/ds2 = 4 d2/dx2
         left, right = g(-1.0), g(1.0)
         out.append(g - C.Chebyshev([(left + right) / 2, (right - left) / 2]))
     return out[0], out[1]

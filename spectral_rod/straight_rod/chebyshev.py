@@ -26,6 +26,23 @@ import numpy.polynomial.chebyshev as C
 from numpy.typing import NDArray
 
 
+def interpolation_coefficients(values: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Chebyshev coefficients of the polynomial interpolating `values` at the m Chebyshev
+    points of the second kind in ascending order (``numpy.polynomial.chebyshev.chebpts2(m)``):
+    a DCT-I, O(m log m) (a least-squares fit would be O(m^3)).
+
+    >>> x = C.chebpts2(5)
+    >>> (np.round(interpolation_coefficients(2 * x**2 - 1), 14) + 0.0).tolist()  # T_2
+    [0.0, 0.0, 1.0, 0.0, 0.0]
+    """
+    from scipy.fft import dct
+
+    n = values.size - 1
+    c = dct(values[::-1], type=1) / n  # x_j = cos(j pi / n), j = 0..n: descending
+    c[[0, -1]] /= 2
+    return c
+
+
 def half_points(n: int) -> NDArray[np.float64]:
     """The n/2 Chebyshev points cos(j pi / n), j = 1..n/2, in (0, 1), with x = 0 last."""
     return np.cos(np.pi * np.arange(1, n // 2 + 1) / n)
