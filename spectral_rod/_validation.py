@@ -39,8 +39,13 @@ def check_choice(value: object, name: str, choices: tuple[str, ...]) -> str:
     return value
 
 
+#: The admitted ranges of the straight-rod arguments (one place: the scalar fast path of
+#: :func:`spectral_rod.critical_load` tests them without these functions' array machinery).
+TWIST_MAX, NU_MAX, TOL_RANGE = 1.0e4, 1.0e4, (1.0e-14, 1.0e-2)
+
+
 def check_twist(twist_angle: ArrayLike, name: str = "twist_angle",
-                max_abs: float = 1.0e4) -> NDArray[np.float64]:
+                max_abs: float = TWIST_MAX) -> NDArray[np.float64]:
     """Total twist angle Omega(L) in radians, any sign (p* is even in it), |Omega(L)| <= max_abs."""
     arr = real_array(twist_angle, name)
     if np.any(np.abs(arr) > max_abs):
@@ -49,7 +54,7 @@ def check_twist(twist_angle: ArrayLike, name: str = "twist_angle",
     return arr
 
 
-def check_nu(nu: ArrayLike, name: str = "nu", max_value: float = 1.0e4) -> NDArray[np.float64]:
+def check_nu(nu: ArrayLike, name: str = "nu", max_value: float = NU_MAX) -> NDArray[np.float64]:
     """Cross-section asymmetry nu = I2/I1 in [1, max_value]; the paper's convention is A1 <= A2."""
     arr = real_array(nu, name)
     if np.any(arr < 1.0):
@@ -74,12 +79,13 @@ def check_resolution(n: object, name: str = "n", minimum: int = 4, maximum: int 
 
 
 def check_tol(tol: object, name: str = "tol") -> float:
-    """A relative tolerance in [1e-14, 1e-2]."""
+    """A relative tolerance in TOL_RANGE = [1e-14, 1e-2]."""
     if isinstance(tol, bool) or not isinstance(tol, numbers.Real):
         raise TypeError(f"{name} must be a real number, got {type(tol).__name__}")
     tol = float(tol)
-    if not (1.0e-14 <= tol <= 1.0e-2):
-        raise ValueError(f"{name} must be in [1e-14, 1e-2], got {tol!r}")
+    if not (TOL_RANGE[0] <= tol <= TOL_RANGE[1]):
+        raise ValueError(f"{name} must be in [{TOL_RANGE[0]:g}, {TOL_RANGE[1]:g}], "
+                         f"got {tol!r}")
     return tol
 
 

@@ -29,7 +29,6 @@ from numpy.typing import NDArray
 
 from spectral_rod._validation import (
     check_nu,
-    check_resolution,
     check_tol,
     check_twist,
     scalar_value,
@@ -38,8 +37,8 @@ from spectral_rod.characteristic import CharacteristicRoot
 from spectral_rod.closed_form import mode_fields
 from spectral_rod.critical import apply_bounds, solve_points, warn_unconverged
 from spectral_rod.results import BucklingMode
-from spectral_rod.router import check_method, route
-from spectral_rod.straight_rod import N_MAX, N_MIN, collocation_mode_coefficients
+from spectral_rod.router import check_route, route
+from spectral_rod.straight_rod import collocation_mode_coefficients
 from spectral_rod.straight_rod.chebyshev import interpolation_coefficients
 from spectral_rod.wavenumbers import characteristic_roots, critical_wavenumbers
 
@@ -123,9 +122,8 @@ def buckling_mode(twist_angle: float, nu: float, *, n: int | None = None, tol: f
     """
     twist = scalar_value(check_twist(twist_angle), "twist_angle")
     nu_f = scalar_value(check_nu(nu), "nu")
-    tol, method, npts = check_tol(tol), check_method(method), _check_points(points)
-    if n is not None:
-        n = check_resolution(n, minimum=N_MIN, maximum=N_MAX)
+    tol, npts = check_tol(tol), _check_points(points)
+    n, method = check_route(n, method)
     tw, nv = np.array([abs(twist)]), np.array([nu_f])
     res = solve_points(tw, nv, route(tw, nv, n, method), n, tol)
     apply_bounds(res, nv)

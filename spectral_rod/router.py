@@ -7,8 +7,9 @@ characteristic equation (tests/test_extremes.py and the ``extremes`` scene):
 * an explicit degree ``n``: Chebyshev collocation everywhere (``n`` is its parameter);
 * |Omega(L)| >= :data:`TWIST_ROUTE` = 50: the characteristic equation in double precision
   (:func:`spectral_rod.characteristic.characteristic_double`): its cost does not grow with the
-  twist and its relative error is ~eps |Omega| (<= 2.5e-14 at Omega(L) = 1000, 7e-13 at 1e4),
-  whereas collocation needs n ~ 2.7 |Omega|^0.8 (n capped at 512) and loses accuracy to
+  twist and its relative error is ~eps |Omega| (up to ~5e-14 at Omega(L) = 1000, 7e-13 at 1e4),
+  whereas collocation needs n ~ |Omega|/2 + 4.5 |Omega|^(1/3) + 10 at tol 1e-12 (n capped at 512;
+  :func:`spectral_rod.straight_rod.resolution.initial_degree`) and loses accuracy to
   round-off (1e-12 at Omega(L) = 200);
 * nu - 1 <= :data:`NEAR_DEGENERATE` = 1e-3 (and |Omega(L)| < 50): p* = 1 + the increment of
   :mod:`spectral_rod.increment` (the lowest eigenvalue is nearly double there and collocation's
@@ -32,7 +33,7 @@ from numpy.typing import ArrayLike, NDArray
 from spectral_rod._validation import broadcast_points, check_nu, check_resolution, check_twist
 
 __all__ = ["INCREMENT_MAX_TWIST", "NEAR_DEGENERATE", "ROD_METHODS", "TWIST_ROUTE",
-           "check_method", "choose_method", "route", "route_point"]
+           "check_method", "check_route", "choose_method", "route", "route_point"]
 
 #: The methods that compute p* (``method=`` of :func:`spectral_rod.critical_load`).
 ROD_METHODS = ("collocation", "characteristic", "increment", "ritz")
@@ -54,6 +55,20 @@ def check_method(method: object) -> str:
     if method != "auto" and method not in ROD_METHODS:
         raise ValueError(f"method must be 'auto' or one of {ROD_METHODS}, got {method!r}")
     return method
+
+
+def check_route(n: object, method: object) -> tuple[int | None, str]:
+    """(n, method) checked once for every entry point: `method` as :func:`check_method`; a
+    degree n (even, N_MIN..N_MAX of the collocation solver) only with collocation."""
+    from spectral_rod.straight_rod.resolution import N_MAX, N_MIN
+
+    method = check_method(method)
+    if n is not None:
+        n = check_resolution(n, minimum=N_MIN, maximum=N_MAX)
+        if method not in ("auto", "collocation"):
+            raise ValueError(f"n (the Chebyshev degree) applies to collocation only, "
+                             f"not to method={method!r}")
+    return n, method
 
 
 def route(twist: NDArray[np.float64], nu: NDArray[np.float64], n: int | None = None,
@@ -98,9 +113,8 @@ def choose_method(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None
     """The method :func:`spectral_rod.critical_load` uses at each point (a str for scalars, an
     array of str otherwise); arguments as there."""
     twist, nu_arr = check_twist(twist_angle), check_nu(nu)
-    if n is not None:
-        check_resolution(n)
+    n, method = check_route(n, method)
     shape = broadcast_points(twist_angle=twist, nu=nu_arr)
     out = route(np.broadcast_to(twist, shape).ravel(), np.broadcast_to(nu_arr, shape).ravel(),
-                n, check_method(method)).reshape(shape)
+                n, method).reshape(shape)
     return str(out) if shape == () else out

@@ -19,7 +19,7 @@ from spectral_rod._validation import check_resolution, scalar_nu, scalar_twist
 from spectral_rod.families import FAMILIES, check_family
 from spectral_rod.straight_rod.discretisation import family_operator
 from spectral_rod.straight_rod.eigensolver import POWER_RTOL, physical_eig, solve_family
-from spectral_rod.straight_rod.few_points import solve_few
+from spectral_rod.straight_rod.few_points import LEAN_MAX_DEGREE, solve_few
 from spectral_rod.straight_rod.resolution import (
     N_MAX,
     N_MIN,
@@ -52,7 +52,9 @@ def few_points_limit(n: int) -> int:
     """Most points of degree n handed to the lean solver: the measured crossover (Figure 1
     points, tol 1e-12, lean/batched us a point: n = 22: 25/34 at 24 points, 37/29 at 32;
     n = 36: 98/108 at 8, 85/70 at 16; n = 44: 134/159 at 8, 117/106 at 16; n = 56: 234/244 at 4,
-    191/151 at 8)."""
+    191/151 at 8); none above :data:`LEAN_MAX_DEGREE`."""
+    if n > LEAN_MAX_DEGREE:
+        return 0
     return FEW_POINTS if n <= 30 else max(4, int(FEW_POINTS * (30 / n) ** 3))
 
 
@@ -111,7 +113,7 @@ def collocation_critical_load(twist: NDArray[np.float64], nu: NDArray[np.float64
         deg = np.full(tw.size, int(n))
         p, fam, tails = _solve_points(tw, nu, deg, tol)
         return CollocationResult(p, deg, error_estimate(tails, tw), fam)
-    deg = initial_degree(tw, nu, tol)
+    deg = initial_degree(tw, tol)
     p, fam, tails = _solve_points(tw, nu, deg, tol)
     err = error_estimate(tails, tw)
     # raise the degree where the estimate misses tol, unless round-off alone does

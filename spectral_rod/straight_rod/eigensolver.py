@@ -58,7 +58,7 @@ LOOSE_RTOL, LOOSE_DEGREE = 1.0e-8, 64
 #: Above this |Omega| the final Rayleigh quotient is accumulated in extended precision.
 LONG_TWIST = 20.0
 #: Up to this many points per degree and family, and degree, the full eig is cheaper than the
-#: iteration (measured: 0.7 vs 1.3 ms for one point at n = 20; the other way round at n = 94).
+#: iteration (measured: 0.13 vs 0.37 ms for one point at n = 20, about equal at n = 40-45).
 SMALL_BATCH, SMALL_DEGREE = 4, 40
 
 
@@ -383,14 +383,11 @@ def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np
     left = np.hstack([rows_matmul(w[:, :k1], mf.left1), rows_matmul(w[:, k1:], mf.left2)])
     lam[good] = pencil_rayleigh_quotient(op, twist[good], nu[good], left, vec[good])
     bad = np.flatnonzero(~(ok | above))
-    if bad.size:  # the full eig with the rule decides
-        a, b = op.pencil(twist[bad], nu[bad])
-        theta, vec[bad] = physical_eig(np.linalg.solve(a, np.broadcast_to(b, a.shape)))
-        valid = np.isfinite(theta) & (theta > 0)
-        lam[bad] = np.where(valid, 1.0 / np.where(valid, theta, 1.0), np.inf)
     tails = np.full(twist.size, np.inf)
-    resolved = np.flatnonzero(~above & np.isfinite(lam))
+    resolved = np.flatnonzero(~above & np.isfinite(lam) & (ok | above))
     tails[resolved] = mode_tails(op, vec[resolved])
+    if bad.size:  # the full eig with the rule decides
+        lam[bad], tails[bad], vec[bad] = _solve_family_eig(n, family, twist[bad], nu[bad])
     return lam, tails, vec
 
 

@@ -35,18 +35,27 @@ from functools import lru_cache
 
 import numpy as np
 from numpy.typing import NDArray
+from scipy.linalg.lapack import dgetrf, dgetri  # at import: before BLAS threads are limited
 
 from spectral_rod.families import FAMILIES, SHIFT
 from spectral_rod.straight_rod.discretisation import INST1, family_operator, term_coefficients
-from spectral_rod.straight_rod.eigensolver import LONG_TWIST, pencil_rayleigh_quotient
+from spectral_rod.straight_rod.eigensolver import (
+    LONG_TWIST,
+    _start_vector,
+    pencil_rayleigh_quotient,
+)
 
-__all__ = ["SQUARING_MAX", "DensePencils", "dense_pencils", "solve_few"]
+__all__ = ["LEAN_MAX_DEGREE", "SQUARING_MAX", "DensePencils", "dense_pencils", "solve_few"]
 
 #: Up to this size m the powers of M are taken by squaring (a few matrix products), above it by
 #: products with the vectors: a squaring costs ~m^3, a step ~m^2 but ~1 us of call overhead;
 #: measured at one to 24 points: faster from n = 30 on (e.g. 24 points at n = 30: 67 -> 43 us a
 #: point; one point at n = 44: 357 -> 309 us).
 SQUARING_MAX = 27
+#: Above this degree the batched engine answers even a single point: the lean solver's dense
+#: pencils cost ~336 (n - 1)^2 bytes each in its cache (88 MB at n = 512) and it is slower
+#: there (measured, 4 points: n = 56 234 vs 244 us a point; n = 128 6.6 vs 2.8 ms).
+LEAN_MAX_DEGREE = 64
 
 
 @dataclass(frozen=True)
@@ -77,7 +86,7 @@ def dense_pencils(n: int) -> DensePencils:
         p_t, b_t = np.swapaxes(op.pieces, 1, 2), op.mass.T
         pieces[:k, f, 0] = pieces[:k, f, 1] = p_t
         pieces[k, f, 0], pieces[k, f, 2] = -SHIFT * b_t, b_t
-    start = np.random.default_rng(20240607).standard_normal(m)
+    start = _start_vector(m)
     return DensePencils(n, pieces.reshape(k + 1, -1), np.stack([op.mass for op in ops]),
                         np.stack([_tail_rows(op) for op in ops]), start / np.linalg.norm(start))
 
@@ -97,8 +106,6 @@ def _tail_rows(op) -> NDArray[np.float64]:
 def _inverses(f_t: NDArray[np.float64]) -> NDArray[np.float64] | None:
     """F^{-1} for each matrix of a stack given as F^T in C order (LU and inverse by LAPACK,
     overwriting the input), or None if any F is singular (the caller then falls back)."""
-    from scipy.linalg.lapack import dgetrf, dgetri
-
     flat = f_t.reshape(-1, *f_t.shape[-2:])
     out = []
     for j in range(flat.shape[0]):

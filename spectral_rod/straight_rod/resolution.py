@@ -24,11 +24,10 @@ __all__ = ["ERR_LINEAR", "ERR_QUADRATIC", "N_MAX", "N_MIN", "ROUNDOFF_TWIST", "e
 N_MIN, N_MAX = 8, 512
 EPS = float(np.finfo(float).eps)
 #: Error model of :func:`error_estimate` (calibrated against the mpmath reference).
-ERR_LINEAR, ERR_QUADRATIC, ROUNDOFF_TWIST = 5.0e-4, 200.0, 0.3
+ERR_LINEAR, ERR_QUADRATIC, ROUNDOFF_BASE, ROUNDOFF_TWIST = 5.0e-4, 200.0, 32.0, 0.3
 
 
-def initial_degree(twist_angle: NDArray[np.float64], nu: NDArray[np.float64],
-                   tol: float) -> NDArray[np.int_]:
+def initial_degree(twist_angle: NDArray[np.float64], tol: float) -> NDArray[np.int_]:
     """A priori Chebyshev degree for relative accuracy `tol` (fitted, see below).
 
     The critical mode is a sum of cos/sin(beta_k s) with beta_k <= sqrt(X_+) ~ |Omega| + pi
@@ -45,7 +44,7 @@ def initial_degree(twist_angle: NDArray[np.float64], nu: NDArray[np.float64],
     """
     om = np.abs(np.asarray(twist_angle, dtype=float))
     x = _degree_formula(om, -math.log10(tol), np.cbrt)
-    return np.clip(2 * np.ceil(x / 2).astype(int), N_MIN, N_MAX) + 0 * np.asarray(nu, int)
+    return np.clip(2 * np.ceil(x / 2).astype(int), N_MIN, N_MAX)
 
 
 def raised_degree(n):
@@ -73,9 +72,9 @@ def _degree_formula(om, big_l: float, cbrt):
 
 def error_estimate_scalar(tail_value: float, twist_angle: float) -> float:
     """:func:`error_estimate` for one point, in Python floats (the scalar path's)."""
-    t = tail_value
-    return max(ERR_LINEAR * t, ERR_QUADRATIC * t * t) + EPS * (32.0 + ROUNDOFF_TWIST
-                                                            * twist_angle * twist_angle)
+    t = tail_value  # the same operations in the same order as error_estimate (bit-equal)
+    return max(ERR_LINEAR * t, ERR_QUADRATIC * (t * t)) + EPS * (
+        ROUNDOFF_BASE + ROUNDOFF_TWIST * (twist_angle * twist_angle))
 
 
 def error_estimate(tail_value: ArrayLike, twist_angle: ArrayLike) -> NDArray[np.float64]:
@@ -95,7 +94,7 @@ def error_estimate(tail_value: ArrayLike, twist_angle: ArrayLike) -> NDArray[np.
     """
     t = np.asarray(tail_value, dtype=float)
     om = np.asarray(twist_angle, dtype=float)
-    return np.maximum(ERR_LINEAR * t, ERR_QUADRATIC * t**2) + roundoff_floor(om)
+    return np.maximum(ERR_LINEAR * t, ERR_QUADRATIC * (t * t)) + roundoff_floor(om)
 
 
 def tail_for_tolerance(tol: float) -> float:
@@ -109,7 +108,7 @@ def tail_for_tolerance(tol: float) -> float:
 def roundoff_floor(twist_angle: ArrayLike) -> NDArray[np.float64]:
     """Round-off part of :func:`error_estimate`: eps (32 + 0.3 Omega^2), measured (see there)."""
     om = np.asarray(twist_angle, dtype=float)
-    return EPS * (32.0 + ROUNDOFF_TWIST * om**2)
+    return EPS * (ROUNDOFF_BASE + ROUNDOFF_TWIST * (om * om))
 
 
 def mode_tails(op: FamilyOperator, vectors: NDArray[np.float64]) -> NDArray[np.float64]:
