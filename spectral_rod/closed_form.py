@@ -21,6 +21,10 @@ __all__ = ["CharacteristicMode", "boundary_determinant_4x4", "characteristic_mod
            "mode_fields"]
 
 
+#: Points of the fixed grid a mode's scale is taken on, besides the output grid's
+#: (:func:`characteristic_mode`, :func:`spectral_rod.buckling_mode`).
+SCALE_POINTS = 257
+
 def boundary_determinant_4x4(lam: mp.mpf, om: mp.mpf, nu: mp.mpf) -> mp.mpf:
     """The paper's 4x4 boundary determinant, literally: s in [0, 1], four fundamental solutions.
 
@@ -117,11 +121,16 @@ def mode_fields(root: CharacteristicRoot, twist_angle: float, nu: float, s: Arra
 def characteristic_mode(root: CharacteristicRoot, twist_angle: float, nu: float,
                         points: int = 201, dps: int = 30) -> CharacteristicMode:
     """The mode of ``root`` on a uniform grid of `points` in [0, 1] (:func:`mode_fields`), with
-    the fixed-frame centreline x = R(Omega s)(xi, eta), scaled to max |x| = 1."""
-    s = np.linspace(0.0, 1.0, check_int(points, "points", 2, 100_000))
+    the fixed-frame centreline x = R(Omega s)(xi, eta), scaled to max |x| = 1 (the maximum taken
+    on a fixed fine grid too, so that a coarse output grid -- even just the two hinges, where
+    x = 0 -- is scaled like any other)."""
+    npts = check_int(points, "points", 2, 100_000)
+    s = np.concatenate([np.linspace(0.0, 1.0, npts), np.linspace(0.0, 1.0, SCALE_POINTS)])
     xi, eta = mode_fields(root, twist_angle, nu, s, dps)
     om = abs(float(twist_angle))
     x1 = xi * np.cos(om * s) - eta * np.sin(om * s)
     x2 = xi * np.sin(om * s) + eta * np.cos(om * s)
     scale = float(np.max(np.hypot(x1, x2)))
-    return CharacteristicMode(s, xi / scale, eta / scale, x1 / scale, x2 / scale)
+    out = slice(0, npts)
+    return CharacteristicMode(s[out], xi[out] / scale, eta[out] / scale, x1[out] / scale,
+                              x2[out] / scale)

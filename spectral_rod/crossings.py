@@ -23,6 +23,7 @@ import mpmath as mp
 
 from spectral_rod._validation import check_int, check_real, scalar_nu
 from spectral_rod.characteristic import (
+    DPS_RANGE,
     characteristic_critical_load,
     determinant,
     family_critical_load,
@@ -84,7 +85,7 @@ def family_crossing(twist_guess: float, nu: float, *, p_guess: float | None = No
     critical curve p*(Omega). Raises RuntimeError otherwise.
     """
     twist_guess = check_real(twist_guess, "twist_guess", 0.0, 1.0e3, lo_open=True)
-    nu, dps = scalar_nu(nu), check_int(dps, "dps", 15, 200)
+    nu, dps = scalar_nu(nu), check_int(dps, "dps", *DPS_RANGE)
     if p_guess is not None:
         p_guess = check_real(p_guess, "p_guess", 1.0, (1.0 + nu) / 2.0)
     with mp.workdps(dps):
@@ -183,7 +184,7 @@ def crossing_wavenumbers(crossing: FamilyCrossing, nu: float, dps: int = 30
     along both branches (chain rule with :attr:`FamilyCrossing.slopes`)."""
     if not isinstance(crossing, FamilyCrossing):
         raise TypeError(f"crossing must be a FamilyCrossing, got {type(crossing).__name__}")
-    nu, dps = scalar_nu(nu), check_int(dps, "dps", 15, 200)
+    nu, dps = scalar_nu(nu), check_int(dps, "dps", *DPS_RANGE)
     with mp.workdps(dps):
         nuv, p, om = mp.mpf(nu), crossing.p_star, crossing.twist
         lam = mp.pi**2 * p

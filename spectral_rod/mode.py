@@ -34,7 +34,7 @@ from spectral_rod._validation import (
     scalar_value,
 )
 from spectral_rod.characteristic import CharacteristicRoot
-from spectral_rod.closed_form import mode_fields
+from spectral_rod.closed_form import SCALE_POINTS, mode_fields
 from spectral_rod.critical import apply_bounds, solve_points, warn_unconverged
 from spectral_rod.results import BucklingMode
 from spectral_rod.router import check_route, route
@@ -46,8 +46,6 @@ __all__ = ["MAX_POINTS", "buckling_mode"]
 
 #: Largest output grid of :func:`buckling_mode`.
 MAX_POINTS = 100_000
-#: Points of the fixed grid the mode's scale (max |omega| = 1) is taken on, besides the output's.
-SCALE_POINTS = 257
 
 
 def _check_points(points: object) -> int:

@@ -140,3 +140,15 @@ def test_a_two_point_mode_grid_is_normalised():
     assert np.all(np.isfinite(m.omega1)) and np.all(np.isfinite(m.x1))
     fine = sr.buckling_mode(0.0, 2.0)
     assert m.x1 == pytest.approx(fine.x1[[0, -1]], abs=1e-14)
+
+
+def test_a_two_point_closed_form_mode_is_scaled_like_a_fine_one():
+    # found in review: characteristic_mode scaled by the output grid; at the two hinges x = 0
+    # and the "mode" was rounding noise scaled to 1
+    from spectral_rod.characteristic import characteristic_critical_load
+    from spectral_rod.closed_form import characteristic_mode
+
+    root = characteristic_critical_load(3.0, 2.0)
+    coarse, fine = (characteristic_mode(root, 3.0, 2.0, points=k) for k in (2, 201))
+    assert np.max(np.abs(coarse.x1)) <= 1e-14 and np.max(np.abs(coarse.x2)) <= 1e-14
+    assert np.max(np.hypot(fine.x1, fine.x2)) == pytest.approx(1.0, abs=1e-3)
