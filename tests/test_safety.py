@@ -4,7 +4,6 @@ answer, no hang, clear errors that name the argument, bounded memory."""
 from __future__ import annotations
 
 import math
-import time
 import warnings
 
 import numpy as np
@@ -42,14 +41,16 @@ def test_isotropic_rod_never_below_euler(twist):
     ({"p_max": 0.5}, ValueError),
 ])
 @pytest.mark.parametrize("func", ["characteristic_critical_load", "family_critical_load"])
-def test_reference_knobs_are_validated_before_any_work(func, kwargs, exc):
+def test_reference_knobs_are_validated_before_any_work(func, kwargs, exc, monkeypatch):
     # was: a root that is not the lowest (scan_step=1e300), nan, or a hang (12 cases)
+    import spectral_rod.characteristic as ch
+
     f = getattr(sr, func)
     args = ("symmetric", 3.0, 100.0) if func == "family_critical_load" else (3.0, 100.0)
-    t0 = time.perf_counter()
-    with pytest.raises(exc, match=next(iter(kwargs))):
-        f(*args, **kwargs)
-    assert time.perf_counter() - t0 < 1.0
+    with monkeypatch.context() as m:  # the root search must not even start
+        m.setattr(ch, "_mp_root", _must_not_run("the root search"))
+        with pytest.raises(exc, match=next(iter(kwargs))):
+            f(*args, **kwargs)
 
 
 def test_closed_forms_refuse_arguments_outside_their_validity():
@@ -60,28 +61,42 @@ def test_closed_forms_refuse_arguments_outside_their_validity():
 
 
 @pytest.mark.parametrize("twist", [1000.0, 3000.0, 1e4])
-def test_large_twist_mode_is_the_characteristic_route_and_fast(twist):
-    # was: 118 s at 1000, > 120 s at 3000, 8 GB exhausted at 1e4
-    t0 = time.perf_counter()
+def test_large_twist_mode_is_the_characteristic_route(twist, monkeypatch):
+    # was: 118 s at 1000, > 120 s at 3000, 8 GB exhausted at 1e4 (collocation at n = 512 and a
+    # dense fit): the closed-form route answers, and no collocation is ever entered
+    import spectral_rod.mode as mode_module
+
+    monkeypatch.setattr(mode_module, "_collocation_fields", _must_not_run("collocation"))
+    monkeypatch.setattr(mode_module, "collocation_mode_coefficients",
+                        _must_not_run("collocation"))
     mode = sr.buckling_mode(twist, 1.3, tol=1e-10)  # 1e-12 is below the route's eps |Omega|
-    assert time.perf_counter() - t0 < 10.0
     assert mode.method == "characteristic" and mode.converged
     assert np.all(np.isfinite(mode.omega1)) and abs(mode.x1[-1]) < 1e-12
 
 
-def test_output_grid_size_is_checked_before_the_solve():
-    t0 = time.perf_counter()
-    with pytest.raises(ValueError, match="points"):
-        sr.buckling_mode(5.0, 1.5, points=10**8)
-    assert time.perf_counter() - t0 < 0.5
+def test_output_grid_size_is_checked_before_the_solve(monkeypatch):
+    import spectral_rod.mode as mode_module
+
+    with monkeypatch.context() as m:
+        m.setattr(mode_module, "solve_points", _must_not_run("the solve"))
+        with pytest.raises(ValueError, match="points"):
+            sr.buckling_mode(5.0, 1.5, points=10**8)
     assert sr.buckling_mode(5.0, 1.5, points=np.int64(201)).s.size == 201
 
 
-def test_increment_at_large_twist_is_bounded():
-    # was: 5.5 s a point at (1000, 1.0005)
-    t0 = time.perf_counter()
+def test_increment_at_large_twist_is_bounded(monkeypatch):
+    # was: 5.5 s a point at (1000, 1.0005), a Cholesky factorisation per Newton step of a
+    # ~1400 x 1400 system; the cost is bounded by one basis of bucket(1000) sine modes and the
+    # fixed-point solves (nu - 1 <= FIXED_POINT_MAX_E): no factorisation at all
+    import spectral_rod.increment as inc
+
+    sizes = []
+    real = inc._bucket_increments
+    monkeypatch.setattr(inc, "_bucket_increments",
+                        lambda om, e, n: sizes.append(n) or real(om, e, n))
+    monkeypatch.setattr(inc, "_newton_cholesky", _must_not_run("a Cholesky factorisation"))
     d = sr.critical_load_increment(1000.0, 1.0005)
-    assert time.perf_counter() - t0 < 10.0
+    assert sizes == [inc.bucket(1000.0)] and sizes[0] <= 2 * 1000 / math.pi + 56
     assert 0 < d < 2.5e-4 * 1.01
 
 
@@ -152,3 +167,10 @@ def test_a_two_point_closed_form_mode_is_scaled_like_a_fine_one():
     coarse, fine = (characteristic_mode(root, 3.0, 2.0, points=k) for k in (2, 201))
     assert np.max(np.abs(coarse.x1)) <= 1e-14 and np.max(np.abs(coarse.x2)) <= 1e-14
     assert np.max(np.hypot(fine.x1, fine.x2)) == pytest.approx(1.0, abs=1e-3)
+
+
+def _must_not_run(what: str):
+    """A stand-in that fails the test if `what` is reached."""
+    def fail(*args, **kwargs):
+        raise AssertionError(f"{what} was reached")
+    return fail
