@@ -123,3 +123,16 @@ def test_near_degenerate_route_reports_the_right_family():
         assert np.all(res.method == "increment") and np.all(res.converged)
         for om, fam in zip(twists, res.family, strict=True):
             assert fam == ref(float(om), 1 + e).family, (om, e)
+
+
+@pytest.mark.parametrize("nu", [1.3, 10.0, 100.0])
+def test_large_twist_route_against_the_order_4_expansion(nu):
+    # an independent check of the characteristic route above Omega(L) = 100 (the mpmath
+    # reference shares its formulas): the perturbation series to Omega^-4, whose remainder is
+    # O(Omega^-5) (measured coefficient <= 63 on these points), plus the route's own estimate
+    from spectral_rod.characteristic import double_error_estimate
+
+    om = np.array([300.0, 640.0, 1000.0, 3000.0, 1e4])
+    p = critical_load(om, nu, tol=1e-11)
+    series = np.array([large_twist_expansion(float(w), nu) for w in om])
+    assert np.all(np.abs(p / series - 1) <= 100.0 / om**5 + double_error_estimate(om))
