@@ -278,8 +278,13 @@ def near_degenerate():
 
 
 @pytest.mark.benchmark(group="large twist")
-def test_large_twist_pre_change(benchmark, large_twist, bench_registry):
+def test_large_twist_pre_change(benchmark, large_twist, reference, bench_registry):
     tw, nv = (v[:50] for v in large_twist)
+    # a yardstick that is wrong would inflate the ratio: it must answer correctly too
+    idx = range(0, tw.size, 10)
+    assert max(abs(pre_change_characteristic(tw[i], nv[i]) / reference(float(tw[i]),
+                                                                        float(nv[i])) - 1)
+               for i in idx) <= 1e-12
     _yardstick(benchmark, bench_registry, "large twist",
                lambda: [pre_change_characteristic(a, b) for a, b in zip(tw, nv, strict=True)],
                tw.size, rounds=3)
@@ -298,7 +303,12 @@ def test_large_twist(benchmark, large_twist, reference, bench_registry):
 
 @pytest.mark.benchmark(group="near-degenerate")
 def test_near_degenerate_pre_change(benchmark, near_degenerate, bench_registry):
+    from spectral_rod.characteristic import characteristic_critical_load
+
     tw, nv = (v[:20] for v in near_degenerate)
+    for i in range(0, tw.size, 5):  # the yardstick must answer correctly too
+        ref = float(characteristic_critical_load(tw[i], nv[i], dps=50).p_star - 1)
+        assert abs(pre_change_increment(tw[i], nv[i])[0] / ref - 1) <= 1e-9
     _yardstick(benchmark, bench_registry, "near-degenerate",
                lambda: [pre_change_increment(a, b) for a, b in zip(tw, nv, strict=True)],
                tw.size, rounds=3)

@@ -1,6 +1,8 @@
 """The pre-change per-point routes, kept here only as the yardsticks of the benchmarks for the
 patterns the baseline cannot do (large twist, near-degenerate): the code of the routes before
-issue 14 (commit 5beb5ca), condensed to what they ran. Not part of the library.
+issue 14 (commit 5beb5ca), condensed to what they ran; they reuse the library's basis and
+determinant helpers (unchanged by the speed work), and the benchmarks check their answers
+against the mpmath reference. Not part of the library.
 """
 
 from __future__ import annotations
