@@ -29,7 +29,9 @@ def test_relative_accuracy_on_the_grid(twist):
     for e in NU_MINUS_1:
         ref = ref_increment(twist, 1 + e)
         got = critical_load_increment(twist, 1 + e)
-        assert abs(got / ref - 1) <= 1e-9, (twist, e, got, ref)
+        # the router's increment route (nu - 1 <= 1e-3) is documented to 1e-12; beyond it
+        # p* - 1 comes partly from the characteristic equation in double precision (1e-9)
+        assert abs(got / ref - 1) <= (1e-12 if e <= 1e-3 else 1e-9), (twist, e, got, ref)
 
 
 def test_corner_matches_double_expansion():
