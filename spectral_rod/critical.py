@@ -169,6 +169,8 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
         return None  # includes NaN: the general path names the bad argument
     deg = initial_degree_scalar(om, tol)
     floor = error_estimate_scalar(0.0, om)
+    if floor > tol:
+        return None  # tol below the round-off floor: unconverged, the general path flags it
     while True:  # the degree loop of collocation_critical_load, for one point
         if deg > LEAN_MAX_DEGREE:
             return None

@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 from threadpoolctl import threadpool_info, threadpool_limits
 
-from spectral_rod import critical_load
+from spectral_rod import ConvergenceWarning, critical_load
 from spectral_rod._blas_threads import one_blas_thread
 from spectral_rod.characteristic import characteristic_double_batch
 from spectral_rod.router import NEAR_DEGENERATE, TWIST_ROUTE, route, route_point
@@ -46,6 +46,23 @@ def test_scalar_path_equals_the_array_path_for_one_point():
             b = critical_load(np.array([om]), np.array([nu]), full_output=True)
             assert a.p_star == float(b.p_star[0]) and a.family == b.family[0]
             assert a.method == b.method[0] and a.n == int(b.n[0])
+
+
+def test_scalar_path_does_not_solve_below_the_round_off_floor(monkeypatch):
+    # tol under the floor eps (32 + 0.3 Omega^2) cannot be met: the scalar path must hand the
+    # point to the general path before solving (it solved twice), which warns and flags it
+    import spectral_rod.critical as critical
+
+    converged = critical_load(45.0, 1.5)
+
+    def _must_not_run(*args, **kwargs):
+        raise AssertionError("the scalar path solved a point whose tol is below the floor")
+
+    monkeypatch.setattr(critical, "solve_few", _must_not_run)
+    with pytest.warns(ConvergenceWarning, match="tol=1e-14 not met"):
+        res = critical_load(45.0, 1.5, tol=1e-14, full_output=True)
+    assert not res.converged and res.error_estimate > 1e-14
+    assert abs(res.p_star / converged - 1) <= 1e-13
 
 
 def test_scalar_and_large_batch_agree_to_the_stated_bound(reference):
