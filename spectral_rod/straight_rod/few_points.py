@@ -44,6 +44,7 @@ from spectral_rod.straight_rod.eigensolver import (
     _start_vector,
     pencil_rayleigh_quotient,
 )
+from spectral_rod.straight_rod.resolution import tail_rows, tails_of
 
 __all__ = ["LEAN_MAX_DEGREE", "SQUARING_MAX", "DensePencils", "dense_pencils", "solve_few"]
 
@@ -88,19 +89,7 @@ def dense_pencils(n: int) -> DensePencils:
         pieces[k, f, 0], pieces[k, f, 2] = -SHIFT * b_t, b_t
     start = _start_vector(m)
     return DensePencils(n, pieces.reshape(k + 1, -1), np.stack([op.mass for op in ops]),
-                        np.stack([_tail_rows(op) for op in ops]), start / np.linalg.norm(start))
-
-
-def _tail_rows(op) -> NDArray[np.float64]:
-    """Rows mapping an eigenvector c to the Chebyshev coefficients of its fields' own parity:
-    the last two of omega1, the last two of omega2, then the rest (:func:`mode_tails`' order)."""
-    k1 = op.sizes[0]
-    blocks = []
-    for f, b in enumerate((op.bases[0][0], op.bases[1][1])):
-        rows = np.zeros((b.coefficients.shape[0], op.mass.shape[0]))
-        rows[:, slice(0, k1) if f == 0 else slice(k1, None)] = b.coefficients
-        blocks.append(rows[b.parity::2])
-    return np.vstack([blk[-2:] for blk in blocks] + [blk[:-2] for blk in blocks])
+                        np.stack([tail_rows(op) for op in ops]), start / np.linalg.norm(start))
 
 
 def _inverses(f_t: NDArray[np.float64]) -> NDArray[np.float64] | None:
@@ -168,7 +157,6 @@ def solve_few(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol:
                 lam[big, f] = pencil_rayleigh_quotient(family_operator(n, family), twist[big],
                                                         nu[big], y[big, f], x1[big, f])
         delta = np.abs(theta_2k - theta_k) / np.abs(theta_2k)
-        coef = np.abs(dp.tail_rows @ x1[..., None])[..., 0]
-        tails = coef[..., :4].max(-1) / coef.max(-1)
+        tails = tails_of((dp.tail_rows @ x1[..., None])[..., 0])
     ok = (delta * delta <= rtol) & (theta_2k > 0) & (lam >= SHIFT) & np.isfinite(tails)
     return lam.T, tails.T, ok.all(axis=1)

@@ -9,17 +9,17 @@ calibrated function of that tail plus a measured round-off floor (:func:`error_e
 from __future__ import annotations
 
 import math
+from functools import lru_cache
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from spectral_rod.straight_rod._blas import rows_matmul
-from spectral_rod.straight_rod.discretisation import FamilyOperator
+from spectral_rod.straight_rod.discretisation import FamilyOperator, family_operator
 
 __all__ = ["ERR_LINEAR", "ERR_QUADRATIC", "N_MAX", "N_MIN", "ROUNDOFF_TWIST", "error_estimate",
            "error_estimate_scalar", "initial_degree", "initial_degree_scalar", "mode_tails",
-           "raised_degree",
-           "roundoff_floor", "tail_for_tolerance"]
+           "raised_degree", "roundoff_floor", "tail_for_tolerance", "tail_rows", "tails_of"]
 
 N_MIN, N_MAX = 8, 512
 EPS = float(np.finfo(float).eps)
@@ -111,18 +111,41 @@ def roundoff_floor(twist_angle: ArrayLike) -> NDArray[np.float64]:
     return EPS * (ROUNDOFF_BASE + ROUNDOFF_TWIST * (om * om))
 
 
+def tail_rows(op: FamilyOperator) -> NDArray[np.float64]:
+    """Rows mapping an eigenvector c to the Chebyshev coefficients of its fields' own parity,
+    the tail first: the last two of omega1, the last two of omega2, then the rest (the layout
+    :func:`tails_of` reads). Cached per (n, family)."""
+    return _tail_rows(op.n, op.family)
+
+
+@lru_cache(maxsize=128)
+def _tail_rows(n: int, family: str) -> NDArray[np.float64]:
+    op = family_operator(n, family)
+    k1 = op.sizes[0]
+    blocks = []
+    for f, b in enumerate((op.bases[0][0], op.bases[1][1])):
+        rows = np.zeros((b.coefficients.shape[0], op.mass.shape[0]))
+        rows[:, slice(0, k1) if f == 0 else slice(k1, None)] = b.coefficients
+        blocks.append(rows[b.parity::2])
+    out = np.vstack([blk[-2:] for blk in blocks] + [blk[:-2] for blk in blocks])
+    out.flags.writeable = False
+    return out
+
+
+def tails_of(coefficients: NDArray[np.float64]) -> NDArray[np.float64]:
+    """The coefficient tail from coefficients laid out as :func:`tail_rows` gives them (last
+    axis): the largest of the four tail coefficients relative to the largest of all; inf where
+    the mode is zero."""
+    a = np.abs(coefficients)
+    scale = a.max(axis=-1)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(scale > 0, a[..., :4].max(axis=-1) / scale, np.inf)
+
+
 def mode_tails(op: FamilyOperator, vectors: NDArray[np.float64]) -> NDArray[np.float64]:
     """Coefficient tail of each mode (omega1, omega2): the largest of the last two Chebyshev
     coefficients of each field's parity, relative to the largest coefficient of both fields.
 
     A field that vanishes (omega2 at zero twist) has no meaningful tail of its own.
     """
-    k1 = op.sizes[0]
-    c1 = rows_matmul(vectors[:, :k1], op.bases[0][0].coefficients.T)  # (P, n + 1) Chebyshev
-    c2 = rows_matmul(vectors[:, k1:], op.bases[1][1].coefficients.T)
-    a1 = np.abs(c1[:, op.bases[0][0].parity::2])
-    a2 = np.abs(c2[:, op.bases[1][1].parity::2])
-    scale = np.maximum(a1.max(axis=1), a2.max(axis=1))
-    last = np.maximum(a1[:, -2:].max(axis=1), a2[:, -2:].max(axis=1))
-    with np.errstate(invalid="ignore", divide="ignore"):
-        return np.where(scale > 0, last / scale, np.inf)
+    return tails_of(rows_matmul(vectors, tail_rows(op).T))
