@@ -16,12 +16,11 @@ The closed form of the crossings (beta_1 L = (n - 1) pi, beta_2 L = (n + 1) pi e
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import mpmath as mp
 
-from spectral_rod._validation import check_int, check_real, scalar_nu
+from spectral_rod._validation import TOL_RANGE, check_int, check_real, scalar_nu
 from spectral_rod.characteristic import (
     DPS_RANGE,
     characteristic_critical_load,
@@ -119,13 +118,6 @@ class CollocationCrossing:
     n: int
 
 
-def _resolving_degree(twist_angle: float) -> int:
-    """Even degree resolving the critical mode to round-off at this twist: the mode's largest
-    wavenumber is beta_2 L ~ Omega + pi, and Chebyshev coefficients of cos(k x) are negligible
-    beyond ~1.5 k + 24 terms in double precision (empirical)."""
-    return 2 * math.ceil(0.5 * (0.75 * (abs(twist_angle) + math.pi) + 24))
-
-
 def collocation_crossing(twist_guess: float, nu: float, half_width: float = 0.15
                          ) -> CollocationCrossing:
     """Twist where the two families' lowest collocation eigenvalues meet (Brent's method) in
@@ -134,11 +126,14 @@ def collocation_crossing(twist_guess: float, nu: float, half_width: float = 0.15
     from scipy.optimize import brentq
 
     from spectral_rod.straight_rod import collocation_family_load
+    from spectral_rod.straight_rod.resolution import initial_degree_scalar
 
     half_width = check_real(half_width, "half_width", 0.0, 1.0, lo_open=True)
     twist_guess = check_real(twist_guess, "twist_guess", half_width, 200.0, lo_open=True)
     nu = scalar_nu(nu)
-    n = _resolving_degree(twist_guess + half_width)
+    # one fixed degree for the whole root search (a smooth difference for Brent): the a priori
+    # degree of the collocation solver at its tightest tolerance, at the bracket's far end
+    n = initial_degree_scalar(twist_guess + half_width, TOL_RANGE[0])
 
     def diff(om: float) -> float:
         return (collocation_family_load(om, nu, FAMILIES[0], n)
