@@ -36,12 +36,10 @@ from reproduce.ledger import (
     update_ledger,
 )
 from spectral_rod import (
+    FIGURE1_DOT,
     FIGURE1_NU,
-    FORENSICS_DOT,
-    FORENSICS_PRINT_QUANTUM,
-    FORENSICS_RANGES,
-    FORENSICS_VARIABLES,
-    FORENSICS_Y_PER_P,
+    FIGURE1_PRINT_QUANTUM,
+    FIGURE1_Y_PER_P,
     Forensics,
     analyse_figure1,
     characteristic_critical_load,
@@ -51,10 +49,11 @@ from spectral_rod import (
     picture_lines,
 )
 
-#: The forensics' constants under their short names (picture units and print quantum).
-DOT, PRINT_QUANTUM, RANGES, VARIABLES, Y_PER_P = (
-    FORENSICS_DOT, FORENSICS_PRINT_QUANTUM, FORENSICS_RANGES, FORENSICS_VARIABLES,
-    FORENSICS_Y_PER_P)
+#: The picture's constants under short names: dot diameter and print quantum (picture units),
+#: picture units per unit of p*.
+DOT, PRINT_QUANTUM, Y_PER_P = FIGURE1_DOT, FIGURE1_PRINT_QUANTUM, FIGURE1_Y_PER_P
+#: The twist ranges of Forensics.range_sizes (its order) in words.
+RANGE_WORDS = "below / in / above"
 
 NAME = "figure1"
 SUMMARY = ("straight twisted rod, Eq. inst1: collocation p*(Omega) vs the digitised Figure 1, "
@@ -158,15 +157,16 @@ def draw(table: pd.DataFrame, curves: dict[float, tuple[np.ndarray, np.ndarray]]
 
 CLAIM_ID = "fig1-curves"
 #: Deviation a reader of the printed figure would see: half a plotted dot, in p*.
-VISIBLE = 0.5 * DOT / Y_PER_P
+VISIBLE_DOTS = 0.5
+VISIBLE = VISIBLE_DOTS * DOT / Y_PER_P
 RULE = ("Rule F1 (point-by-point accounting): 'inconclusive' if a digitised point is neither "
         "reproduced by the best model nor in a cluster, or a cluster or missing point has "
         "neither a computed cause nor LaTeX evidence; else 'fails' if a point lies farther "
-        "from the converged p* than half a plotted dot (0.5 picture units = "
+        f"from the converged p* than half a plotted dot ({VISIBLE_DOTS * DOT:g} picture units = "
         f"{VISIBLE:.2e} in p*); else 'holds' if there are no clusters and no missing points "
         "(every point is the procedure applied to the correct root); else 'holds "
         "approximately'.")
-METHODS = (Method("Chebyshev collocation (converged p*, tol 1e-12)", "inst1"),
+METHODS = (Method(f"Chebyshev collocation (converged p*, tol {TOL:g})", "inst1"),
            Method("sign-change scan of the boundary determinant D_sym·D_anti (double "
                   "precision), simulating the authors' procedure",
                   "characteristic equation of inst1 (the paper's method)"),
@@ -177,19 +177,12 @@ METHODS = (Method("Chebyshev collocation (converged p*, tol 1e-12)", "inst1"),
 SAMPLE_EVERY, TRUTH_LIMIT = 60, 1e-11
 
 
-def max_deviation(fx: Forensics, mask: np.ndarray | None = None) -> float:
-    """max |digitised - converged p*| over the data points (selected by mask)."""
-    p = fx.points
-    d = np.abs(p["p_digitised"] - p["p_true"]).to_numpy()
-    return float(d[mask].max()) if mask is not None else float(d.max())
-
-
 def accounting(fx: Forensics) -> dict:
     """The numbers the verdict on Figure 1 is taken from."""
     return {"unaccounted_points": len(fx.unaccounted()),
             "unexplained": (sum(not c["explained"] for c in fx.clusters)
                             + sum(not m["explained"] for m in fx.missing_points)),
-            "max_abs_deviation": max_deviation(fx), "visible_deviation": VISIBLE,
+            "max_abs_deviation": fx.max_deviation(), "visible_deviation": VISIBLE,
             "clusters": len(fx.clusters), "missing_points": len(fx.missing_points)}
 
 
@@ -217,38 +210,69 @@ def cross_links(fx: Forensics) -> list[str]:
 
 
 def _run_phrase(fx: Forensics) -> str:
-    lo, hi = fx.runs["low"], fx.runs["high"]
-    return (f"a sign-change scan of the boundary determinant reported at the bracket's upper "
-            f"end, stepping {lo.variable} ({VARIABLES[lo.variable].description}) by "
-            f"{lo.step:g} at low twist and {hi.variable} ({VARIABLES[hi.variable].description}) "
-            f"by {hi.step:g} at high twist")
+    lo, hi = (fx.run_summary()[r] for r in ("low", "high"))
+    at = (f"reported at {lo['reported_at']}" if lo["reported_at"] == hi["reported_at"] else
+          f"reported at {lo['reported_at']} at low twist and at {hi['reported_at']} at high "
+          f"twist")
+    return (f"a sign-change scan of the boundary determinant {at}, stepping {lo['variable']} "
+            f"({lo['description']}) by {lo['step']:g} at low twist and {hi['variable']} "
+            f"({hi['description']}) by {hi['step']:g} at high twist")
+
+
+def _group_phrase(g: dict) -> str:
+    """One kind of cluster in words (every number from :meth:`Forensics.cluster_groups`)."""
+    off = f"up to {g['max_abs_deviation']:.1e} off"
+    n = g["points"]
+    if g["kind"] == "imaginary-beta1 window":
+        lines = "" if g["sloped_line"] == n else (f", {g['sloped_line']} of them on straight "
+                                                  f"lines between the flanking computed points")
+        return (f"{'straight lines ' if g['sloped_line'] == n else ''}across the imaginary-β₁ "
+                f"window ({n} points{lines}, {off})")
+    if g["kind"] == "double root in one scan step":
+        ns = "/".join(f"{k}π" for k in g["crossings"])
+        flat = "" if g["flat"] == n else f", {g['flat']} of them printed flat"
+        return (f"{'flat values ' if g['flat'] == n else ''}at the {ns} crossing where both "
+                f"mode families' roots fall in one scan step ({n} points{flat}, {off})")
+    return f"{g['kind']} ({n} points, {off})"
 
 
 def readme_sentence(fx: Forensics) -> str:
     """The one-sentence summary of the forensics for the README (every number computed)."""
     p = fx.points
-    win = [c for c in fx.clusters if c["kind"] == "imaginary-beta1 window"]
-    dbl = [c for c in fx.clusters if c["kind"] == "double root in one scan step"]
-    ok_dev = (p["p_digitised"] - p["p_true"]).to_numpy()[p["ok"].to_numpy()]
-    crossed = [m for m in fx.missing_points if m.get("crossing")]
-    miss = "; ".join(f"Ω = {m['twist_angle']:.3f} (ν = {m['nu']})" for m in crossed)
-    miss_n = "/".join(sorted({f"{m['crossing']['n']}π" for m in crossed}))
-    n_ok = int(p["ok"].sum())
+    dev = fx.reproduced_deviation()
+    n_ok = dev["points"]
+    bound = ("every one of them" if dev["within_band"] == n_ok else
+             f"{dev['within_band']} of them")
+    where = (f"so digitised − p* lies in [{dev['min']:.1e}, {dev['max']:.1e}] there (within one "
+             f"scan step plus the print rounding at {bound})" if n_ok else "none of them")
     s = (f"Figure 1 is explained point by point: {n_ok} of {len(p)} plotted points are exactly "
-         f"(to the 0.01 print quantum) what the authors' procedure gives from the converged p* "
-         f"-- {_run_phrase(fx)} -- so digitised − p* lies in [{ok_dev.min():.1e}, "
-         f"{ok_dev.max():.1e}] there (one scan step, plus the print rounding). The other "
-         f"{len(p) - n_ok} were inserted separately (LaTeX lines without the program's "
-         f"trailing blank) where that procedure fails: straight "
-         f"lines across the imaginary-β₁ window ({sum(c['points'] for c in win)} points, up to "
-         f"{max(c['max_abs_deviation'] for c in win):.1e} off)")
-    if dbl:
-        ns = "/".join(sorted({f"{c['crossing']['n']}π" for c in dbl}))
-        s += (f" and flat values at the {ns} crossing where both mode families' roots fall in one "
-              f"scan step ({sum(c['points'] for c in dbl)} points, up to "
-              f"{max(c['max_abs_deviation'] for c in dbl):.1e} off)")
-    s += "." + (f" For the same reason at the {miss_n} crossing no value was printed at {miss}."
-                if miss else "")
+         f"(to the {PRINT_QUANTUM:g} print quantum) what the authors' procedure gives from the "
+         f"converged p* -- {_run_phrase(fx)} -- {where}.")
+    groups = fx.cluster_groups()
+    n_bad = len(p) - n_ok
+    if n_bad:
+        lat = fx.latex_summary()
+        edited = lat["edited_in_clusters"] if lat else None  # clusters: the points not reproduced
+        caused = sum(g["caused"] for g in groups)
+        s += f" The other {n_bad}"
+        if edited == n_bad:
+            s += " were inserted separately (LaTeX lines without the program's trailing blank)"
+        elif edited:
+            s += (f" include {edited} inserted separately (LaTeX lines without the program's "
+                  f"trailing blank)")
+        else:
+            s += " are not reproduced"
+        s += (" where that procedure fails" if caused == n_bad else
+              f"; that procedure fails at {caused} of them")
+        s += ": " + " and ".join(_group_phrase(g) for g in groups) + "."
+    crossed = [m for m in fx.missing_points if m.get("crossing")]
+    if crossed:
+        miss = "; ".join(f"Ω = {m['twist_angle']:.3f} (ν = {m['nu']})" for m in crossed)
+        miss_n = "/".join(sorted({f"{m['crossing']['n']}π" for m in crossed}))
+        why = ("For the same reason" if any(g["kind"] == "double root in one scan step"
+                                            for g in groups)
+               else "Where both mode families' roots fall in one scan step")
+        s += f" {why} at the {miss_n} crossing no value was printed at {miss}."
     return s
 
 
@@ -289,8 +313,8 @@ def forensics_claim(fx: Forensics, summary: pd.DataFrame, truth: CrossCheck) -> 
                  f" Every cluster and missing point is explained "
                  f"({sum(c['explained'] for c in fx.clusters)}/{len(fx.clusters)}, "
                  f"{sum(m['explained'] for m in fx.missing_points)}/{len(fx.missing_points)}); "
-                 f"largest deviation of any point from p* {max_deviation(fx):.2e} = "
-                 f"{max_deviation(fx) * Y_PER_P:.2f} picture units (a dot is {DOT:g}). Related "
+                 f"largest deviation of any point from p* {fx.max_deviation():.2e} = "
+                 f"{fx.max_deviation() * Y_PER_P:.2f} picture units (a dot is {DOT:g}). Related "
                  f"rows: {', '.join(links)}.",
         numbers={**accounting(fx), "headline": readme_sentence(fx), "best": fx.best.name,
                  "reproduced": int(p["ok"].sum()), "points": len(p),
@@ -299,7 +323,7 @@ def forensics_claim(fx: Forensics, summary: pd.DataFrame, truth: CrossCheck) -> 
                               for c in fx.clusters],
                  "missing_points": [{"nu": m["nu"], "twist_angle": m["twist_angle"]}
                                     for m in fx.missing_points],
-                 "max_abs_deviation": max_deviation(fx), "visible_deviation": VISIBLE,
+                 "max_abs_deviation": fx.max_deviation(), "visible_deviation": VISIBLE,
                  "rms_per_curve": {float(k): float(v) for k, v in summary["rms"].items()},
                  "cross_links": links},
         cross_checks=(truth,))
@@ -316,18 +340,16 @@ def _mark_physics(ax, fx: Forensics, nu: float) -> None:
 
 
 def _model_band(ax, fx: Forensics, nu: float) -> None:
-    """The band (0, step] in which a reproduced point's deviation lies, per run."""
+    """The band of one scan step in which a reproduced point's deviation lies, per run."""
     s = fx.sites[(fx.sites["nu"] == nu) & ~fx.sites["off_grid"]].sort_values("twist_angle")
-    for r, h in fx.runs.items():
-        mine = (s["run"] == r).to_numpy()
-        if not mine.any():
-            continue
-        t, p = s["twist_angle"].to_numpy(), s["p_true"].to_numpy()
-        v = VARIABLES[h.variable]
-        top = v.inverse(v.forward(p, t, nu) + h.step, t, nu) - p
-        ax.fill_between(t, 0, top * 1e4, where=mine & s["scan_found"].to_numpy(dtype=bool),
-                        color="0.85", lw=0, step="mid",
-                        label="model band: (0, one scan step]" if r == "high" else None)
+    band = fx.model_band().loc[s.index]
+    lo, hi = band["band_low"].to_numpy(), band["band_high"].to_numpy()
+    for r in fx.runs:
+        mine = (s["run"] == r).to_numpy() & np.isfinite(hi)
+        if mine.any():
+            ax.fill_between(s["twist_angle"], lo * 1e4, hi * 1e4, where=mine, color="0.85",
+                            lw=0, step="mid",
+                            label="model band: one scan step" if r == "high" else None)
 
 
 def draw_forensics(fx: Forensics):
@@ -372,31 +394,25 @@ def draw_forensics(fx: Forensics):
 
 
 def _hypothesis_rows(fx: Forensics) -> list[str]:
-    rows = ["| hypothesis | reproduced | ν = 1.1 | ν = 1.3 | ν = 1.5 | below / in / above window "
-            "| no value (edited lines) |", "|---|---|---|---|---|---|---|"]
+    rows = ["| hypothesis | reproduced | " + " | ".join(f"ν = {n}" for n in FIGURE1_NU)
+            + f" | {RANGE_WORDS} window | no value (edited lines) |",
+            "|---|---|" + "---|" * len(FIGURE1_NU) + "---|---|"]
     p = fx.points
     hand = p["edited"].to_numpy(dtype=bool) if "edited" in p else None
     for h in sorted(fx.hypotheses, key=lambda h: -int(h.ok.sum())):
         j = h.summary(p["nu"].to_numpy(), p["range"].to_numpy(), hand)
-        rng = " / ".join(str(sum(j["by_range"][str(n)][r][0] for n in FIGURE1_NU)) for r in RANGES)
+        rng = " / ".join(str(v) for v in j["by_range_total"].values())
         nv = f"{j['no_value']} ({j['no_value_edited']})" if j["no_value"] else "0"
-        rows.append(f"| `{j['name']}` | {j['reproduced_exactly']} | {j['by_curve']['1.1']} | "
-                    f"{j['by_curve']['1.3']} | {j['by_curve']['1.5']} | {rng} | {nv} |")
+        rows.append(f"| `{j['name']}` | {j['reproduced_exactly']} | "
+                    + " | ".join(str(j["by_curve"][str(n)]) for n in FIGURE1_NU)
+                    + f" | {rng} | {nv} |")
     return rows
 
 
 def _missing_rows(fx: Forensics) -> list[str]:
     """Missing points as bullets; runs of adjacent ones with the same causes share one."""
-    groups: list[list[dict]] = []
-    for m in fx.missing_points:
-        g = groups[-1] if groups else None
-        if g and g[-1]["nu"] == m["nu"] and g[-1]["causes"] == m["causes"] and \
-                abs(m["picture_x"] - g[-1]["picture_x"]) < 0.26:
-            g.append(m)
-        else:
-            groups.append([m])
     rows = []
-    for g in groups:
+    for g in fx.missing_groups():
         twists = ", ".join(f"{m['twist_angle']:.3f}" for m in g[1:])
         more = (f" (The same holds at the {len(g) - 1} adjacent grid points Ω = {twists}: "
                 f"explanations in the JSON.)" if len(g) > 1 else "")
@@ -404,16 +420,21 @@ def _missing_rows(fx: Forensics) -> list[str]:
     return rows
 
 
+def _num(v: float | None, fmt: str = ".3f") -> str:
+    """A number of a table cell, or — where there is none."""
+    return "—" if v is None else format(v, fmt)
+
+
 def forensics_section(fx: Forensics, claim: Claim, seconds: float) -> list[str]:
     """The report's Markdown on the forensics (every number from fx)."""
     p = fx.points
-    sizes = {r: int((p["range"] == r).sum()) for r in RANGES}
+    sizes = fx.range_sizes()
     lines = ["### Every point explained", "", "![Figure 1 forensics](figure1_forensics.png)", "",
              f"Analysis time {seconds:.1f} s (spectral_rod.figure1_forensics; output "
-             "`figure1_forensics.json`). A point is *reproduced* if the model's y, printed with "
-             f"two decimals, equals the picture's ({PRINT_QUANTUM:g} picture units = "
-             f"{PRINT_QUANTUM / Y_PER_P:.1e} in p*). Points below / in / above the imaginary-β₁ "
-             f"window: {sizes['below window']} / {sizes['window']} / {sizes['above window']}.",
+             "`figure1_forensics.json`). A point is *reproduced* if the model's y, printed to "
+             f"the print quantum, equals the picture's ({PRINT_QUANTUM:g} picture units = "
+             f"{PRINT_QUANTUM / Y_PER_P:.1e} in p*). Points {RANGE_WORDS} the imaginary-β₁ "
+             f"window: {' / '.join(str(v) for v in sizes.values())}.",
              "", f"**Best model:** `{fx.best.name}` -- {fx.best.description}. It reproduces "
              f"**{int(p['ok'].sum())} of {len(p)}** points exactly. Where the scan yields no "
              "value it predicts a failure of the authors' procedure; a quantisation model "
@@ -423,15 +444,21 @@ def forensics_section(fx: Forensics, claim: Claim, seconds: float) -> list[str]:
              "| ν | low run: last reproduced Ω | last point ≤ Ω_a | window (Ω_a, Ω_b) | "
              "high run: first reproduced Ω | first point ≥ Ω_b |", "|---|---|---|---|---|---|"]
     for nu, w in fx.switches.items():
-        lines.append(f"| {nu} | {w['low_run_last_reproduced']:.3f} | "
-                     f"{w['last_point_below_window']:.3f} | ({w['window'][0]:.4f}, "
-                     f"{w['window'][1]:.4f}) | {w['high_run_first_reproduced']:.3f} | "
-                     f"{w['first_point_above_window']:.3f} |")
-    lines += ["", "Where each run reproduces the printed value, its scan never evaluated an "
-              "undefined (imaginary-β₁) determinant: " + "; ".join(
-                  f"ν = {nu}: low run {w['low_run_met_imaginary_beta1']} of "
-                  f"{w['low_run_reproduced']}, high run {w['high_run_met_imaginary_beta1']} of "
-                  f"{w['high_run_reproduced']}" for nu, w in fx.switches.items()) + ".",
+        win = fx.windows.get(nu, {})
+        lines.append(f"| {nu} | {_num(w['low_run_last_reproduced'])} | "
+                     f"{_num(w['last_point_below_window'])} | ({_num(win.get('omega_a'), '.4f')}, "
+                     f"{_num(win.get('omega_b'), '.4f')}) | "
+                     f"{_num(w['high_run_first_reproduced'])} | "
+                     f"{_num(w['first_point_above_window'])} |")
+    met = sum(w["low_run_met_imaginary_beta1"] + w["high_run_met_imaginary_beta1"]
+              for w in fx.switches.values())
+    lines += ["", "Where each run reproduces the printed value, its scan "
+              + ("never evaluated" if not met else f"evaluated, at {met} points,")
+              + " an undefined (imaginary-β₁) determinant (points met / reproduced): "
+              + "; ".join(f"ν = {nu}: low run {w['low_run_met_imaginary_beta1']} of "
+                          f"{w['low_run_reproduced']}, high run "
+                          f"{w['high_run_met_imaginary_beta1']} of {w['high_run_reproduced']}"
+                          for nu, w in fx.switches.items()) + ".",
               "", "**Clusters** (runs of points off the best model):", "",
               "| # | ν | Ω(L) | points | max abs deviation | kind |", "|---|---|---|---|---|---|"]
     for k, c in enumerate(fx.clusters, 1):
@@ -489,8 +516,9 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
         f"the {len(table)} digitised points of the paper's picture; degree n from "
         f"{n_used.min()} to {n_used.max()} (median {int(n_used.median())}); largest error "
         f"estimate {table['error_estimate'].max():.1e}. Sweep time {t_sweep:.2f} s.", "",
-        "Deviation computed − digitised (the digitisation is printed to 0.01 picture units, "
-        "i.e. 2.5e-5 in p*; the plotted dots are 1 unit = 2.5e-3 wide):", "",
+        f"Deviation computed − digitised (the digitisation is printed to {PRINT_QUANTUM:g} "
+        f"picture units, i.e. {PRINT_QUANTUM / Y_PER_P:.1e} in p*; the plotted dots are "
+        f"{DOT:g} unit = {DOT / Y_PER_P:.1e} wide):", "",
         "| ν | points | rms | max abs | at Ω(L) | mean | within rms ≤ "
         f"{RMS_LIMIT:g}, max ≤ {MAX_LIMIT:g} |", "|---|---|---|---|---|---|---|"]
     for nu, r in summary.iterrows():

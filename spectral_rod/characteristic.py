@@ -85,10 +85,13 @@ __all__ = [
     "determinants",
     "double_error_estimate",
     "family_critical_load",
+    "family_double_batch",
 ]
 
 #: Scan steps in p (empirical, see the module docstring) and the scan's start below p = 1.
 MP_SCAN_STEP, DOUBLE_SCAN_STEP, SCAN_START = 1.0 / 128, 1.0 / 256, 1.0 - 1e-9
+#: How far past its upper bound ((1 + nu)/2 for p*, nu for one family) a scan runs.
+SCAN_MARGIN = 1e-6
 #: Grid points per scan pass in double precision (all points still scanning at once): smaller
 #: passes waste fewer evaluations on low roots but cost more passes. Measured on 1,000 points,
 #: Omega(L) in [50, 1000], nu in [1, 100]: 33/65/129/257 -> 36/30/30/34 us a point.
@@ -111,9 +114,19 @@ def entire_cs(x: mp.mpf, t: mp.mpf | None = None) -> tuple[mp.mpf, mp.mpf]:
 
 
 def entire_cs_double(x: ArrayLike, t: ArrayLike = 0.5
-                     ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """:func:`entire_cs` for numpy arrays (broadcast X and t; cosh, sinh where X <= 0)."""
-    x, t = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(t, dtype=float))
+                     ) -> tuple[NDArray[np.floating], NDArray[np.floating]]:
+    """:func:`entire_cs` for numpy arrays (broadcast X and t; cosh, sinh where X <= 0).
+
+    Computed in X's precision: float32 X gives float32 results (t converted to it), anything
+    else float64.
+
+    >>> c, s = entire_cs_double(np.array([-4.0, 0.0, 4.0], dtype=np.float32))
+    >>> c.dtype, [round(float(v), 4) for v in c], [round(float(v), 4) for v in s]
+    (dtype('float32'), [1.5431, 1.0, 0.5403], [0.5876, 0.5, 0.4207])
+    """
+    x = np.asarray(x)
+    dtype = np.float32 if x.dtype == np.float32 else np.float64
+    x, t = np.broadcast_arrays(x.astype(dtype, copy=False), np.asarray(t, dtype=dtype))
     r = np.sqrt(np.abs(x))
     pos = x > 0
     rp, rn = np.where(pos, r, 0.0), np.where(pos, 0.0, r)  # hyperbolic part only where X <= 0
@@ -239,7 +252,7 @@ def characteristic_critical_load(twist_angle: float, nu: float, *, dps: int = 40
                                                         1.0)
     if nu_f == 1.0 or om_f == 0.0:
         return _closed_form_root("symmetric", om_f, nu_f, dps)
-    top = (1 + nu_f) / 2 + 1e-6 if p_max is None else p_max
+    top = (1 + nu_f) / 2 + SCAN_MARGIN if p_max is None else p_max
     return _mp_root(FAMILIES, om_f, nu_f, dps, scan_step, top)
 
 
@@ -261,7 +274,7 @@ def family_critical_load(family: str, twist_angle: float, nu: float, *, dps: int
                                                         1.0)
     if nu_f == 1.0 or om_f == 0.0:
         return _closed_form_root(family, om_f, nu_f, dps)
-    top = nu_f + 1e-6 if p_max is None else p_max
+    top = nu_f + SCAN_MARGIN if p_max is None else p_max
     return _mp_root((family,), om_f, nu_f, dps, scan_step, top)
 
 
@@ -278,6 +291,30 @@ def characteristic_double(twist_angle: float, nu: float) -> tuple[float, str]:
     return float(p[0]), FAMILIES[int(fam[0])]
 
 
+def _double_scan(om: NDArray[np.float64], nv: NDArray[np.float64], top: NDArray[np.float64],
+                 family: NDArray[np.int_] | None = None
+                 ) -> tuple[NDArray[np.float64], NDArray[np.int_]]:
+    """:func:`~spectral_rod.sign_scan.lowest_roots` of (D_sym, D_anti) at the points (om, nv),
+    from :data:`SCAN_START` to `top` in steps :data:`DOUBLE_SCAN_STEP`, brackets refined by
+    :func:`~spectral_rod.sign_scan.bracketed_roots`: the lowest root of either family and its
+    index, or (`family` given) the lowest root of family[j] alone at point j (index 0 where
+    found, -1 where not)."""
+    def values(points, grid):
+        d = np.stack(determinants(grid, om[points, None], nv[points, None]), axis=1)
+        return d if family is None else d[np.arange(points.size), family[points]][:, None]
+
+    def refine(points, k, a, b):
+        fam = k if family is None else family[points]
+
+        def f(j, x):
+            d = determinants(x, om[points[j]], nv[points[j]])
+            return np.where(fam[j] == 0, d[0], d[1])
+        return bracketed_roots(f, a, b)
+
+    return lowest_roots(values, refine, np.full(om.size, SCAN_START), top,
+                        np.full(om.size, DOUBLE_SCAN_STEP), chunk=DOUBLE_CHUNK)
+
+
 def characteristic_double_batch(twist: NDArray[np.float64], nu: NDArray[np.float64]
                                 ) -> tuple[NDArray[np.float64], NDArray[np.int_]]:
     """Lowest root p* of the two determinants in double precision, and its family index (0
@@ -291,24 +328,35 @@ def characteristic_double_batch(twist: NDArray[np.float64], nu: NDArray[np.float
     (any twist works).
     """
     om, nv = np.abs(np.asarray(twist, dtype=float)), np.asarray(nu, dtype=float)
-    top = (1.0 + nv) / 2.0 + 1e-6
-
-    def values(points, grid):
-        return np.stack(determinants(grid, om[points, None], nv[points, None]), axis=1)
-
-    def refine(points, k, a, b):
-        def f(j, x):
-            d = determinants(x, om[points[j]], nv[points[j]])
-            return np.where(k[j] == 0, d[0], d[1])
-        return bracketed_roots(f, a, b)
-
-    p, fam = lowest_roots(values, refine, np.full(om.size, SCAN_START), top,
-                          np.full(om.size, DOUBLE_SCAN_STEP), chunk=DOUBLE_CHUNK)
+    top = (1.0 + nv) / 2.0 + SCAN_MARGIN
+    p, fam = _double_scan(om, nv, top)
     if (fam < 0).any():
         i = int(np.flatnonzero(fam < 0)[0])
         raise RootNotFoundError(f"no root of the characteristic equation for p* in "
                                 f"[1, {top[i]:g}] (twist_angle={om[i]}, nu={nv[i]})")
     return p, fam
+
+
+def family_double_batch(twist: NDArray[np.float64], nu: NDArray[np.float64]
+                        ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Lowest root of each family, (p_sym, p_anti), in double precision at flat arrays of points
+    (|Omega|, nu), all points and both families in one scan (:func:`characteristic_double_batch`
+    per family; min(p_sym, p_anti) = p*).
+
+    Each family is scanned up to its bound nu (:func:`family_critical_load`); NaN where a family
+    has no root below it. Intended for Omega != 0 and nu > 1 (where the Euler loads are not
+    repeated roots).
+
+    >>> p_sym, p_anti = family_double_batch(np.array([0.5]), np.array([1.5]))
+    >>> round(float(p_sym[0]), 7), round(float(p_anti[0]), 4)
+    (1.0024446, 1.4928)
+    """
+    om, nv = np.abs(np.asarray(twist, dtype=float)), np.asarray(nu, dtype=float)
+    n = om.size
+    both_om, both_nu = np.concatenate([om, om]), np.concatenate([nv, nv])
+    p, found = _double_scan(both_om, both_nu, both_nu + SCAN_MARGIN, np.repeat([0, 1], n))
+    p = np.where(found >= 0, p, np.nan)
+    return p[:n], p[n:]
 
 
 def double_error_estimate(twist_angle: ArrayLike) -> NDArray[np.float64]:

@@ -28,36 +28,92 @@ from spectral_rod.errors import ReferenceDataError
 
 FIGURE1_NU = (1.1, 1.3, 1.5)
 COLUMNS = ("curve", "nu", "picture_x", "picture_y", "twist_angle", "p_star")
-#: Quantum of the picture's coordinates (printed with two decimals).
+#: Picture x units per radian of Omega(L), and picture y units per unit of p*: Omega(L) = x/10,
+#: p* = 1 + y/400 (the schema's ``x-figure1.axes``).
+X_PER_TWIST, Y_PER_P = 10.0, 400.0
+#: Quantum of the picture's coordinates (printed with two decimals; the schema's
+#: ``picture_unit_step``): the print quantum.
 PICTURE_STEP = 0.01
-_PUT = re.compile(r"\\put\(\s*([-+0-9.]+)\s*,\s*([-+0-9.]+)\s*\)\s*\{\\circle\*")
+#: Diameter of a plotted dot (``\circle*{1.0}``) in picture units: what a reader can see (the
+#: schema's ``dot_diameter``).
+DOT_DIAMETER = 1.0
+#: One point line of the picture: ``\put(x, y){\circle*...``.
+_PUT = re.compile(r"^\\put\(\s*([-+0-9.]+)\s*,\s*([-+0-9.]+)\s*\)\s*\{\\circle\*")
 
 
 def twist_from_picture(x: float | np.ndarray) -> float | np.ndarray:
-    """Omega(L) from the picture's x coordinate (the axis runs 0..100 for 0.0..10.0)."""
-    return x / 10.0
+    """Omega(L) from the picture's x coordinate (the axis runs 0..100 for 0.0..10.0).
+
+    >>> twist_from_picture(31.25)
+    3.125
+    """
+    return x / X_PER_TWIST
 
 
 def p_star_from_picture(y: float | np.ndarray) -> float | np.ndarray:
-    """p* from the picture's y coordinate (the axis runs 0..100 for 1.00..1.25)."""
-    return 1.0 + y / 400.0
+    """p* from the picture's y coordinate (the axis runs 0..100 for 1.00..1.25).
+
+    >>> p_star_from_picture(10.0)
+    1.025
+    """
+    return 1.0 + y / Y_PER_P
+
+
+def picture_y_from_p_star(p: float | np.ndarray) -> float | np.ndarray:
+    """The picture's y coordinate of the load p* (the inverse of :func:`p_star_from_picture`).
+
+    >>> round(float(picture_y_from_p_star(p_star_from_picture(18.98))), 9)
+    18.98
+    """
+    return Y_PER_P * (np.asarray(p, dtype=float) - 1.0)
+
+
+def picture_environment(tex: str) -> str:
+    r"""The lines from ``\begin{picture}`` to ``\end{picture}`` (inclusive), verbatim.
+
+    >>> picture_environment(figure1_picture()).count(r"\circle*")
+    1201
+    """
+    if not isinstance(tex, str):
+        raise TypeError(f"tex must be the LaTeX source as a str, got {type(tex).__name__}")
+    lines = tex.splitlines(keepends=True)
+    begin = next((i for i, ln in enumerate(lines) if r"\begin{picture}" in ln), None)
+    end = next((i for i, ln in enumerate(lines) if r"\end{picture}" in ln), None)
+    if begin is None or end is None or end < begin:
+        raise ValueError("tex: no \\begin{picture} ... \\end{picture} environment found")
+    return "".join(lines[begin:end + 1])
+
+
+def picture_points(tex: str) -> pd.DataFrame:
+    r"""One row per ``\put(x, y){\circle*...}`` line of the picture environment, in source
+    order: curve (1..3, a new curve where x falls back to the left), line (1-based line number
+    within the environment), picture_x, picture_y, text (the line verbatim). The one parser of
+    the picture (:func:`parse_figure1`, :func:`spectral_rod.figure1_forensics.picture_lines`).
+
+    >>> picture_points(figure1_picture()).groupby("curve").size().tolist()
+    [402, 399, 400]
+    """
+    env = picture_environment(tex).splitlines()
+    rows, curve, last_x = [], 0, np.inf
+    for k, text in enumerate(env):
+        m = _PUT.match(text)
+        if not m:
+            continue
+        x, y = float(m.group(1)), float(m.group(2))
+        if x < last_x:  # x restarts at the left edge: next curve
+            curve += 1
+        last_x = x
+        rows.append((curve, k + 1, x, y, text))
+    if not rows:
+        raise ValueError("no \\put(x,y){\\circle*} points found in the picture environment")
+    if curve != len(FIGURE1_NU):
+        raise ValueError(f"expected {len(FIGURE1_NU)} curves in Figure 1, found {curve}")
+    return pd.DataFrame(rows, columns=["curve", "line", "picture_x", "picture_y", "text"])
 
 
 def parse_figure1(tex: str) -> pd.DataFrame:
     """All filled circles of the paper's picture environment as a DataFrame (COLUMNS)."""
-    body = tex[tex.index(r"\begin{picture}"):tex.index(r"\end{picture}")]
-    pts = [(float(a), float(b)) for a, b in _PUT.findall(body)]
-    if not pts:
-        raise ValueError("no \\put(x,y){\\circle*} points found in the picture environment")
-    curve, rows, last_x = 0, [], np.inf
-    for x, y in pts:
-        if x < last_x:  # x restarts at the left edge: next curve
-            curve += 1
-        last_x = x
-        rows.append((curve, x, y))
-    if curve != len(FIGURE1_NU):
-        raise ValueError(f"expected {len(FIGURE1_NU)} curves in Figure 1, found {curve}")
-    df = pd.DataFrame(rows, columns=["curve", "picture_x", "picture_y"])
+    df = picture_points(tex)[["curve", "picture_x", "picture_y"]]
     df["nu"] = np.asarray(FIGURE1_NU)[df["curve"] - 1]
     df["twist_angle"] = twist_from_picture(df["picture_x"])
     df["p_star"] = p_star_from_picture(df["picture_y"])
@@ -134,7 +190,8 @@ def _check_consistency(num: pd.DataFrame, path: Path) -> None:
     if not (np.allclose(num["twist_angle"], twist_from_picture(num["picture_x"]))
             and np.allclose(num["p_star"], p_star_from_picture(num["picture_y"]))):
         raise ReferenceDataError(f"{path}: twist_angle/p_star do not follow from "
-                                 f"picture_x/picture_y (Omega = x/10, p* = 1 + y/400)")
+                                 f"picture_x/picture_y (Omega = x/{X_PER_TWIST:g}, p* = 1 + "
+                                f"y/{Y_PER_P:g})")
     xy = num[["picture_x", "picture_y"]].to_numpy() / PICTURE_STEP
     if not np.allclose(xy, np.round(xy), rtol=0, atol=1e-6):
         raise ReferenceDataError(f"{path}: picture coordinates are not on the "

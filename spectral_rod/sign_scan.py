@@ -63,7 +63,7 @@ def lowest_roots(values: Callable[[NDArray[np.int_], NDArray[Any]], Any],
     comp = np.full(lo.size, -1)
     active = np.arange(lo.size)
     prev_x = prev = None
-    for start in range(0, int(count.max()), chunk):
+    for start in range(0, int(count.max(initial=0)), chunk):  # no points: nothing to scan
         if start >= MAX_SCAN_POINTS:
             raise ValueError(f"scan in steps of {float(step.min()):g} found no root in "
                              f"{MAX_SCAN_POINTS} points (from {float(lo.min()):g})")

@@ -386,3 +386,14 @@ def test_ledger_row(fx):
     row = Claim(id="x", section="s", claim="c", test="t", evidence="e", verdict="inconclusive",
                 scene="figure1")
     assert row.methods == []
+
+
+def test_partial_inputs_do_not_crash(points):
+    with pytest.raises(ValueError, match="no digitised points"):
+        analyse_figure1(points.iloc[:0])
+    # one curve, its first points only: no clusters, no missing points, one switch record
+    part = analyse_figure1(points[points["curve"] == 1].head(40).reset_index(drop=True))
+    assert (part.clusters, part.missing_points, list(part.switches)) == ([], [], [1.1])
+    assert "point by point: 40 of 40 plotted" in figure1.readme_sentence(part)
+    assert missing_grid_points(np.array([0.25]))[2] is None
+    assert [a.size for a in family_loads(np.array([]), np.array([]))] == [0, 0]

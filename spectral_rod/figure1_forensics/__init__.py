@@ -10,21 +10,24 @@ computed. Nothing below is fitted to a single point; every interval and count co
 
 Models tested
 -------------
-* **Quantisation** of a variable v(p*) -- p*, p* - 1, lambda = pi^2 p*, the picture y =
-  400 (p* - 1), and the two coefficients of Eq. ``inst1``, P - A2 omega30^2 and P - A1 omega30^2
+* **Quantisation** of a variable v(p*) -- p*, lambda = pi^2 p*, the picture y = 400 (p* - 1)
+  (p* - 1 needs no variable of its own: its lattices are p*'s, 1 being a multiple of every
+  candidate step), and the two coefficients of Eq. ``inst1``, P - A2 omega30^2 and P - A1 omega30^2
   (lambda - nu Omega^2 and lambda - Omega^2 in units A1/L^2) -- onto the lattice k h (nearest,
   floor, ceil, truncation), h on a fixed grid of candidate steps (m 10^e, m in 1, 2, 2.5, 4, 5),
   then printed with two decimals. The step is fitted per variable and rounding rule.
 * **Sign-change scan** (the paper's "standard methods"): step v through the lattice, evaluate
   the sign of the 4x4 boundary determinant (= 16 Omega^2 D_sym D_anti,
-  :func:`spectral_rod.characteristic.boundary_determinant_4x4`; here D_sym D_anti in double
+  :func:`spectral_rod.closed_form.boundary_determinant_4x4`; here D_sym D_anti in double
   precision from :func:`spectral_rod.characteristic.determinants`), stop at the first sign change
   and report the bracket's upper end, lower end, midpoint or linear interpolation. Variants:
   the determinant written with *real* wavenumbers beta_k = sqrt(X_k) (undefined, NaN, where
   X_- < 0), single precision, and the lattice start v >= 0 for the coefficient variables (the
-  scan begins where the coefficient vanishes). Unlike the quantisation models the scan does not
-  use the converged p*: it can fail (no sign change, or a wrong root), and where it fails is a
-  prediction to compare with where the data are irregular.
+  scan begins where the coefficient vanishes). Each scan variable is stepped on the lattice that
+  the ceil quantisation of the converged p* fits best (so the step comes from p*), but the
+  scan's value does not: it comes from the determinant's signs alone, so the scan can fail (no
+  sign change, or a wrong root), and where it fails is a prediction to compare with where the
+  data are irregular.
 * **Two runs**: one model below a switch twist and another above it, the switch fitted per
   curve (every split of the sorted twists is tried), for every ordered pair of hypotheses.
 
@@ -54,20 +57,18 @@ One step of the analysis each: :mod:`.picture` (the LaTeX lines as data), :mod:`
 (wavenumbers and family loads at a point), :mod:`.quantisation`, :mod:`.scan` (the sign-change
 procedure), :mod:`.runs` (switches and clusters), :mod:`.hypotheses` (all models fitted),
 :mod:`.explain` (causes of each cluster and missing point), :mod:`.analysis`
-(:func:`analyse_figure1`). The names below are re-exported here.
+(:func:`analyse_figure1`). The public names below are re-exported here; the helpers stay in
+their modules.
 """
 
 from __future__ import annotations
 
 from spectral_rod.figure1_forensics.analysis import Forensics, analyse_figure1
 from spectral_rod.figure1_forensics.explain import (
-    LineFit,
     explain_cluster,
     explain_missing,
-    point_causes,
     site_physics,
     straight_line,
-    value_rules,
 )
 from spectral_rod.figure1_forensics.hypotheses import (
     best_two_runs,
@@ -75,53 +76,28 @@ from spectral_rod.figure1_forensics.hypotheses import (
     scan_hypotheses,
     variant_hypotheses,
 )
-from spectral_rod.figure1_forensics.physics import (
-    RANGES,
-    family_loads,
-    twist_ranges,
-    wavenumbers_squared,
-)
+from spectral_rod.figure1_forensics.physics import family_loads, twist_ranges
 from spectral_rod.figure1_forensics.picture import (
-    DOT,
-    PRINT_QUANTUM,
-    Y_PER_P,
     missing_grid_points,
     off_grid_runs,
     picture_environment,
     picture_lines,
 )
 from spectral_rod.figure1_forensics.quantisation import (
-    ROUNDINGS,
-    VARIABLES,
     Hypothesis,
-    Variable,
     fit_quantisation,
     printed,
-    quantisation_model,
     quantise,
     reproduced,
 )
 from spectral_rod.figure1_forensics.runs import MERGE_GAP, find_runs, fit_switch
-from spectral_rod.figure1_forensics.scan import (
-    ScanResult,
-    determinant_product,
-    scan_model,
-    scan_sign_change,
-)
+from spectral_rod.figure1_forensics.scan import ScanResult, determinant_product, scan_sign_change
 
 __all__ = [
-    "DOT",
     "MERGE_GAP",
-    "PRINT_QUANTUM",
-    "RANGES",
-    "ROUNDINGS",
-    "VARIABLES",
-    "Y_PER_P",
     "Forensics",
     "Hypothesis",
-    "LineFit",
     "ScanResult",
-    "Variable",
     "analyse_figure1",
     "best_two_runs",
     "determinant_product",
@@ -135,19 +111,14 @@ __all__ = [
     "off_grid_runs",
     "picture_environment",
     "picture_lines",
-    "point_causes",
     "printed",
     "quantisation_hypotheses",
-    "quantisation_model",
     "quantise",
     "reproduced",
     "scan_hypotheses",
-    "scan_model",
     "scan_sign_change",
     "site_physics",
     "straight_line",
     "twist_ranges",
-    "value_rules",
     "variant_hypotheses",
-    "wavenumbers_squared",
 ]

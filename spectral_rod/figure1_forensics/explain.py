@@ -14,23 +14,21 @@ from numpy.typing import NDArray
 from scipy.optimize import linprog
 
 from spectral_rod.asymptotics import crossing_closed_form, imaginary_beta1_window
-from spectral_rod.critical import critical_load
 from spectral_rod.figure1_forensics.physics import family_loads, twist_ranges, wavenumbers_squared
-from spectral_rod.figure1_forensics.picture import PRINT_QUANTUM, X_PER_TWIST, Y_PER_P
 from spectral_rod.figure1_forensics.quantisation import (
     VARIABLES,
     Hypothesis,
-    _y_of_p,
     printed,
     quantise,
     reproduced,
 )
 from spectral_rod.figure1_forensics.runs import chord_values
+from spectral_rod.figure_data import PICTURE_STEP, X_PER_TWIST, picture_y_from_p_star
 
-
-def _default_p_star(twist: NDArray, nu: NDArray) -> NDArray:
-    """The converged p* (collocation to 1e-12, the package's production route)."""
-    return np.asarray(critical_load(twist, nu, tol=1e-12), dtype=float)
+#: Two computations of p* at a site (collocation, the families' lowest roots) must agree to this.
+_P_STAR_AGREEMENT = 1e-9
+#: A fitted line with |slope| (picture units per picture unit) below this is horizontal.
+_FLAT_SLOPE = 1e-9
 
 
 def _same_step(p_a: NDArray, p_b: NDArray, twist: NDArray, nu: NDArray, variable: str,
@@ -57,23 +55,15 @@ def site_physics(sites: pd.DataFrame, runs: dict[str, Hypothesis]) -> pd.DataFra
     out["in_window"] = twist_ranges(t, nu) == "window"
     out["p_sym"], out["p_anti"] = family_loads(t, nu)
     gap = np.abs(np.fmin(out["p_sym"], out["p_anti"]) - p)
-    if not (gap < 1e-9).all():  # two independent routes to p* must agree
-        raise RuntimeError(f"family loads disagree with p_true at {(~(gap < 1e-9)).sum()} "
-                           f"sites (max {np.nanmax(gap):.1e})")
+    if not (gap < _P_STAR_AGREEMENT).all():  # two independent routes to p* must agree
+        raise RuntimeError(f"family loads disagree with p_true at "
+                           f"{(~(gap < _P_STAR_AGREEMENT)).sum()} sites (max "
+                           f"{np.nanmax(gap):.1e})")
     for r, h in runs.items():
         out[f"{r}_double_root"] = _same_step(out["p_sym"].to_numpy(), out["p_anti"].to_numpy(),
                                              t, nu, h.variable, h.step)
         out[f"{r}_root_below_start"] = VARIABLES[h.variable].forward(p, t, nu) < 0
     return out
-
-
-def _flanks(curve_rows: pd.DataFrame, first: int, last: int, ok: NDArray[np.bool_]
-            ) -> tuple[pd.Series | None, pd.Series | None]:
-    """The nearest reproduced points before `first` and after `last` (positions in curve_rows)."""
-    before = [i for i in range(first - 1, -1, -1) if ok[i]]
-    after = [i for i in range(last + 1, len(curve_rows)) if ok[i]]
-    return (curve_rows.iloc[before[0]] if before else None,
-            curve_rows.iloc[after[0]] if after else None)
 
 
 def _lower_end_rule(rows: pd.DataFrame, runs: dict[str, Hypothesis]) -> NDArray[np.bool_]:
@@ -85,7 +75,7 @@ def _lower_end_rule(rows: pd.DataFrame, runs: dict[str, Hypothesis]) -> NDArray[
         sel = (rows["run"] == r).to_numpy() & rows[f"{r}_double_root"].to_numpy()
         var = VARIABLES[h.variable]
         below = quantise(var.forward(lo, t, nu), h.step, "ceil") - h.step
-        out |= sel & reproduced(_y_of_p(var.inverse(below, t, nu)), y)
+        out |= sel & reproduced(picture_y_from_p_star(var.inverse(below, t, nu)), y)
     return out
 
 
@@ -115,13 +105,16 @@ def _minimax_line(x: NDArray, y: NDArray) -> tuple[float, float, float]:
 
 
 def straight_line(x: NDArray, y: NDArray, flank_x: NDArray, flank_y: NDArray,
-                  tol: float = PRINT_QUANTUM / 2) -> LineFit:
+                  tol: float = PICTURE_STEP / 2) -> LineFit:
     """Is the cluster a straight line between its flanks, up to rounding?
 
     The minimax line through the cluster points and the two flanks; while its residual exceeds
     ``tol`` (+1e-9) the cluster point farthest from the chord between the flanks (computed,
-    trusted points) is set aside as a slip and the line refitted. Example: x = [1, 2,
-    3], y = [1.0, 2.5, 3.0], flanks (0, 0), (4, 4) -> on_line = [True, False, True].
+    trusted points) is set aside as a slip and the line refitted.
+
+    >>> fit = straight_line([1, 2, 3], [1.0, 2.5, 3.0], np.array([0.0, 4.0]), np.array([0.0, 4.0]))
+    >>> fit.on_line.tolist(), round(fit.b, 9), bool(abs(fit.residual) < 1e-9)
+    ([True, False, True], 1.0, True)
     """
     x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
     chord = chord_values(x, (flank_x[0], flank_y[0]), (flank_x[-1], flank_y[-1]))
@@ -173,7 +166,8 @@ def point_causes(rows: pd.DataFrame) -> dict[str, NDArray[np.bool_]]:
     return causes
 
 
-def _twists(rows: pd.DataFrame, mask: NDArray[np.bool_]) -> list[float]:
+def twist_list(rows: pd.DataFrame, mask: NDArray[np.bool_]) -> list[float]:
+    """The twists of the rows selected by `mask` (rounded to 1e-6, for JSON and text)."""
     return [round(float(v), 6) for v in rows["twist_angle"].to_numpy()[mask]]
 
 
@@ -197,7 +191,7 @@ def _cause_sentences(rows: pd.DataFrame, causes: dict[str, NDArray[np.bool_]],
         out.append(f"β₁ is imaginary (X₋ < 0 at p*) at {im.sum()} of {n}: the closed-form window "
                    f"for ν = {nu} is {w.omega_a:.4f} < Ω(L) < {w.omega_b:.4f} "
                    f"(asymptotics.imaginary_beta1_window)"
-                   + (f"; outside it: Ω = {_twists(rows, ~im)}" if (~im).any() else ""))
+                   + (f"; outside it: Ω = {twist_list(rows, ~im)}" if (~im).any() else ""))
         if "low" in runs and rows["low_root_below_start"].any():
             var = VARIABLES[runs["low"].variable]
             out.append(f"the low-twist run scans {var.name} ({var.description}) upward from 0,"
@@ -209,9 +203,10 @@ def _cause_sentences(rows: pd.DataFrame, causes: dict[str, NDArray[np.bool_]],
         h = runs[run]
         c = _nearest_crossing(nu, t0, t1)
         where = "inside the cluster" if c["inside"] else f"{c['distance']:.3f} away"
+        tw = twist_list(rows, dr)
         out.append(f"both families' lowest roots lie in one step of the {run}-twist lattice "
                    f"({h.variable} = k·{h.step:g}) at {dr.sum()} of {n} (Ω = "
-                   f"{_twists(rows, dr)[0]:.3f}…{_twists(rows, dr)[-1]:.3f}), so D_sym·D_anti "
+                   f"{tw[0]:.3f}…{tw[-1]:.3f}), so D_sym·D_anti "
                    f"(the 4x4 determinant / 16Ω²) changes sign twice within one step; the family"
                    f" crossing Ω_{c['n']} = {c['twist']:.4f} (p* = {c['p_star']:.6f}, "
                    f"crossing_closed_form) is {where}")
@@ -232,7 +227,7 @@ def _value_sentences(rows: pd.DataFrame, rules: dict[str, NDArray[np.bool_]],
     x, y = rows["picture_x"].to_numpy(), rows["picture_y"].to_numpy()
     on_line = fit is not None and fit.on_line.sum() > n / 2
     if on_line:
-        shape = ("a horizontal line" if abs(fit.b) < 1e-9 else
+        shape = ("a horizontal line" if abs(fit.b) < _FLAT_SLOPE else
                  f"a straight line (slope {fit.b * X_PER_TWIST:.3f} per rad)")
         s = (f"{shape} through the flanking computed points (x, y) = "
              f"({left['picture_x']:.2f}, {left['picture_y']:.2f}) and "
@@ -242,7 +237,7 @@ def _value_sentences(rows: pd.DataFrame, rules: dict[str, NDArray[np.bool_]],
         for i in np.flatnonzero(~fit.on_line):
             line_y = fit.a + fit.b * x[i]
             s += (f"; x = {x[i]:.2f} is printed {y[i]:.2f} where the line gives {line_y:.3f} "
-                  f"({(y[i] - line_y) / PRINT_QUANTUM:+.1f} quanta: an isolated slip)")
+                  f"({(y[i] - line_y) / PICTURE_STEP:+.1f} quanta: an isolated slip)")
         out.append(s)
     low, flat = rules["lower end of the shared step"], rules["flank value"]
     if low.any():
@@ -255,7 +250,7 @@ def _value_sentences(rows: pd.DataFrame, rules: dict[str, NDArray[np.bool_]],
     if rest.any():
         out.append("matched by no value rule: " + ", ".join(
             f"x = {r['picture_x']:.2f} printed {r['picture_y']:.2f} (p* gives "
-            f"{Y_PER_P * (r['p_true'] - 1):.3f})" for _, r in rows[rest].iterrows()))
+            f"{picture_y_from_p_star(r['p_true']):.3f})" for _, r in rows[rest].iterrows()))
     return out
 
 
@@ -269,8 +264,9 @@ def _latex_sentence(rows: pd.DataFrame, with_blank: int | None,
     n, h = len(rows), int(rows["edited"].sum())
     first, last = int(rows["line"].iloc[0]), int(rows["line"].iloc[-1])
     s = (f"LaTeX (picture lines {first}–{last}): {h} of {n} lines lack the trailing blank "
-         f"that {with_blank} of the picture's lines end in (inserted separately from the "
-         f"scan program's output)")
+         f"that {with_blank} of the picture's lines end in"
+         + (" (inserted separately from the scan program's output)" if h == n else
+            f" (those {h} inserted separately from the scan program's output)" if h else ""))
     blank = rows["after_blank_line"].to_numpy(dtype=bool)
     if blank[0]:
         s += "; a blank line precedes the block"
@@ -300,8 +296,14 @@ def _uncaused_sentence(rows: pd.DataFrame, causes: dict[str, NDArray[np.bool_]],
         got = ", ".join(f"{k}-twist scan {r[f'{k}_scan_y']:.2f}" for k in runs
                         if np.isfinite(r[f"{k}_scan_y"]))
         items.append(f"Ω = {r['twist_angle']:.3f}: printed {r['picture_y']:.2f}, {got}")
-    return ("The procedure does not fail at " + "; ".join(items)
-            + " -- these values were replaced together with their neighbours.")
+    s = "The procedure does not fail at " + "; ".join(items)
+    if "edited" in rows:
+        m, h = int(none.sum()), int(rows["edited"].to_numpy(dtype=bool)[none].sum())
+        s += (f" -- its line {'lacks' if h else 'ends in'} the program's trailing blank"
+              if m == 1 else f" -- {h} of these {m} lines lack the program's trailing blank")
+        if h == m and (~none).any():
+            s += ": inserted together with the neighbours where the procedure fails"
+    return s + "."
 
 
 def _cluster_kind(causes: dict[str, NDArray[np.bool_]]) -> str:
@@ -324,7 +326,10 @@ def explain_cluster(rows: pd.DataFrame, left: pd.Series | None, right: pd.Series
     left/right: the flanking reproduced points; with_blank: lines of the picture in the
     program's format, off_runs: the curve's :func:`off_grid_runs` (both for the text).
     'explained' is True iff every point has a computed cause or is an edited line;
-    'window_points' lists only points inside the window.
+    'window_points' lists only points inside the window; 'caused_points' counts the points with
+    a computed failure of the procedure; 'printed_as' counts the points on a sloped straight
+    line ('sloped line') and those printed flat ('flat': on a horizontal line, or a flanking
+    value).
     """
     nu = float(rows["nu"].iloc[0])
     causes = point_causes(rows)
@@ -332,6 +337,8 @@ def explain_cluster(rows: pd.DataFrame, left: pd.Series | None, right: pd.Series
     covered = np.logical_or.reduce(list(causes.values()))
     dev = np.abs(rows["p_digitised"] - rows["p_true"]).to_numpy()
     physics = [v for k, v in causes.items() if k != "edited line"]
+    on_line = rules.get("straight line", np.zeros(len(rows), dtype=bool))
+    horizontal = fit is not None and abs(fit.b) < _FLAT_SLOPE
     parts = [f"ν = {nu}, Ω(L) = {rows['twist_angle'].min():.3f}…"
              f"{rows['twist_angle'].max():.3f}: {len(rows)} points, "
              f"{int((~rows['ok']).sum())} not reproduced by the best model, "
@@ -350,35 +357,41 @@ def explain_cluster(rows: pd.DataFrame, left: pd.Series | None, right: pd.Series
             "not_reproduced": int((~rows["ok"]).sum()),
             "max_abs_deviation": float(dev.max()), "kind": _cluster_kind(causes),
             "explanation": " ".join(parts), "explained": bool(covered.all()),
-            "window_points": _twists(rows, causes["imaginary beta_1"]),
-            "double_root_points": _twists(rows, causes["double root in one step"]),
-            "no_sign_change_points": _twists(rows, causes["no sign change"]),
-            "edited_points": (_twists(rows, causes["edited line"])
+            "window_points": twist_list(rows, causes["imaginary beta_1"]),
+            "double_root_points": twist_list(rows, causes["double root in one step"]),
+            "no_sign_change_points": twist_list(rows, causes["no sign change"]),
+            "edited_points": (twist_list(rows, causes["edited line"])
                                   if "edited line" in causes else None),
             "crossing": (_nearest_crossing(nu, float(rows["twist_angle"].min()),
                                            float(rows["twist_angle"].max()))
                          if causes["double root in one step"].any() else None),
+            "caused_points": int(np.logical_or.reduce(physics).sum()),
             "value_rules": {k: int(v.sum()) for k, v in rules.items()},
+            "printed_as": {"sloped line": int(0 if horizontal else on_line.sum()),
+                           "flat": int(((on_line & horizontal) | rules["flank value"]).sum())},
             "line": (None if fit is None else
                      {"a": fit.a, "b": fit.b, "residual": fit.residual,
-                      "off_line": _twists(rows, ~fit.on_line)}),
-            "twists": _twists(rows, np.ones(len(rows), dtype=bool))}
+                      "off_line": twist_list(rows, ~fit.on_line)}),
+            "twists": twist_list(rows, np.ones(len(rows), dtype=bool))}
 
 
-def explain_missing(row: pd.Series, sites: pd.DataFrame, runs: dict[str, Hypothesis]) -> dict:
+def explain_missing(row: pd.Series, sites: pd.DataFrame, runs: dict[str, Hypothesis],
+                    off_runs: list[dict] | None = None, grid_step: float | None = None) -> dict:
     """Why a regular grid point is absent: its computed causes, and the same twist elsewhere.
 
     row: the missing site (columns of :func:`site_physics`); sites: all sites (for the other
-    curves at the same twist and for off-grid points of the same curve nearby).
+    curves at the same twist); off_runs: the curve's :func:`off_grid_runs` (the off-grid
+    points written in the gap holding the missing point instead); grid_step: the curve's grid
+    step in picture units (recorded, for grouping adjacent missing points).
     """
-    nu, t = float(row["nu"]), float(row["twist_angle"])
+    nu, t, x = float(row["nu"]), float(row["twist_angle"]), float(row["picture_x"])
     one = row.to_frame().T.reset_index(drop=True)
     for c in ("imaginary_beta1", "in_window", "double_root", "scan_found"):
         one[c] = one[c].astype(bool)
     causes = point_causes(one.assign(edited=False))
     parts = _cause_sentences(one, causes, runs, nu)
     p_s, p_a = float(row["p_sym"]), float(row["p_anti"])
-    text = (f"ν = {nu}, Ω(L) = {t:.3f} (x = {row['picture_x']:.2f}) is absent from the picture. "
+    text = (f"ν = {nu}, Ω(L) = {t:.3f} (x = {x:.2f}) is absent from the picture. "
             f"p* = {row['p_true']:.7f} (p_sym = {p_s:.7f}, p_anti = {p_a:.7f}). ")
     text += ("Cause: " + "; ".join(parts) + ". ") if parts else "No computed cause. "
     same = sites[(np.abs(sites["twist_angle"] - t) < 1e-9) & (sites["nu"] != nu)
@@ -388,18 +401,16 @@ def explain_missing(row: pd.Series, sites: pd.DataFrame, runs: dict[str, Hypothe
                  f"{'reproduced' if o['ok'] else 'not reproduced'} by the best model (its roots "
                  f"p_sym = {o['p_sym']:.7f}, p_anti = {o['p_anti']:.7f} lie "
                  f"{'in one step' if o['double_root'] else 'in different steps'}). ")
-    off = sites[(sites["curve"] == row["curve"]) & sites["in_data"] & sites["off_grid"]
-                & (np.abs(sites["twist_angle"] - t) < 0.25)]
-    if len(off):
-        text += (f"The picture has {len(off)} off-grid points of this curve within 0.25 rad "
-                 f"(x = {off['picture_x'].min():.2f}…{off['picture_x'].max():.2f}) instead.")
+    gap = next((r for r in off_runs or [] if r["left"] < x < r["right"]), None)
+    if gap:
+        text += (f"The picture has {gap['count']} off-grid points of this curve in the gap "
+                 f"between the grid points x = {gap['left']:.2f} and {gap['right']:.2f} that "
+                 f"holds it (x = {gap['first']:.2f}…{gap['last']:.2f}) instead.")
     else:
         text += "No line was written for it (no inserted substitute)."
-    return {"nu": nu, "twist_angle": t, "picture_x": float(row["picture_x"]),
+    return {"nu": nu, "twist_angle": t, "picture_x": x, "grid_step": grid_step,
             "explanation": text.strip(),
             "causes": [k for k, v in causes.items() if v.any() and k != "edited line"],
             "crossing": (_nearest_crossing(nu, t, t) if causes["double root in one step"].any()
                          else None),
             "explained": bool(any(v.any() for k, v in causes.items() if k != "edited line"))}
-
-

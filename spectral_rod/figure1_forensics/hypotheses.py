@@ -9,9 +9,7 @@ from collections.abc import Callable
 import numpy as np
 from numpy.typing import NDArray
 
-from spectral_rod.figure1_forensics.picture import X_PER_TWIST, Y_PER_P
 from spectral_rod.figure1_forensics.quantisation import (
-    _PI2,
     ROUNDINGS,
     VARIABLES,
     Hypothesis,
@@ -21,7 +19,13 @@ from spectral_rod.figure1_forensics.quantisation import (
     reproduced,
 )
 from spectral_rod.figure1_forensics.runs import fit_switch
-from spectral_rod.figure1_forensics.scan import ScanResult, scan_model, scan_sign_change
+from spectral_rod.figure1_forensics.scan import (
+    RULE_WORDS,
+    ScanResult,
+    scan_model,
+    scan_sign_change,
+)
+from spectral_rod.figure_data import X_PER_TWIST, picture_y_from_p_star, twist_from_picture
 
 #: Scan variables: the load and the two coefficients of Eq. inst1, the coefficients scanned
 #: from where they vanish (v >= 0).
@@ -46,53 +50,56 @@ def _scan_hypothesis(scan: ScanResult, rule: str, twist: NDArray, nu: NDArray,
     return Hypothesis(f"scan{label} {rule}({scan.variable}, {scan.step:g})", scan.variable,
                       scan.step, f"bracket {rule}", y, reproduced(y, picture_y),
                       f"first sign change of D_sym D_anti on {scan.variable} = k {scan.step:g}"
-                      f", reported at the bracket's {rule} value{note}")
+                      f", reported at {RULE_WORDS[rule]}{note}", scan=scan, scan_rule=rule)
 
 
 def scan_hypotheses(twist: NDArray, nu: NDArray, picture_y: NDArray, steps: dict[str, float]
-                    ) -> tuple[list[Hypothesis], dict[str, ScanResult]]:
-    """Scan simulations (real wavenumbers) on each scan variable's fitted ceil lattice."""
-    hyps, scans = [], {}
+                    ) -> list[Hypothesis]:
+    """Scan simulations (real wavenumbers) on each scan variable's fitted ceil lattice, every
+    report rule (the hypotheses share one scan per variable, :attr:`Hypothesis.scan`)."""
+    hyps = []
     for var, start in SCAN_VARIABLES:
-        scans[var] = scan_sign_change(twist, nu, var, steps[var], start_at_zero=start)
-        hyps += [_scan_hypothesis(scans[var], rule, twist, nu, picture_y) for rule in SCAN_RULES]
-    return hyps, scans
+        scan = scan_sign_change(twist, nu, var, steps[var], start_at_zero=start)
+        hyps += [_scan_hypothesis(scan, rule, twist, nu, picture_y) for rule in SCAN_RULES]
+    return hyps
 
 
-def variant_hypotheses(scans: list[ScanResult], best_q: Hypothesis, p_true: NDArray,
+def variant_hypotheses(bases: list[Hypothesis], best_q: Hypothesis, p_true: NDArray,
                        twist: NDArray, nu: NDArray, picture_y: NDArray,
                        p_star_fn: Callable[[NDArray, NDArray], NDArray]) -> list[Hypothesis]:
     """Single precision, the continued (cosh/sinh) determinant, pi approximations, twist shifts.
 
-    scans: the scans whose upper-end report is varied (single precision, continued
-    determinant); best_q: the best quantisation hypothesis, varied in the normalisation (pi
-    approximations in p* = lambda/pi^2) and in the twist (x shifted by X_SHIFTS).
+    bases: scan hypotheses whose procedure is varied (single precision, continued
+    determinant; the rest of its scan's settings and its report rule kept); best_q: the best
+    quantisation hypothesis, varied in the normalisation (pi approximations in p* =
+    lambda/pi^2) and in the twist (x shifted by X_SHIFTS).
     """
-    starts = dict(SCAN_VARIABLES)
     out = []
-    for base in scans:
+    for base in bases:
+        sc0 = base.scan
         for label, kw, note in (
                 (" single", {"dtype": np.float32}, " (single precision)"),
                 (" continued", {"real_wavenumbers": False},
                  " (determinant continued to X_- < 0 by cosh/sinh: imaginary beta_1 handled)")):
-            sc = scan_sign_change(twist, nu, base.variable, base.step,
-                                  start_at_zero=starts[base.variable], **kw)
-            out.append(_scan_hypothesis(sc, "upper", twist, nu, picture_y, label, note))
+            sc = scan_sign_change(twist, nu, sc0.variable, sc0.step, **sc0.settings(**kw))
+            out.append(_scan_hypothesis(sc, base.scan_rule, twist, nu, picture_y, label, note))
     var = VARIABLES[best_q.variable]
-    lam = _PI2 * var.inverse(quantise(var.forward(p_true, twist, nu), best_q.step,
-                                      best_q.rounding), twist, nu)
+    p_q = var.inverse(quantise(var.forward(p_true, twist, nu), best_q.step, best_q.rounding),
+                      twist, nu)
+    lam = VARIABLES["lambda"].forward(p_q, twist, nu)
     for pa in PI_APPROXIMATIONS:
-        y = Y_PER_P * (lam / pa**2 - 1.0)
+        y = picture_y_from_p_star(lam / pa**2)
         out.append(Hypothesis(f"{best_q.name} with pi = {pa}", best_q.variable, best_q.step,
                               best_q.rounding, y, reproduced(y, picture_y),
                               f"{best_q.description}, converted to p* with pi = {pa}"))
     for dx in X_SHIFTS:
-        tw = twist + dx / X_PER_TWIST
+        tw = twist + twist_from_picture(dx)
         y = quantisation_model(p_star_fn(tw, nu), tw, nu, best_q.variable, best_q.step,
                                best_q.rounding)
-        out.append(Hypothesis(f"{best_q.name} at Omega = (x {dx:+g})/10", best_q.variable,
+        at = f"(x {dx:+g})/{X_PER_TWIST:g}"
+        out.append(Hypothesis(f"{best_q.name} at Omega = {at}", best_q.variable,
                               best_q.step, best_q.rounding, y, reproduced(y, picture_y),
-                              f"{best_q.description}, computed at twist (x {dx:+g})/10"))
+                              f"{best_q.description}, computed at twist {at}"))
     return out
 
 
@@ -119,13 +126,10 @@ def best_two_runs(hyps: list[Hypothesis], twist: NDArray, curve: NDArray, label:
             if best is None or total > best[0]:
                 best = (total, lo, hi, fits)
     _, lo, hi, fits = best
-    y = np.empty_like(lo.y_model)
+    y, ok = np.empty_like(lo.y_model), np.empty_like(lo.ok)
     for c, (s, _, _) in fits.items():
         idx = np.flatnonzero(curve == c)
         y[idx] = np.concatenate([lo.y_model[idx[:s]], hi.y_model[idx[s:]]])
-    ok = np.empty_like(lo.ok)
-    for c, (s, _, _) in fits.items():
-        idx = np.flatnonzero(curve == c)
         ok[idx] = np.concatenate([lo.ok[idx[:s]], hi.ok[idx[s:]]])
     comp = Hypothesis(f"two runs{label}: {lo.name} below the switch, {hi.name} above",
                       f"{lo.variable} | {hi.variable}", [lo.step, hi.step],
@@ -133,5 +137,3 @@ def best_two_runs(hyps: list[Hypothesis], twist: NDArray, curve: NDArray, label:
                       f"low twist: {lo.description}; high twist: {hi.description}; switch "
                       f"fitted per curve")
     return comp, lo, hi, {c: (f[0], f[1]) for c, f in fits.items()}
-
-

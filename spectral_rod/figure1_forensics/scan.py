@@ -11,30 +11,25 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from spectral_rod.characteristic import combine_determinant
-from spectral_rod.figure1_forensics.quantisation import VARIABLES, Variable, _y_of_p
+from spectral_rod.characteristic import (
+    SCAN_MARGIN,
+    SCAN_START,
+    combine_determinant,
+    entire_cs_double,
+)
+from spectral_rod.families import p_star_bounds
+from spectral_rod.figure1_forensics.quantisation import VARIABLES, Variable
+from spectral_rod.figure_data import picture_y_from_p_star
 from spectral_rod.wavenumbers import characteristic_roots
 
-
-def _cs_typed(x: NDArray, real_wavenumbers: bool, zero: NDArray | float = 0.0
-              ) -> tuple[NDArray, NDArray]:
-    """C = cos(sqrt(X)/2), S = sin(sqrt(X)/2)/sqrt(X) in x's float type.
-
-    real_wavenumbers: sqrt(X) taken in real arithmetic, NaN for X < -zero (as a program written
-    in terms of real beta_k would compute it; ``zero`` is the rounding level of X, so an X that
-    is zero in exact arithmetic is not counted); otherwise continued to cosh, sinh/kappa.
-    """
-    one = x.dtype.type(1)
-    half = x.dtype.type(0.5)
-    r = np.sqrt(np.abs(x))
-    pos = x > 0
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        c = np.where(pos, np.cos(r * half), np.cosh(np.where(pos, 0, r) * half))
-        s = np.where(pos, np.sin(r * half), np.sinh(np.where(pos, 0, r) * half)) / r
-    s = np.where(r == 0, half * one, s)
-    if real_wavenumbers:
-        c, s = np.where(x < -zero, np.nan, c), np.where(x < -zero, np.nan, s)
-    return c.astype(x.dtype), s.astype(x.dtype)
+#: How each report rule of :meth:`ScanResult.report` reads in words.
+RULE_WORDS = {"upper": "the bracket's upper end", "lower": "the bracket's lower end",
+              "midpoint": "the bracket's midpoint",
+              "linear": "the secant (linear interpolation) in the bracket"}
+#: Where each rule's reported value v lies relative to the root v*, in scan steps, when the
+#: first bracket holds the root: [v* + a step, v* + b step].
+RULE_BANDS = {"upper": (0.0, 1.0), "lower": (-1.0, 0.0), "midpoint": (-0.5, 0.5),
+              "linear": (-1.0, 1.0)}
 
 
 def determinant_product(p: NDArray[np.float64], twist: float, nu: float, *,
@@ -43,11 +38,18 @@ def determinant_product(p: NDArray[np.float64], twist: float, nu: float, *,
     """D_sym D_anti at lambda = pi^2 p: the sign of the paper's 4x4 boundary determinant.
 
     The 4x4 determinant equals 16 Omega^2 D_sym D_anti
-    (:func:`spectral_rod.characteristic.boundary_determinant_4x4`), so at fixed Omega != 0 it
-    changes sign exactly where the product does. Same formulas as
-    :func:`spectral_rod.characteristic.determinants`, evaluated in `dtype` (np.float64 or
-    np.float32, to test single precision); real_wavenumbers: see :func:`_cs_typed`.
-    Example: determinant_product([1.0, 1.1], 0.5, 1.5) changes sign (the root p* ~ 1.0084).
+    (:func:`spectral_rod.closed_form.boundary_determinant_4x4`), so at fixed Omega != 0 it
+    changes sign exactly where the product does. The formulas of
+    :func:`spectral_rod.characteristic.determinants` (the same
+    :func:`~spectral_rod.characteristic.entire_cs_double`), evaluated in `dtype` (np.float64 or
+    np.float32, to test single precision). real_wavenumbers: sqrt(X) taken in real arithmetic,
+    NaN where X < 0 beyond the rounding level of X (as a program written in terms of real beta_k
+    would compute it: an X that is zero in exact arithmetic is not counted); otherwise continued
+    to cosh, sinh/kappa. The sign changes across the root p* = 1.0024446 at Omega = 0.5,
+    nu = 1.5:
+
+    >>> np.sign(determinant_product(np.array([1.002, 1.003]), 0.5, 1.5)).tolist()
+    [-1.0, 1.0]
     """
     t = np.dtype(dtype).type
     lam = t(np.pi**2) * np.asarray(p, dtype=dtype)
@@ -56,9 +58,15 @@ def determinant_product(p: NDArray[np.float64], twist: float, nu: float, *,
     xm, xp = characteristic_roots(lam, mu, t(twist))
     # rounding level of X: X_- = 0 exactly where the scan of lambda - nu Omega^2 starts
     zero = 64 * np.finfo(lam.dtype).eps * (lam + om2)
-    cs = (_cs_typed(xm, real_wavenumbers, zero), _cs_typed(xp, real_wavenumbers, zero))
-    return (combine_determinant("symmetric", lam, mu, om2, (xm, xp), cs)
-            * combine_determinant("antisymmetric", lam, mu, om2, (xm, xp), cs))
+    cs = []
+    for x in (xm, xp):
+        with np.errstate(over="ignore"):
+            c, s = entire_cs_double(x)
+        if real_wavenumbers:
+            c, s = np.where(x < -zero, np.nan, c), np.where(x < -zero, np.nan, s)
+        cs.append((c.astype(lam.dtype), s.astype(lam.dtype)))
+    return (combine_determinant("symmetric", lam, mu, om2, (xm, xp), tuple(cs))
+            * combine_determinant("antisymmetric", lam, mu, om2, (xm, xp), tuple(cs)))
 
 
 @dataclass
@@ -66,7 +74,8 @@ class ScanResult:
     """Per point: the first bracket [lower, upper] (in the scan variable) where the determinant
     changes sign, and its values there; NaN where the scan finds no sign change. undefined: how
     many lattice points up to the bracket (or the whole scan) gave an undefined determinant
-    (NaN: imaginary beta_1 with real wavenumbers)."""
+    (NaN: imaginary beta_1 with real wavenumbers). The remaining fields are the scan's settings
+    (:func:`scan_sign_change`)."""
 
     variable: str
     step: float
@@ -75,6 +84,9 @@ class ScanResult:
     d_lower: NDArray[np.float64]
     d_upper: NDArray[np.float64]
     undefined: NDArray[np.float64]
+    start_at_zero: bool = False
+    real_wavenumbers: bool = True
+    dtype: type = np.float64
 
     def report(self, rule: str) -> NDArray[np.float64]:
         """The scan variable as reported: 'upper', 'lower', 'midpoint' or 'linear' (secant)."""
@@ -90,12 +102,26 @@ class ScanResult:
             return self.lower + (self.upper - self.lower) * np.where(np.isfinite(w), w, 0.0)
         raise ValueError(f"rule must be 'upper', 'lower', 'midpoint' or 'linear', got {rule!r}")
 
+    def settings(self, **changes: object) -> dict:
+        """The keyword arguments of :func:`scan_sign_change` that repeat this scan (`changes`
+        applied)."""
+        return {"start_at_zero": self.start_at_zero, "real_wavenumbers": self.real_wavenumbers,
+                "dtype": self.dtype, **changes}
 
-def _scan_one(twist: float, nu: float, var: Variable, step: float, v_min: float,
+    def extended(self, twist: NDArray[np.float64], nu: NDArray[np.float64]) -> ScanResult:
+        """This scan's points followed by the same scan at the points (twist, nu)."""
+        more = scan_sign_change(twist, nu, self.variable, self.step, **self.settings())
+        return ScanResult(self.variable, self.step,
+                          *(np.concatenate([getattr(self, f), getattr(more, f)]) for f in
+                            ("lower", "upper", "d_lower", "d_upper", "undefined")),
+                          **self.settings())
+
+
+def _scan_one(twist: float, nu: float, p_top: float, var: Variable, step: float, v_min: float,
               real_wavenumbers: bool, dtype: type) -> tuple[float, ...]:
-    """First sign-change bracket of one point's scan and the count of undefined values
-    before it (see :func:`scan_sign_change`)."""
-    p_lo, p_top = 1.0 - 1e-9, 0.5 * (1.0 + nu) + 1e-6
+    """First sign-change bracket of one point's scan (p from SCAN_START to p_top) and the count
+    of undefined values before it (see :func:`scan_sign_change`)."""
+    p_lo = SCAN_START
     k0 = math.floor(float(var.forward(p_lo, twist, nu)) / step)
     if math.isfinite(v_min):
         k0 = max(k0, math.ceil(v_min / step))
@@ -118,25 +144,48 @@ def scan_sign_change(twist: NDArray[np.float64], nu: NDArray[np.float64], variab
                      dtype: type = np.float64) -> ScanResult:
     """Simulate the authors' scan at every point: v = k step upward, first sign change.
 
-    The lattice runs from v(p = 1) (no root of either family lies below Euler's load, so an
-    earlier start finds the same first bracket) -- or from v = 0 if `start_at_zero` and that is
-    higher (a scan starting where the coefficient variable vanishes) -- up to the Rayleigh
-    bound p = (1 + nu)/2. The sign is that of D_sym D_anti (:func:`determinant_product`).
-    Example: ``scan_sign_change([0.5], [1.5], 'lambda', 0.002).report('upper')`` is the lattice
-    point just above lambda* = pi^2 p*.
+    The lattice runs from v(p) at p = :data:`~spectral_rod.characteristic.SCAN_START` (just
+    below Euler's load p = 1: no root of either family lies lower, so an earlier start finds the
+    same first bracket) -- or from v = 0 if `start_at_zero` and that is higher (a scan starting
+    where the coefficient variable vanishes) -- up to the Rayleigh bound p = (1 + nu)/2
+    (:func:`spectral_rod.families.p_star_bounds`, plus
+    :data:`~spectral_rod.characteristic.SCAN_MARGIN`). The sign is that of D_sym D_anti
+    (:func:`determinant_product`). The reported upper end is the lattice point just above
+    lambda* = pi^2 p* (p* = 1.0024446 at Omega = 0.5, nu = 1.5):
+
+    >>> sc = scan_sign_change([0.5], [1.5], "lambda", 0.002)
+    >>> round(float(sc.lower[0]), 3), round(float(sc.upper[0]), 3), round(np.pi**2 * 1.0024446, 4)
+    (9.892, 9.894, 9.8937)
     """
     var = VARIABLES[variable]
     v_min = 0.0 if start_at_zero else -math.inf
     tw, nv = np.broadcast_arrays(np.asarray(twist, float), np.asarray(nu, float))
-    res = np.array([_scan_one(float(t), float(n), var, step, v_min, real_wavenumbers, dtype)
-                    for t, n in zip(tw.ravel(), nv.ravel(), strict=True)]).reshape(-1, 5)
-    return ScanResult(variable, step, *(res[:, k].reshape(tw.shape) for k in range(5)))
+    top = {n: p_star_bounds(n)[1] + SCAN_MARGIN for n in np.unique(nv).tolist()}
+    res = np.array([_scan_one(t, n, top[n], var, step, v_min, real_wavenumbers, dtype)
+                    for t, n in zip(tw.ravel().tolist(), nv.ravel().tolist(), strict=True)]
+                   ).reshape(-1, 5)
+    return ScanResult(variable, step, *(res[:, k].reshape(tw.shape) for k in range(5)),
+                      start_at_zero=start_at_zero, real_wavenumbers=real_wavenumbers,
+                      dtype=dtype)
 
 
 def scan_model(scan: ScanResult, rule: str, twist: NDArray[np.float64], nu: NDArray[np.float64]
                ) -> NDArray[np.float64]:
     """Picture y (unprinted) the scan reports with `rule`; NaN where it found nothing."""
     var = VARIABLES[scan.variable]
-    return _y_of_p(var.inverse(scan.report(rule), twist, nu))
+    return picture_y_from_p_star(var.inverse(scan.report(rule), twist, nu))
 
 
+def report_band(variable: str, step: float, rule: str, p: NDArray[np.float64],
+                twist: NDArray[np.float64], nu: NDArray[np.float64]
+                ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """(low, high): where a scan of `variable` in steps `step`, reported by `rule`, puts p
+    relative to the root p (:data:`RULE_BANDS`, mapped to p): one scan step.
+
+    >>> lo, hi = report_band("lambda", 0.002, "upper", np.array([1.0]), 0.5, 1.5)
+    >>> float(lo[0]), round(float(hi[0]) * np.pi**2, 12)
+    (0.0, 0.002)
+    """
+    var, (a, b) = VARIABLES[variable], RULE_BANDS[rule]
+    v = var.forward(np.asarray(p, dtype=float), twist, nu)
+    return (var.inverse(v + a * step, twist, nu) - p, var.inverse(v + b * step, twist, nu) - p)
