@@ -118,6 +118,38 @@ def test_loaded_circle_is_an_equilibrium(equations: str, load: str) -> None:
         assert base_residual(N, 2.0, load=load, q=q, equations=equations) < 1e-12
 
 
+def test_numeric_munder_lines_are_the_printed_equation() -> None:
+    """ring_munder's term-by-term Eq. Munder against the sympy transcription of the printed
+    equation (:func:`spectral_rod.derivations.straight_rod.munder`), lambdified, on random
+    trigonometric fields (the spectral derivatives are exact for them)."""
+    import sympy as sp
+
+    from spectral_rod.derivations.straight_rod import munder, s
+
+    prob = rm._problem(2, 2.0, 1.0, "axis", 6, "munder")  # P = 49 points: exact up to f = 24
+    rng = np.random.default_rng(17)
+    names = ("w1", "w2", "w3", "Mu", "Mv", "Mt", "Ft", "qu", "qv", "qt")
+    fields = {n: rng.normal() + sum(rng.normal() * sp.cos(f * s) + rng.normal() * sp.sin(f * s)
+                                    for f in (1, 2, 3)) for n in names}
+    lines = munder(fields["Ft"], [fields[n] for n in ("w1", "w2", "w3")],
+                   [fields[n] for n in ("Mu", "Mv", "Mt")],
+                   q=[fields[n] for n in ("qu", "qv", "qt")])
+    grid = prob.grid.s
+    want = [np.broadcast_to(sp.lambdify(s, line, "numpy")(grid), grid.shape) for line in lines]
+    val = {n: sp.lambdify(s, e, "numpy")(grid)[None, :] for n, e in fields.items()}
+    got = rm._munder_lines(prob, (val["w1"], val["w2"], val["w3"]),
+                           (val["Mu"], val["Mv"], val["Mt"]), val["Ft"],
+                           (val["qu"], val["qv"], val["qt"]))
+    for k, (g, w) in enumerate(zip(got, want, strict=True)):
+        assert np.max(np.abs(g[0] - w)) < 1e-12 * np.max(np.abs(w)), k
+    # and a flipped term is seen (the comparison is not blind)
+    flipped = rm._munder_lines(rm._problem(2, 2.0, 1.0, "axis", 6, "munder", "3:w1*Ft"),
+                               (val["w1"], val["w2"], val["w3"]),
+                               (val["Mu"], val["Mv"], val["Mt"]), val["Ft"],
+                               (val["qu"], val["qv"], val["qt"]))
+    assert np.max(np.abs(flipped[2][0] - want[2])) > 1e-3 * np.max(np.abs(want[2]))
+
+
 SENSITIVE_FAST = ["1:qt", "2:w2*Mv", "3:w3*w1*Mt", "4:w3*w2*Mt"]
 
 
