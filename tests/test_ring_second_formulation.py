@@ -221,6 +221,34 @@ def test_blocks_are_the_twist_families_and_do_not_change_the_answer() -> None:
     assert qs[qs > 0][0] == pytest.approx(min(b.load for b in bl), rel=1e-9)
 
 
+@pytest.mark.parametrize(("N", "nu", "e", "load"), [
+    (1, 1.0 + 1e-6, 1.0, "hydrostatic"),   # nearly circular: couplings ~ (nu - 1) near round-off
+    (2, 2.0, 1e4, "hydrostatic"),          # torsionally very stiff
+])
+def test_no_gap_in_the_pattern_means_one_block(N: int, nu: float, e: float, load: str) -> None:
+    """At the edges of the parameter range the equilibrated entries run continuously through
+    PATTERN_TOL (measured); the pencil is then not split, and the load still agrees with the
+    energy formulation."""
+    from spectral_rod.ring_stability import ring_buckling
+
+    M = rm._truncations(N)[1]
+    A0, A1 = rm._equilibrate(*rm.pencil(rm._problem(N, nu, e, load, M, "munder")))
+    S = np.abs(A0) + np.abs(A1)
+    below, above = S[(S > 0) & (S <= rm.PATTERN_TOL)], S[S > rm.PATTERN_TOL]
+    assert above.min() < rm.PATTERN_GAP * below.max()
+    assert len(rm.blocks(*rm.pencil(rm._problem(N, nu, e, load, M, "munder")))) == 1
+    ref = ring_buckling(N, nu, e_ratio=e, load=load).load
+    assert munder_critical_load(N, nu, e_ratio=e, load=load) == pytest.approx(ref, rel=1e-10)
+
+
+def test_gap_in_the_pattern_on_the_agreement_cases() -> None:
+    """Round-off and couplings are PATTERN_GAP apart on the cases the ledger compares, so
+    their pencils are split (a few cases, first truncation)."""
+    for N, nu, e, load in AGREEMENT_CASES[::4]:
+        prob = rm._problem(N, nu, e, load, rm._truncations(N)[0], "munder")
+        assert len(rm.blocks(*rm.pencil(prob))) > 1, (N, nu, e, load)
+
+
 def test_spectral_convergence_with_resolution() -> None:
     N, nu = 3, 4.0
     ref = min(b.load for b in block_loads(N, nu, 1.0, "hydrostatic", 40)[0])
