@@ -63,7 +63,9 @@ A3 = e (1 + nu) in these units.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
+from typing import TypeVar
 
 import numpy as np
 import scipy.linalg
@@ -413,6 +415,34 @@ def _truncations(N: int, max_frequency: int | None) -> list[int]:
     return [start + k * step for k in range(12)]
 
 
+T = TypeVar("T")
+
+
+def refine(truncations: Iterable[int], solve: Callable[[int], tuple[T, float]], tol: float
+           ) -> tuple[T, list[tuple[int, float]], float]:
+    """Solve at each truncation M in turn (``solve(M)`` -> (solution, critical load q)) until
+    two successive q agree to ``tol`` relatively, |q - q_prev| <= tol |q|.
+
+    Returns the last solution, the history [(M, q)] and the last relative change (nan after a
+    single truncation); the caller decides what a non-converged result means. Shared by
+    :func:`ring_buckling` and :func:`spectral_rod.ring_munder.munder_buckling`.
+    """
+    history: list[tuple[int, float]] = []
+    rel, last, solved = math.nan, None, False
+    for M in truncations:
+        last, q = solve(M)
+        solved = True
+        if history:
+            prev = history[-1][1]
+            rel = 0.0 if q == prev else abs(q - prev) / abs(q)
+        history.append((M, q))
+        if len(history) >= 2 and rel <= tol:
+            break
+    if not solved:
+        raise ValueError("truncations must not be empty")
+    return last, history, rel  # type: ignore[return-value]
+
+
 def ring_buckling(N: object, nu: object, *, e_ratio: object = 1.0, load: object = "hydrostatic",
                   tol: float = 1.0e-12, max_frequency: int | None = None,
                   subspace: str = "all", raise_on_failure: bool = True) -> RingBuckling:
@@ -436,24 +466,14 @@ def ring_buckling(N: object, nu: object, *, e_ratio: object = 1.0, load: object 
         max_frequency = check_int(max_frequency, "max_frequency", 4, 2000)
     tol = check_real(tol, "tol", 1e-14, 1e-2)
     raise_on_failure = check_bool(raise_on_failure, "raise_on_failure")
-    history: list[tuple[int, float]] = []
-    best: tuple[FamilySolution, int] | None = None
-    rel = math.nan
-    min_mu = math.inf
-    for M in _truncations(n_turns, max_frequency):
+
+    def solve(M: int) -> tuple[tuple[FamilySolution, int, float], float]:
         sols = solve_families(n_turns, v, e, ld, {
             n: fam for n, fam in enumerate(frequency_families(n_turns, M)) if fam}, fields)
         k = min(sols, key=lambda n: sols[n].load)
-        min_mu = min(sol.min_mu for sol in sols.values())
-        q = sols[k].load
-        if history:
-            rel = 0.0 if q == history[-1][1] else abs(history[-1][1] - q) / q
-        history.append((M, q))
-        best = (sols[k], k)
-        if len(history) >= 2 and rel <= tol:
-            break
-    assert best is not None
-    sol, fam = best
+        return (sols[k], k, min(sol.min_mu for sol in sols.values())), sols[k].load
+
+    (sol, fam, min_mu), history, rel = refine(_truncations(n_turns, max_frequency), solve, tol)
     converged = bool(rel <= tol)
     if not converged and raise_on_failure and max_frequency is None:
         raise RingConvergenceError(

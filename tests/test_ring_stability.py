@@ -4,16 +4,20 @@ Loads are q R^3/(E1 I1); A1 = 1, A2 = nu, A3 = e (1 + nu)."""
 
 from __future__ import annotations
 
-import importlib.util
 import itertools
 import math
-from pathlib import Path
 from types import ModuleType
 
 import numpy as np
 import pytest
 import sympy as sp
 
+import spectral_rod.derivations.ring_linearisation as ring_linearisation
+from spectral_rod.ring_closed_forms import (
+    homogenised_limit,
+    in_plane_untwisted,
+    out_of_plane_untwisted,
+)
 from spectral_rod.ring_formula import ring_formula_load
 from spectral_rod.ring_stability import (
     RingConvergenceError,
@@ -24,38 +28,15 @@ from spectral_rod.ring_stability import (
     ring_critical_load,
 )
 
-ROOT = Path(__file__).resolve().parent.parent
-
-
-def _load_derivation() -> ModuleType:
-    return importlib.import_module("spectral_rod.derivations.ring_linearisation")
-
 
 @pytest.fixture(scope="module")
 def derivation() -> tuple[ModuleType, dict]:
-    mod = _load_derivation()
-    return mod, mod.derive()
-
-
-# ---------------------------------------------------------------- closed forms (by hand)
-
-def in_plane_closed(A: float, load: str) -> float:
-    """Untwisted ring, in-plane, min over n >= 2: hydrostatic A (n^2 - 1), axis
-    A (n^2 - 1)^2/(n^2 - 2) (hand computation with y_phi = sin(n s))."""
-    ns = np.arange(2, 40)
-    if load == "hydrostatic":
-        return float(np.min(A * (ns**2 - 1)))
-    return float(np.min(A * (ns**2 - 1) ** 2 / (ns**2 - 2)))
-
-
-def out_of_plane_closed(A: float, A3: float) -> float:
-    """Timoshenko & Gere: q = A (n^2 - 1)^2 / (n^2 + A/A3), minimised over n >= 2."""
-    ns = np.arange(2, 40)
-    return float(np.min(A * (ns**2 - 1) ** 2 / (ns**2 + A / A3)))
+    return ring_linearisation, ring_linearisation.derive()
 
 
 def isotropic_ring(A: float, A3: float, load: str) -> float:
-    return min(in_plane_closed(A, load), out_of_plane_closed(A, A3))
+    """The untwisted ring of bending stiffness A (both planes): the lower closed form."""
+    return min(in_plane_untwisted(A, load), out_of_plane_untwisted(A, A3))
 
 
 # ---------------------------------------------------------------- the operator vs sympy
@@ -140,7 +121,7 @@ def test_untwisted_in_plane(load: str, expected: float) -> None:
     r = ring_buckling(0, 1.0, load=load, subspace="in-plane")
     assert r.load == pytest.approx(expected, rel=1e-12)
     assert r.kind == "in-plane" and r.dominant_frequency == 2
-    assert in_plane_closed(1.0, load) == expected  # the hand formula itself
+    assert r.load == pytest.approx(in_plane_untwisted(1.0, load), rel=1e-12)
 
 
 @pytest.mark.parametrize("e", [1.0, 1 / 2.6, 10.0, 1e3])
@@ -148,7 +129,7 @@ def test_untwisted_in_plane(load: str, expected: float) -> None:
 def test_untwisted_out_of_plane_timoshenko(e: float, load: str) -> None:
     A3 = 2 * e
     r = ring_buckling(0, 1.0, e_ratio=e, load=load, subspace="out-of-plane")
-    assert r.load == pytest.approx(out_of_plane_closed(1.0, A3), rel=1e-12)
+    assert r.load == pytest.approx(out_of_plane_untwisted(1.0, A3), rel=1e-12)
     assert r.kind == "out-of-plane"
     # the full solver returns the lower of in-plane and out-of-plane and names it
     full = ring_buckling(0, 1.0, e_ratio=e, load=load)
@@ -162,7 +143,7 @@ def test_untwisted_non_circular_picks_lower_mode(nu: float, e: float, kind: str)
     A3 = e * (1 + nu)
     for load in ("hydrostatic", "axis"):
         r = ring_buckling(0, nu, e_ratio=e, load=load)
-        expected = min(in_plane_closed(1.0, load), out_of_plane_closed(nu, A3))
+        expected = min(in_plane_untwisted(1.0, load), out_of_plane_untwisted(nu, A3))
         assert r.load == pytest.approx(expected, rel=1e-12)
         if load == "hydrostatic":
             assert r.kind == kind
@@ -192,8 +173,7 @@ def test_bracketed_by_isotropic_rings() -> None:
 def test_rapid_twist_tends_to_harmonic_mean_ring(nu: float) -> None:
     """For N -> infinity the rotating stiffness homogenises (1D: harmonic mean of the rotating
     tensor, isotropic 2 A1 A2/(A1 + A2)); the gap must shrink as N grows."""
-    A_h = 2 * nu / (1 + nu)
-    ref = isotropic_ring(A_h, 1 + nu, "hydrostatic")
+    ref = homogenised_limit(nu, 1.0, "hydrostatic")
     gaps = [abs(ring_critical_load(N, nu) - ref) for N in (5, 10, 20)]
     assert gaps[0] > gaps[1] > gaps[2]
     assert gaps[2] < 2e-3 * ref

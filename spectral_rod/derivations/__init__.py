@@ -22,17 +22,23 @@ DERIVATIONS = ("straight_rod", "ring_linearisation")
 
 
 def derivation_status(name: str) -> str:
-    """Run one derivation (every step asserts): "all steps checked", or the failed step.
+    """Run one derivation: "all steps checked", or "a step failed: <the step>".
 
-    A failed step is evidence (a wrong equation), not a crash, so it is returned as text.
+    Every step is checked by :func:`._sympy.check` (not by ``assert``, so also under
+    ``python -O``). A failed step is evidence (a wrong equation), not a crash, so it is
+    returned as text naming the step.
     """
+    from spectral_rod.derivations._sympy import DerivationError
+
+    if not isinstance(name, str):
+        raise TypeError(f"name must be one of {DERIVATIONS}, got {type(name).__name__}")
     if name not in DERIVATIONS:
         raise ValueError(f"name must be one of {DERIVATIONS}, got {name!r}")
     module = importlib.import_module(f"spectral_rod.derivations.{name}")
     try:
         module.derive()
-    except AssertionError as exc:
-        return f"a step failed: {exc!r}"
+    except DerivationError as exc:
+        return f"a step failed: {exc.step}"
     return "all steps checked"
 
 

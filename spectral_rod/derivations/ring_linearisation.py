@@ -7,12 +7,15 @@ checks; tests call :func:`derive` and compare the numerical operator of
 Setting (Drozdov & Rabin, section "Stability of a ring"): centreline R0 = R e_r, t0 = e_phi,
 u0 = -cos(Omega) e_r + sin(Omega) e_z, v0 = sin(Omega) e_r + cos(Omega) e_z, Omega = N s / R.
 
-Steps, each checked by sympy (an ``AssertionError`` means the algebra is wrong):
+Steps, each checked by sympy (a :class:`~spectral_rod.derivations._sympy.DerivationError`
+naming the step means the algebra is wrong; the checks are not ``assert`` statements, so they
+also run under ``python -O``):
 
 1. Eq. ``frenini`` applied to the reference frame gives the spontaneous torsions
    w10 = cos(Omega)/R, w20 = -sin(Omega)/R, w30 = N/R (as in the paper).
-2. Eq. ``Munder`` at the stress-free state (all moments zero, w = w0) under q = -q e_r gives the
-   hoop force F_t = -q R.
+2. Eq. ``Munder`` (all four lines as printed, :func:`spectral_rod.derivations.straight_rod.munder`)
+   at the stress-free state (all moments zero, w = w0) under q = -q e_r gives the hoop force
+   F_t = -q R.
 3. Perturb the frame by a rotation vector eps*theta(s) (global components), d_i = Q d_i0 with
    Q = I + eps Th + eps^2 Th^2/2 (orthogonal to O(eps^3)).  Eq. ``frenet`` (w1 = t'.u,
    w2 = t'.v, w3 = u'.v) gives to first order dw1 = theta'.v0, dw2 = -theta'.u0, dw3 = theta'.t0.
@@ -37,23 +40,20 @@ from functools import lru_cache
 
 import sympy as sp
 
-s = sp.Symbol("s", real=True)
+from spectral_rod.derivations._sympy import check as _check
+from spectral_rod.derivations._sympy import d as _d
+from spectral_rod.derivations._sympy import eps, s
+from spectral_rod.derivations._sympy import vec as _vec
+from spectral_rod.derivations._sympy import z as _z
+from spectral_rod.derivations.straight_rod import munder
+
 R, A1, A2, A3, q = sp.symbols("R A1 A2 A3 q", positive=True)
 N = sp.Symbol("N", integer=True, nonnegative=True)
-eps = sp.Symbol("epsilon")
 y_phi, y_z, alpha = (sp.Function(n, real=True)(s) for n in ("y_phi", "y_z", "alpha"))
-
-
-def _vec(*c: sp.Expr) -> sp.Matrix:
-    return sp.Matrix(c)
 
 
 def _skew(v: sp.Matrix) -> sp.Matrix:
     return sp.Matrix([[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]])
-
-
-def _d(v: sp.Matrix) -> sp.Matrix:
-    return v.diff(s)
 
 
 def frames() -> dict[str, sp.Matrix]:
@@ -68,38 +68,34 @@ def frames() -> dict[str, sp.Matrix]:
             "v0": sp.sin(Om) * e_r + sp.cos(Om) * e_z}
 
 
-def _z(expr: sp.Expr) -> bool:
-    """Exact zero test: trig functions rewritten as exponentials cancel under expansion."""
-    e = sp.expand(sp.expand(expr).rewrite(sp.exp))
-    return e == 0 or sp.simplify(e) == 0
-
-
 def check_spontaneous_torsions(F: dict[str, sp.Matrix]) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
     """Step 1: Eq. ``frenini`` for the reference frame."""
     t0, u0, v0 = F["t0"], F["u0"], F["v0"]
     w10, w20, w30 = (_d(t0).dot(u0), _d(t0).dot(v0), _d(u0).dot(v0))
     Om = N * s / R
-    assert _z(w10 - sp.cos(Om) / R) and _z(w20 + sp.sin(Om) / R) and _z(w30 - N / R)
+    _check(_z(w10 - sp.cos(Om) / R) and _z(w20 + sp.sin(Om) / R) and _z(w30 - N / R),
+           "1: frenini torsions w10 = cos(Omega)/R, w20 = -sin(Omega)/R, w30 = N/R")
     # the remaining components of Eq. frenini hold too (the frame is consistent)
-    for vec in (_d(t0) - (w10 * u0 + w20 * v0), _d(u0) - (-w10 * t0 + w30 * v0),
-                _d(v0) - (-w20 * t0 - w30 * u0)):
-        assert all(_z(c) for c in vec)
+    for v in (_d(t0) - (w10 * u0 + w20 * v0), _d(u0) - (-w10 * t0 + w30 * v0),
+              _d(v0) - (-w20 * t0 - w30 * u0)):
+        _check(all(_z(c) for c in v), "1: the reference frame satisfies Eq. frenini")
     return sp.cos(Om) / R, -sp.sin(Om) / R, N / R
 
 
-def check_hoop_force(F: dict[str, sp.Matrix]) -> sp.Expr:
-    """Step 2: Eq. ``Munder`` with M = 0, w = w0, load q = -q e_r -> F_t = -q R."""
-    w1, w2, _ = check_spontaneous_torsions(F)
+def check_hoop_force(F: dict[str, sp.Matrix], w0: tuple[sp.Expr, sp.Expr, sp.Expr]
+                     ) -> sp.Expr:
+    """Step 2: all four lines of Eq. ``Munder`` (as printed, :func:`straight_rod.munder
+    <spectral_rod.derivations.straight_rod.munder>`) with M = 0, m = 0, w = w0 (from step 1)
+    and the load q = -q e_r: line 3 gives F_t = -q R, and with it every line vanishes."""
     load = -q * F["e_r"]
-    q_u, q_v, q_t = load.dot(F["u0"]), load.dot(F["v0"]), load.dot(F["t0"])
-    Ft = sp.Symbol("F_t")
-    eq1 = q_t  # dF_t/ds + q_t = 0 with F_t constant
-    eq3 = -w1 * Ft - q_u
-    eq4 = w2 * Ft + q_v
-    assert _z(eq1)
-    sol = sp.solve(sp.expand_trig(eq3), Ft)
-    assert len(sol) == 1 and _z(sol[0] + q * R)
-    assert _z(eq4.subs(Ft, -q * R))
+    q_uvt = (load.dot(F["u0"]), load.dot(F["v0"]), load.dot(F["t0"]))
+    Ft = sp.Symbol("F_t")  # a constant: F_t' = 0
+    lines = munder(Ft, w0, (0, 0, 0), q=q_uvt)
+    sol = sp.solve(sp.expand_trig(lines[2]), Ft)
+    _check(len(sol) == 1 and _z(sol[0] + q * R), "2: line 3 of Eq. Munder gives F_t = -q R")
+    for k, line in enumerate(lines):
+        _check(_z(line.subs(Ft, -q * R)),
+               f"2: line {k + 1} of Eq. Munder holds for the loaded circle, F_t = -q R")
     return -q * R
 
 
@@ -113,7 +109,7 @@ def first_order_torsions(F: dict[str, sp.Matrix]) -> tuple[sp.Matrix, list[sp.Ex
     Qg = sp.eye(3) + eps * gen + eps**2 * gen * gen / 2
     QtQ = (Qg.T * Qg - sp.eye(3)).applyfunc(lambda x: sp.expand(x).coeff(eps, 1)
                                             + sp.expand(x).coeff(eps, 2))
-    assert QtQ == sp.zeros(3, 3)
+    _check(QtQ == sp.zeros(3, 3), "3: Q = I + eps Th + eps^2 Th^2/2 is orthogonal to O(eps^3)")
     # first-order part of d_i = Q d_i0 is theta x d_i0; linearise w1 = t'.u, w2 = t'.v, w3 = u'.v
     t0, u0, v0 = F["t0"], F["u0"], F["v0"]
     dt, du, dv = theta.cross(t0), theta.cross(u0), theta.cross(v0)
@@ -124,8 +120,9 @@ def first_order_torsions(F: dict[str, sp.Matrix]) -> tuple[sp.Matrix, list[sp.Ex
     dw = [lin(t0, dt, u0, du), lin(t0, dt, v0, dv), lin(u0, du, v0, dv)]
     dth = _d(theta)
     expected = [dth.dot(F["v0"]), -dth.dot(F["u0"]), dth.dot(F["t0"])]
-    for a, b in zip(dw, expected, strict=True):
-        assert _z(a - b)
+    for k, (a, b) in enumerate(zip(dw, expected, strict=True)):
+        _check(_z(a - b), f"3: first-order dw{k + 1} (Eq. frenet) = "
+               f"{('theta.v0', '-theta.u0', 'theta.t0')[k]}")
     return theta, expected
 
 
@@ -141,9 +138,10 @@ def constraint_solution(F: dict[str, sp.Matrix]) -> dict[str, sp.Expr]:
     sol = sp.solve([comps[0].subs(y_r, yr).doit(), comps[2]], [th_r, th_z], dict=True)[0]
     out = {"y_r": sp.simplify(yr), "theta_r": sp.simplify(sol[th_r]),
            "theta_z": sp.simplify(sol[th_z].doit()), "theta_phi": alpha}
-    assert _z(out["y_r"] + R * y_phi.diff(s))
-    assert _z(out["theta_z"] - (R * y_phi.diff(s, 2) + y_phi / R))
-    assert _z(out["theta_r"] - y_z.diff(s))
+    _check(_z(out["y_r"] + R * y_phi.diff(s)), "4: inextensibility y_r = -R y_phi'")
+    _check(_z(out["theta_z"] - (R * y_phi.diff(s, 2) + y_phi / R)),
+           "4: theta_z = R y_phi'' + y_phi/R")
+    _check(_z(out["theta_r"] - y_z.diff(s)), "4: theta_r = y_z'")
     return out
 
 
@@ -153,7 +151,7 @@ def hoop_work_density(F: dict[str, sp.Matrix], Ft: sp.Expr) -> sp.Expr:
     t0 = F["t0"]
     dens = -Ft * t0.dot(th.cross(th.cross(t0))) / 2
     perp2 = th.dot(th) - th.dot(t0) ** 2
-    assert _z(dens - (-q * R / 2) * perp2)
+    _check(_z(dens - (-q * R / 2) * perp2), "5: hoop work density = -(q R/2) |theta_perp|^2")
     return dens
 
 
@@ -181,7 +179,7 @@ def derive() -> dict[str, sp.Expr]:
     """
     F = frames()
     w0 = check_spontaneous_torsions(F)
-    Ft = check_hoop_force(F)
+    Ft = check_hoop_force(F, w0)
     theta_fn, dw = first_order_torsions(F)
     cons = constraint_solution(F)
     th_r, th_phi, th_z = (sp.Function(n, real=True)(s) for n in ("theta_r", "theta_phi",
@@ -195,17 +193,20 @@ def derive() -> dict[str, sp.Expr]:
     theta_cart = [theta_fn.subs(subs).doit()[i] for i in range(3)]
     hoop_y = hoop.subs(dict(zip((a, b, c), theta_cart, strict=True)))
     g_hoop = sp.simplify(-2 * hoop_y / q)
-    assert _z(g_hoop - R * (cons["theta_r"] ** 2 + cons["theta_z"] ** 2))
+    _check(_z(g_hoop - R * (cons["theta_r"] ** 2 + cons["theta_z"] ** 2)),
+           "5: hoop part of G = R (theta_r^2 + theta_z^2)")
     pots = load_potential_second_order(F)
     out = {"K": K, "F_t": Ft, "w10": w0[0], "w20": w0[1], "w30": w0[2], **cons}
     for name in ("hydrostatic", "axis"):
         v2 = pots[name].subs(pots["y_r"], cons["y_r"]).doit()
         out[f"G_{name}"] = sp.expand(g_hoop - 2 * v2 / q)
     # the simple forms quoted in spectral_rod.ring_stability's docstring (R = 1 there)
-    assert _z(out["G_hydrostatic"].subs(R, 1) - (cons["theta_r"] ** 2 + cons["theta_z"] ** 2
-                                                - y_phi * cons["theta_z"]).subs(R, 1))
-    assert _z(out["G_axis"].subs(R, 1) - (cons["theta_r"] ** 2 + cons["theta_z"] ** 2
-                                         - y_phi ** 2).subs(R, 1))
+    _check(_z(out["G_hydrostatic"].subs(R, 1) - (cons["theta_r"] ** 2 + cons["theta_z"] ** 2
+                                                - y_phi * cons["theta_z"]).subs(R, 1)),
+           "6: G_hydrostatic is the form quoted in ring_stability")
+    _check(_z(out["G_axis"].subs(R, 1) - (cons["theta_r"] ** 2 + cons["theta_z"] ** 2
+                                         - y_phi ** 2).subs(R, 1)),
+           "6: G_axis is the form quoted in ring_stability")
     return out
 
 

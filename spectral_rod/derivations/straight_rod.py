@@ -10,8 +10,10 @@ Omega = omega30 s; compressive end load P (F_t = -P); hinged ends. Eq. ``inst1``
     I1 = A1 w1'' + (P - A1 omega30^2) w1 - 2 A2 omega30 w2' = 0,
     I2 = A2 w2'' + (P - A2 omega30^2) w2 + 2 A1 omega30 w1' = 0.
 
-Steps, each checked by exact sympy identities (an ``AssertionError`` means the algebra is wrong;
-trig functions are rewritten as exponentials, so cancellation is exact):
+Steps, each checked by exact sympy identities (a
+:class:`~spectral_rod.derivations._sympy.DerivationError` naming the step means the algebra is
+wrong; the checks are not ``assert`` statements, so they also run under ``python -O``; trig
+functions are rewritten as exponentials, so cancellation is exact):
 
 1. Reference state. Eq. ``frenini`` gives w10 = w20 = 0, w30 = omega30; with M = 0 and
    F_t = -P every line of Eq. ``Munder`` holds (no loads).
@@ -77,9 +79,13 @@ import sympy as sp
 from numpy.typing import NDArray
 
 from spectral_rod import ConvergenceWarning
+from spectral_rod.derivations._sympy import DerivationError, eps, s
+from spectral_rod.derivations._sympy import check as _check
+from spectral_rod.derivations._sympy import d as _d
+from spectral_rod.derivations._sympy import vec as _vec
+from spectral_rod.derivations._sympy import z as _z
+from spectral_rod.derivations._sympy import zv as _zv
 
-s = sp.Symbol("s", real=True)
-eps = sp.Symbol("epsilon")
 A1, A2, A3, P = sp.symbols("A1 A2 A3 P", positive=True)
 omega30 = sp.Symbol("omega30", real=True)
 x1, x2, alpha, f = (sp.Function(n, real=True)(s) for n in ("x1", "x2", "alpha", "f"))
@@ -88,24 +94,6 @@ Omega = omega30 * s
 
 
 # ------------------------------------------------------------------------- sympy helpers
-
-def _vec(*c: sp.Expr) -> sp.Matrix:
-    return sp.Matrix(c)
-
-
-def _d(v: sp.Matrix | sp.Expr, n: int = 1) -> sp.Matrix | sp.Expr:
-    return sp.sympify(v).diff(s, n)
-
-
-def _z(expr: sp.Expr) -> bool:
-    """Exact zero test: trig functions rewritten as exponentials cancel under expansion."""
-    e = sp.expand(sp.expand(expr).rewrite(sp.exp))
-    return e == 0 or sp.simplify(e) == 0
-
-
-def _zv(vec: sp.Matrix) -> bool:
-    return all(_z(c) for c in vec)
-
 
 def _order(expr: sp.Expr | sp.Matrix, k: int) -> sp.Expr | sp.Matrix:
     """The eps^k coefficient of expr (k = 0 or 1), by differentiation at eps = 0."""
@@ -155,11 +143,13 @@ def check_reference_state(F: dict[str, sp.Matrix]) -> tuple[sp.Expr, sp.Expr, sp
     Eq. ``Munder`` with M = 0, F_t = -P. Returns (w10, w20, w30)."""
     t0, u0, v0 = F["t0"], F["u0"], F["v0"]
     w0 = (_d(t0).dot(u0), _d(t0).dot(v0), _d(u0).dot(v0))
-    assert _z(w0[0]) and _z(w0[1]) and _z(w0[2] - omega30)
+    _check(_z(w0[0]) and _z(w0[1]) and _z(w0[2] - omega30),
+           "1: frenini torsions of the twisted frame are (0, 0, omega30)")
     for vec in (_d(t0) - (w0[0] * u0 + w0[1] * v0), _d(u0) - (-w0[0] * t0 + w0[2] * v0),
                 _d(v0) - (-w0[1] * t0 - w0[2] * u0)):
-        assert _zv(vec)
-    assert all(_z(line) for line in munder(-P, (0, 0, omega30), (0, 0, 0)))
+        _check(_zv(vec), "1: the twisted frame satisfies Eq. frenini")
+    _check(all(_z(line) for line in munder(-P, (0, 0, omega30), (0, 0, 0))),
+           "1: the compressed rod (F_t = -P, M = 0) solves all four lines of Eq. Munder")
     return sp.Integer(0), sp.Integer(0), omega30
 
 
@@ -180,12 +170,15 @@ def perturbed_frame(F: dict[str, sp.Matrix]) -> dict[str, sp.Matrix]:
     u = uh / sp.sqrt(uh.dot(uh))
     v = t.cross(u)
     t0, u0, v0, xp = F["t0"], F["u0"], F["v0"], _d(xv)
-    assert _zv(_order(t, 0) - t0) and _zv(_order(u, 0) - u0) and _zv(_order(v, 0) - v0)
-    assert _zv(_order(t, 1) - xp)
-    assert _zv(_order(u, 1) - (alpha * v0 - xp.dot(u0) * t0))
-    assert _zv(_order(v, 1) - (-alpha * u0 - xp.dot(v0) * t0))
+    _check(_zv(_order(t, 0) - t0) and _zv(_order(u, 0) - u0) and _zv(_order(v, 0) - v0),
+           "2: the perturbed frame reduces to (t0, u0, v0) at eps = 0")
+    _check(_zv(_order(t, 1) - xp), "2: t1 = x'")
+    _check(_zv(_order(u, 1) - (alpha * v0 - xp.dot(u0) * t0)), "2: u1 = alpha v0 - (x'.u0) t0")
+    _check(_zv(_order(v, 1) - (-alpha * u0 - xp.dot(v0) * t0)),
+           "2: v1 = -alpha u0 - (x'.v0) t0")
     vh = vt - vt.dot(t) * t - vt.dot(u) * u
-    assert _zv(_order(vh / sp.sqrt(vh.dot(vh)) - v, 1))
+    _check(_zv(_order(vh / sp.sqrt(vh.dot(vh)) - v, 1)),
+           "2: v = t x u agrees with Gram-Schmidt of the rotated v-axis")
     return {"t": t, "u": u, "v": v, "x": xv}
 
 
@@ -202,19 +195,24 @@ def first_order_torsions(F: dict[str, sp.Matrix], fr: dict[str, sp.Matrix]
     w_1 = (xpp.dot(u0), xpp.dot(v0), _d(alpha))
     exact = (_d(t).dot(u), _d(t).dot(v), _d(u).dot(v))
     for k in range(3):
-        assert _z(_order(exact[k], 0) - (0, 0, omega30)[k])
-        assert _z(_order(exact[k], 1) - w_1[k])
+        _check(_z(_order(exact[k], 0) - (0, 0, omega30)[k]), f"3: w{k + 1} at order eps^0")
+        _check(_z(_order(exact[k], 1) - w_1[k]), f"3: w{k + 1} at order eps^1 (Eq. frenet)")
     # any first-order perturbation a(s) of u gives the same w1: t0' = 0 kills (t0)'.a
     a = sp.Matrix([sp.Function(f"a{i}", real=True)(s) for i in range(3)])
     t_lin = F["t0"] + eps * _d(xv)
-    assert _z(_order(_d(t_lin).dot(u0 + eps * a), 1) - w_1[0])
+    _check(_z(_order(_d(t_lin).dot(u0 + eps * a), 1) - w_1[0]),
+           "3: w1 is the same for any first-order perturbation of u")
     # the paper's geometric relations: x'' = w1 u0 + w2 v0
-    assert _z(_d(x1, 2) - (w_1[0] * sp.cos(Omega) - w_1[1] * sp.sin(Omega)))
-    assert _z(_d(x2, 2) - (w_1[0] * sp.sin(Omega) + w_1[1] * sp.cos(Omega)))
+    _check(_z(_d(x1, 2) - (w_1[0] * sp.cos(Omega) - w_1[1] * sp.sin(Omega))),
+           "3: x1'' = w1 cos(Omega) - w2 sin(Omega)")
+    _check(_z(_d(x2, 2) - (w_1[0] * sp.sin(Omega) + w_1[1] * sp.cos(Omega))),
+           "3: x2'' = w1 sin(Omega) + w2 cos(Omega)")
     Mu, Mv, Mt = constit(w_1, (0, 0, 0))
-    assert _z(Mu - A2 * (_d(x1, 2) * sp.sin(Omega) - _d(x2, 2) * sp.cos(Omega)))
-    assert _z(Mv - A1 * (_d(x1, 2) * sp.cos(Omega) + _d(x2, 2) * sp.sin(Omega)))
-    assert _z(Mt - A3 * _d(alpha))
+    _check(_z(Mu - A2 * (_d(x1, 2) * sp.sin(Omega) - _d(x2, 2) * sp.cos(Omega))),
+           "3: printed M_u = A2 (x1'' sin - x2'' cos)")
+    _check(_z(Mv - A1 * (_d(x1, 2) * sp.cos(Omega) + _d(x2, 2) * sp.sin(Omega))),
+           "3: printed M_v = A1 (x1'' cos + x2'' sin)")
+    _check(_z(Mt - A3 * _d(alpha)), "3: printed M_t = A3 alpha'")
     return w_1
 
 
@@ -227,16 +225,20 @@ def linearised_munder(w_1: tuple[sp.Expr, sp.Expr, sp.Expr]) -> list[sp.Expr]:
     w = (eps * w1, eps * w2, omega30 + eps * _d(alpha))
     lines = munder(-P + eps * f, w, constit(w, (0, 0, omega30)))
     lin = [sp.expand(_order(line, 1)) for line in lines]
-    assert all(_z(_order(line, 0)) for line in lines)
+    _check(all(_z(_order(line, 0)) for line in lines), "4: Eq. Munder holds at order eps^0")
     I1, I2 = inst1(w1, w2)
-    for got, want in zip(lin, (_d(f), A3 * _d(alpha, 2), I1, -I2), strict=True):
-        assert _z(got - want)
+    names = ("f'", "A3 alpha''", "I1 of inst1", "-I2 of inst1")
+    for k, (got, want) in enumerate(zip(lin, (_d(f), A3 * _d(alpha, 2), I1, -I2), strict=True)):
+        _check(_z(got - want), f"4: line {k + 1} of Eq. Munder at order eps^1 is {names[k]}")
     # lines 3-4 are free of f and alpha; lines 1-2 are free of w: the decoupling
-    assert not ({f, alpha} & (lin[2].atoms(sp.Function) | lin[3].atoms(sp.Function)))
-    assert not ({w1, w2} & (lin[0].atoms(sp.Function) | lin[1].atoms(sp.Function)))
+    _check(not ({f, alpha} & (lin[2].atoms(sp.Function) | lin[3].atoms(sp.Function))),
+           "4: lines 3-4 of Eq. Munder contain neither f nor alpha")
+    _check(not ({w1, w2} & (lin[0].atoms(sp.Function) | lin[1].atoms(sp.Function))),
+           "4: lines 1-2 of Eq. Munder contain no w")
     subs = {w1: w_1[0], w2: w_1[1]}
     I1x, I2x = inst1(w_1[0], w_1[1])
-    assert _z(lin[2].subs(subs).doit() - I1x) and _z(lin[3].subs(subs).doit() + I2x)
+    _check(_z(lin[2].subs(subs).doit() - I1x) and _z(lin[3].subs(subs).doit() + I2x),
+           "4: lines 3-4 with w from step 3 are inst1 in x")
     return lin
 
 
@@ -248,7 +250,8 @@ def end_shortening() -> sp.Expr:
     a, b = sp.symbols("a b", real=True)  # stand-ins for x1', x2'
     short = 1 - sp.sqrt(1 - eps**2 * (a**2 + b**2))
     ser = sp.series(short, eps, 0, 4).removeO()
-    assert sp.expand(ser - eps**2 * (a**2 + b**2) / 2) == 0
+    _check(sp.expand(ser - eps**2 * (a**2 + b**2) / 2) == 0,
+           "5a: end shortening 1 - t.e3 = eps^2 |x'|^2/2 + O(eps^4)")
     return (_d(x1) ** 2 + _d(x2) ** 2) / 2
 
 
@@ -269,21 +272,23 @@ def energy_route(F: dict[str, sp.Matrix]) -> dict[str, sp.Expr]:
     # by hand: E = (dL/dx'')'' - (dL/dx')' with dL/dx'' = A1 w1 u0 + A2 w2 v0, dL/dx' = -P x'
     moment = A1 * k1 * u0 + A2 * k2 * v0
     E = _d(moment, 2) + P * _d(xv, 2)
-    assert _z(el[0] - E[0]) and _z(el[1] - E[1]) and _z(E[2])
+    _check(_z(el[0] - E[0]) and _z(el[1] - E[1]) and _z(E[2]),
+           "5: sympy's Euler-Lagrange equations equal the hand form E")
     G = moment + P * xv
-    assert _zv(E - _d(G, 2))
+    _check(_zv(E - _d(G, 2)), "5: E = G''")
     I1, I2 = inst1(k1, k2)
     E_u, E_v = E.dot(u0), E.dot(v0)
-    assert _z(E_u - I1) and _z(E_v - I2)
+    _check(_z(E_u - I1) and _z(E_v - I2), "5: E.u0 = I1, E.v0 = I2 (inst1 in the body frame)")
     # first variation: dL = E.h + B' with B = (dL/dx' - (dL/dx'')').h + (dL/dx'').h'
     h = tuple(sp.Function(n, real=True)(s) for n in ("h1", "h2"))
     hv = h[0] * F["e1"] + h[1] * F["e2"]
     dL = _order(L.subs({x1: x1 + eps * h[0], x2: x2 + eps * h[1]}).doit(), 1)
     B = (-P * _d(xv) - _d(moment)).dot(hv) + moment.dot(_d(hv))
-    assert _z(dL - E.dot(hv) - _d(B))
+    _check(_z(dL - E.dot(hv) - _d(B)), "5: first variation = E.h + B' (natural end conditions)")
     # torsion energy 1/2 A3 alpha'^2: its EL expression is -A3 alpha'' (line 2 of Munder)
     el_t = euler_equations(A3 * _d(alpha) ** 2 / 2, [alpha], s)[0]
-    assert _z(el_t.lhs - el_t.rhs + A3 * _d(alpha, 2))
+    _check(_z(el_t.lhs - el_t.rhs + A3 * _d(alpha, 2)),
+           "5: the torsion energy gives A3 alpha'' = 0 (line 2 of Eq. Munder)")
     return {"L": L, "E": E, "G": G, "E_u": E_u, "E_v": E_v, "natural_bc": moment}
 
 
@@ -294,16 +299,18 @@ def hinged_equivalence(F: dict[str, sp.Matrix]) -> sp.Matrix:
     """
     u0, v0 = F["u0"], F["v0"]
     rot = sp.Matrix.hstack(u0[:2, 0], v0[:2, 0])  # (x1'', x2'') = rot (w1, w2)
-    assert _z(rot.det() - 1)
+    _check(_z(rot.det() - 1), "6: x'' = w1 u0 + w2 v0 is a rotation")
     xw = -(A1 * w1 * u0 + A2 * w2 * v0) / P
     I1, I2 = inst1(w1, w2)
-    assert _z(_d(xw, 2).dot(u0) - w1 + I1 / P) and _z(_d(xw, 2).dot(v0) - w2 + I2 / P)
-    assert _z(xw[2])
+    _check(_z(_d(xw, 2).dot(u0) - w1 + I1 / P) and _z(_d(xw, 2).dot(v0) - w2 + I2 / P),
+           "6: x_w''.u0 - w1 = -I1/P, x_w''.v0 - w2 = -I2/P")
+    _check(_z(xw[2]), "6: x_w has no axial component")
     # G[x_w] = A1 k1 u0 + A2 k2 v0 + P x_w vanishes when (k1, k2) = (w1, w2), i.e. on inst1
     k1 = _d(xw, 2).dot(u0)
     k2 = _d(xw, 2).dot(v0)
     G = A1 * k1 * u0 + A2 * k2 * v0 + P * xw
-    assert _zv(G - (A1 * (k1 - w1) * u0 + A2 * (k2 - w2) * v0))
+    _check(_zv(G - (A1 * (k1 - w1) * u0 + A2 * (k2 - w2) * v0)),
+           "6: G[x_w] vanishes on the curvatures of inst1")
     return xw
 
 
@@ -338,18 +345,22 @@ def check_variant_structure() -> dict[str, dict[str, sp.Expr]]:
     from sympy.calculus.euler import euler_equations
 
     c1, c2, g, r = sp.symbols("c1 c2 gamma r", nonzero=True)
-    assert tuple(inst1(w1, w2)) == coupling_operator(*SYMBOLIC_VARIANTS["printed"])
+    _check(tuple(inst1(w1, w2)) == coupling_operator(*SYMBOLIC_VARIANTS["printed"]),
+           "7: inst1 is the coupling system with (c1, c2) = (-2 A2, 2 A1)")
     # scaling w2 -> g w2: operator(c1, c2)(w1, g w2) = diag(1, g) operator(g c1, c2/g)(w1, w2)
     lhs = coupling_operator(c1, c2, v2=g * w2)
     rhs = coupling_operator(g * c1, c2 / g)
-    assert _z(lhs[0] - rhs[0]) and _z(lhs[1] - g * rhs[1])
+    _check(_z(lhs[0] - rhs[0]) and _z(lhs[1] - g * rhs[1]),
+           "7: scaling w2 -> g w2 maps (c1, c2) to (g c1, c2/g)")
     # Lagrange form with weights (1, r) is a total derivative iff c1 + r c2 = 0
     z1, z2 = (sp.Function(n, real=True)(s) for n in ("z1", "z2"))
     Lw, Lz = coupling_operator(c1, c2), coupling_operator(c1, c2, v1=z1, v2=z2)
     form = z1 * Lw[0] + r * z2 * Lw[1] - w1 * Lz[0] - r * w2 * Lz[1]
     el = [e.lhs for e in euler_equations(form, [w1, w2, z1, z2], s)]
-    assert all(_z(e.subs(r, -c1 / c2)) for e in el)
-    assert _z(el[2] - (c1 + r * c2) * omega30 * _d(w2))
+    _check(all(_z(e.subs(r, -c1 / c2)) for e in el),
+           "7: the Lagrange form with weight r = -c1/c2 is a total derivative")
+    _check(_z(el[2] - (c1 + r * c2) * omega30 * _d(w2)),
+           "7: the Lagrange form is a total derivative only if c1 + r c2 = 0")
     out = {}
     A = sp.Symbol("A", positive=True)
     phi = sp.Function("phi")(s)
@@ -375,9 +386,10 @@ def _isotropic_shift(k1: sp.Expr, k2: sp.Expr, A: sp.Symbol, phi: sp.Function) -
         b = -beta * omega30 / (2 * A)
         gauged = sp.expand(cand.subs(zeta, sp.exp(b * s) * phi).doit() / sp.exp(b * s))
         shift = sp.simplify(P - (gauged - A * _d(phi, 2)).coeff(phi))
-        assert _z(gauged - (A * _d(phi, 2) + (P - shift) * phi))
+        _check(_z(gauged - (A * _d(phi, 2) + (P - shift) * phi)),
+               "7: the gauge exp(b s) removes zeta' at A1 = A2")
         return shift
-    raise AssertionError("no combination w1 + c w2 closes (c = i, 1)")
+    raise DerivationError("7: no combination w1 + c w2 closes (c = i, 1)")
 
 
 @lru_cache(maxsize=1)
@@ -488,7 +500,6 @@ class VariantRoot(NamedTuple):
 
     ``error`` = |p*(n) - p*(n + N_CHECK)|; ``lowest_complex`` = the resolved complex eigenvalue
     (lambda/pi^2, present at both resolutions to 1e-6) of smallest real part, or None.
-    (A NamedTuple, not a dataclass: the module is loaded by path, outside ``sys.modules``.)
     """
 
     p_star: float
