@@ -267,6 +267,18 @@ SPECS: dict[str, Spec] = {
          "raise_on_failure": boolean()},
         lambda r, a: math.isfinite(r.load) and r.load > 0, faults=(sr.RingConvergenceError,),
         positional=("N", "nu")),
+    "destabilisation_threshold": Spec(
+        sr.destabilisation_threshold,
+        {"e_ratio": real(0.1, 10.0, 0.0), "load": LOAD,
+         "nus": Arg(st.lists(st.floats(1.0, 6.0), min_size=2, max_size=3, unique=True)
+                    .map(sorted), [([3.0, 2.0], ValueError), ([0.5, 2.0], ValueError),
+                                   ("ab", TypeError)]),
+         "twists": Arg(st.sampled_from([(0, 1), (0, 2), (0, 1, 2)]),
+                       [((1, 2), ValueError), (3, TypeError), ((0, -1), ValueError)]),
+         "xtol": real(1e-6, 0.5, 0.0),
+         "method": choice("second-variation", invalid=NOT_STR)},
+        lambda r, a: math.isnan(r) or min(a["nus"]) <= r <= max(a["nus"]),
+        faults=(sr.RingConvergenceError,), positional=("e_ratio", "load", "nus")),
     "fd_critical_load": Spec(sr.fd_critical_load,
                              {"twist_angle": SMALL_TWIST, "nu": real(1.0, 100.0, 0.5),
                               "intervals": integer(8, 2000, 3, 1 << 22)},

@@ -27,7 +27,7 @@ from pathlib import Path
 
 from reproduce._runner import SceneOutput
 from reproduce.io import write_text, write_with
-from reproduce.ledger import Claim, update_ledger
+from reproduce.ledger import LEDGER_CHECK, Claim, update_ledger
 from reproduce.ring.evidence import E_RATIOS, NUS, TWISTS, RingEvidence, compute_evidence
 from reproduce.ring.outputs import (
     draw,
@@ -68,10 +68,7 @@ CHECK = {
     "ring_formulations.csv": {"q_*": 1e-10, "rel_diff": {"abs": 1e-12},
                               "e_ratio": 1e-14, "nu": 1e-14, "*": "exact"},
     "ring_wide.csv": {"q": 1e-10, "*": "exact"},
-    "claims.json": {"_owner": "scene", "*.evidence": "text", "*.numbers.headline": "text",
-                    "*.numbers.*": {"rel": 1e-9, "abs": 1e-10},
-                    "*.cross_checks.*.disagreement": {"rel": 1e-6, "abs": 1e-10},
-                    "*": "exact"},
+    "claims.json": LEDGER_CHECK,
     "sections/ring.json": {"details.timings.*": "ignore",
                            "details.crit2_deviation.*": {"rel": 1e-9, "abs": 1e-12},
                            "*": "exact"},
