@@ -33,7 +33,13 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from types import ModuleType
 
-from reproduce.io import ensure_writable_dir, read_json, remove_stale_temporaries, write_text
+from reproduce.io import (
+    ensure_writable_dir,
+    json_value,
+    read_json,
+    remove_stale_temporaries,
+    write_text,
+)
 from reproduce.ledger import SCENE_ORDER, read_ledger, verdict_counts
 from reproduce.paths import CODE_DIR
 
@@ -169,7 +175,7 @@ def _run_one(name: str, counter: str, out: Path, commit: str, log: Callable[[str
                json.dumps({"seconds": seconds, "finished": finished, "commit": commit,
                            "files": [str(p.relative_to(out)) if p.is_relative_to(out)
                                      else str(p) for p in result.files],
-                           "details": result.details}, indent=2, default=str))
+                           "details": result.details}, indent=2, default=json_value))
     log(f"    {name}: done in {seconds:.1f} s, wrote {len(result.files)} files")
     return seconds
 

@@ -41,6 +41,7 @@ from spectral_rod import (
     critical_load,
     fd_critical_load,
     load_figure1,
+    observed_order,
     tail_for_tolerance,
 )
 
@@ -400,6 +401,5 @@ def _fd_slopes(runs: pd.DataFrame) -> list[float]:
         fd = case[case["method"] == "finite differences"]
         ok = (fd["rel_error"] < 1e-2) & (fd["rel_error"] > 1e-7)
         if ok.sum() >= 2:
-            slopes.append(float(-np.polyfit(np.log(fd["resolution"][ok]),
-                                            np.log(fd["rel_error"][ok]), 1)[0]))
+            slopes.append(-observed_order(fd["resolution"][ok], fd["rel_error"][ok]))
     return slopes

@@ -24,7 +24,7 @@ import numpy as np
 import pandas as pd
 
 from reproduce._runner import SceneOutput
-from reproduce.io import write_csv, write_figure, write_text
+from reproduce.io import json_value, write_csv, write_figure, write_text
 from reproduce.ledger import (
     Claim,
     ClaimSpec,
@@ -507,7 +507,7 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
              f"{len(fx.missing_points)} missing points ({t_fx:.1f} s)")
     files.append(write_figure(out / "figure1_forensics.png", draw_forensics(fx)))
     files.append(write_text(out / "figure1_forensics.json",
-                            json.dumps(fx.to_json(), indent=1, default=float) + "\n"))
+                            json.dumps(fx.to_json(), indent=1, default=json_value) + "\n"))
     claim = forensics_claim(fx, summary, truth_check(table))
     files += update_ledger(out, NAME, [claim])
     lines += ["", *forensics_section(fx, claim, t_fx)]

@@ -102,6 +102,26 @@ def write_figure(path: str | os.PathLike[str], fig: Any, dpi: int = 150, *,
     return written
 
 
+def json_value(value: Any) -> Any:
+    """``default=`` of :func:`json.dumps` for the outputs: numpy scalars and arrays as the JSON
+    type of their value (bool, int, float, list), other real numbers (mpmath's) as floats, paths
+    as text; anything else is an error, not text, so that a number never reaches a JSON output
+    as a string and a flag never as a float.
+
+    >>> import numpy as np
+    >>> json.dumps({"n": np.int64(3), "ok": np.bool_(True), "x": np.float64(0.5)},
+    ...            default=json_value)
+    '{"n": 3, "ok": true, "x": 0.5}'
+    """
+    if hasattr(value, "tolist") and hasattr(value, "dtype"):  # numpy scalar or array
+        return value.tolist()
+    if isinstance(value, os.PathLike):
+        return os.fspath(value)
+    if hasattr(value, "__float__") and not isinstance(value, (str, bytes)):  # e.g. mpmath.mpf
+        return float(value)
+    raise TypeError(f"{type(value).__name__} {value!r} is not a JSON value")
+
+
 def read_json(path: str | os.PathLike[str], kind: type = dict, keys: Sequence[str] = ()
               ) -> Any:
     """The JSON document at `path`, checked to be a `kind` (dict or list) and, for a dict, to

@@ -32,7 +32,7 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
 
-from reproduce.io import OutputFileError, read_json, write_text
+from reproduce.io import OutputFileError, json_value, read_json, write_text
 from reproduce.tables import markdown_table
 
 VERDICTS = ("holds", "holds approximately", "fails", "inconclusive")
@@ -231,7 +231,7 @@ def update_ledger(out_dir: Path, scene: str, claims: list[Claim]) -> list[Path]:
         raise ValueError(f"duplicate claim ids in the ledger: {dupes}")
     order = {s: i for i, s in enumerate(SCENE_ORDER)}
     rows.sort(key=lambda r: (order.get(r["scene"], len(order)), r["scene"], r["id"]))
-    write_text(json_path, json.dumps(rows, indent=2, default=float) + "\n")
+    write_text(json_path, json.dumps(rows, indent=2, default=json_value) + "\n")
     md_path = write_text(Path(out_dir) / "claims.md", _markdown(rows))
     return [json_path, md_path]
 

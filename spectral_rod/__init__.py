@@ -118,7 +118,7 @@ _EXPORTS = {
     "FORENSICS_VARIABLES": "figure1_forensics:VARIABLES",
     "FORENSICS_Y_PER_P": "figure1_forensics:Y_PER_P",
     "non_planarity": "measures", "local_maxima": "measures", "family_switches": "measures",
-    "increasing_up_to": "measures", "settling_point": "measures",
+    "increasing_up_to": "measures", "settling_point": "measures", "observed_order": "measures",
     "ring_buckling": "ring_stability", "ring_critical_load": "ring_stability",
 }
 

@@ -13,7 +13,8 @@ import spectral_rod
 
 MODULES = sorted(
     [m.name for m in pkgutil.walk_packages(spectral_rod.__path__, "spectral_rod.")]
-    + ["spectral_rod", "reproduce.ledger", "reproduce.tables", "reproduce.compare"])
+    + ["spectral_rod", "reproduce.ledger", "reproduce.tables", "reproduce.compare",
+       "reproduce.io"])
 
 
 @pytest.mark.parametrize("name", MODULES)

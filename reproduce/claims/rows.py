@@ -33,6 +33,7 @@ from spectral_rod import (
     large_twist_limit,
     large_twist_wavenumbers,
     local_maxima,
+    observed_order,
 )
 
 SCENE = "claims"
@@ -256,7 +257,7 @@ def measure_further_maxima(ev: StraightRodEvidence) -> Measured:
     # offset scaling (Omega_n - n pi) ~ C n^-3 for the detailed nu
     ns = np.array([m.n for m in detail], dtype=float)
     offs = np.array([m.offset for m in detail])
-    slope = float(np.polyfit(np.log(ns[-8:]), np.log(offs[-8:]), 1)[0])
+    slope = observed_order(ns[-8:], offs[-8:])
     last = detail[-1]
     predicted = (crossing_twist_asymptotic(last.n, DETAIL_NU) - last.n * math.pi) / math.pi
     no_max_near_pi = all(rises_until_first_maximum(ev, nu) for nu in NUS)
@@ -324,7 +325,7 @@ def measure_limit(ev: StraightRodEvidence) -> Measured:
             r = [x for x in rows if x["nu"] == nu]
             om = np.array([x["twist"] for x in r])
             err = np.abs(np.array([x[f"err{k}"] for x in r]))
-            fits.append(float(np.polyfit(np.log(om), np.log(err), 1)[0]))
+            fits.append(observed_order(om, err))
         orders[k] = (min(fits), max(fits))
     om_max = max(x["twist"] for x in rows)
     worst4 = max(abs(x["err4"]) for x in rows if x["twist"] == om_max)
@@ -485,8 +486,8 @@ def measure_resonance(ev: StraightRodEvidence) -> Measured:
              max(abs(b1 - a1), abs(b2 - a2))))
 
     def order(k: int) -> list[float]:
-        return [float(np.polyfit(np.log([r[0] for r in rows]), np.log([r[k] for r in rows]),
-                                 1)[0]) for rows in devs.values()]
+        return [observed_order([r[0] for r in rows], [r[k] for r in rows])
+                for rows in devs.values()]
 
     fits, fits_pred = order(1), order(2)
     worst = max(r[1] for rows in devs.values() for r in rows
@@ -532,8 +533,7 @@ def measure_three_dimensional(ev: StraightRodEvidence) -> Measured:
     min_ratio = min(m["omega2_over_omega1"] for m in twisted)
     mismatch = max(m["shape_mismatch"] for m in twisted)
     dec = ev.planarity_decay
-    decay = float(np.polyfit(np.log([r["twist"] for r in dec]),
-                             np.log([r["planarity_mp"] for r in dec]), 1)[0])
+    decay = observed_order([r["twist"] for r in dec], [r["planarity_mp"] for r in dec])
     cases = "; ".join(f"Ω = {m['twist']:g}, ν = {m['nu']:g}: σ_min/σ_max = "
                       f"{m['planarity_mp']:.3f} (mpmath) / {m['planarity_coll']:.3f} "
                       f"(collocation), max|ω2|/max|ω1| = {m['omega2_over_omega1']:.3f}"

@@ -457,9 +457,9 @@ def _destabilised(ev: RingEvidence) -> dict[str, dict[str, object]]:
             for nu, q in _series(ev.wide, label, load).items():
                 lower = q[1:] < q[0] * (1 - EXACT_TOL)
                 below, total = below + int(lower.sum()), total + lower.size
-                raised += [(label, nu) for _ in range(int((~lower).sum()))]
-        out[load] = {"below": below, "total": total,
-                     "raised_at": sorted({f"{lab}, ν = {nu:g}" for lab, nu in raised})}
+                if not lower.all():
+                    raised.append({"e_label": label, "nu": float(nu)})
+        out[load] = {"below": below, "total": total, "raised_at": raised}
     return out
 
 
