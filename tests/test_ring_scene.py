@@ -165,11 +165,15 @@ def test_destabilises_verdict(evidence: scene.RingEvidence, claims: dict) -> Non
 
 
 def test_destabilising_rule() -> None:
-    decide = rows.DESTABILISES.rule.decide
-    assert decide({"every_case_lowered": {"hydrostatic": True, "axis": True}}) == "holds"
-    assert decide({"every_case_lowered": {"hydrostatic": False, "axis": True}}) == \
-        "holds approximately"
-    assert decide({"every_case_lowered": {"hydrostatic": False, "axis": False}}) == "fails"
+    def decide(hydrostatic: bool, axis: bool, cases: int = 10) -> str:
+        return rows.DESTABILISES.rule.decide(
+            {"every_case_lowered": {"hydrostatic": hydrostatic, "axis": axis},
+             "fewest_cases": cases})
+
+    assert decide(True, True) == "holds"
+    assert decide(False, True) == "holds approximately"
+    assert decide(False, False) == "fails"
+    assert decide(True, True, cases=0) == "inconclusive"  # all([]) is no evidence
 
 
 @pytest.mark.parametrize("spec_measure", rows.CLAIMS, ids=[s.id for s, _ in rows.CLAIMS])
@@ -372,3 +376,23 @@ def test_threshold_paragraph_follows_the_verdict(claims) -> None:
     assert "physical?** No." in scene.physical_threshold_text(row)
     for verdict, word in (("holds", "Yes"), ("inconclusive", "Undecided")):
         assert word in scene.physical_threshold_text(dataclasses.replace(row, verdict=verdict))
+
+
+def test_rules_without_evidence_are_inconclusive(evidence: scene.RingEvidence) -> None:
+    """A rule never reads "holds" or "fails" off an empty set of cases (all([]) is True)."""
+    cases = {"ring-monotone-decrease": {"groups": 0},
+             "ring-rate-grows-with-nu": {"fewest_nus": 1},
+             "ring-three-dimensional": {"n_modes": 0},
+             "intro-three-dimensional": {"ring_n_modes": 0}}
+    for claim_id, empty in cases.items():
+        spec = next(s for s, _ in rows.CLAIMS if s.id == claim_id)
+        n = _numbers(claim_id, evidence)
+        assert spec.rule.decide(n) != "inconclusive", claim_id
+        assert spec.rule.decide({**n, **empty}) == "inconclusive", claim_id
+    n = _numbers("ring-destabilises", evidence)
+    assert n["fewest_cases"] > 0
+    assert rows.DESTABILISES.rule.decide({**n, "fewest_cases": 0}) == "inconclusive"
+    # a planar rod mode decides the introduction's claim whatever the ring shows
+    n = _numbers("intro-three-dimensional", evidence)
+    assert rows.INTRO_3D.rule.decide({**n, "rod_non_planarity": 0.0, "ring_n_modes": 0}) == \
+        "fails"

@@ -270,8 +270,10 @@ MONOTONE = ClaimSpec(
     test=f"Converged q_cr(N), N = {_range(TWISTS)}, for each ν > 1 of the table, e and load "
          "model: any rise q(N+1) > q(N). (crit2 itself is monotone by construction.)",
     methods=(SECOND_VARIATION,), shared_checks=True, one_formulation_why=MUNDER_COVERAGE,
-    rule=Rule("holds if q_cr(N) never rises with N in any (ν, e, load) series; fails otherwise",
-              lambda n: "holds" if n["non_monotone_groups"] == 0 else "fails"),
+    rule=Rule("holds if q_cr(N) never rises with N in any (ν, e, load) series; fails if it rises "
+              "in some; inconclusive if no series was solved",
+              lambda n: "inconclusive" if n["groups"] == 0 else
+              "holds" if n["non_monotone_groups"] == 0 else "fails"),
     figure="ring.png", related=("ring-rate-grows-with-nu", "ring-destabilises"))
 
 
@@ -321,8 +323,10 @@ RATE = ClaimSpec(
          f"{{{', '.join(f'{v:g}' for v in WIDE_NUS)}}}, both e and load models: is it increasing "
          "in ν?",
     methods=(SECOND_VARIATION,), shared_checks=True, one_formulation_why=MUNDER_COVERAGE,
-    rule=Rule("holds if the relative drop grows with ν in every (e, load) series; fails otherwise",
-              lambda n: "holds" if all(n["drop_grows_with_nu"].values()) else "fails"),
+    rule=Rule("holds if the relative drop grows with ν in every (e, load) series; fails if not; "
+              "inconclusive if some series has fewer than two ν (nothing to compare)",
+              lambda n: "inconclusive" if n["fewest_nus"] < 2 else
+              "holds" if all(n["drop_grows_with_nu"].values()) else "fails"),
     related=("ring-monotone-decrease",))
 
 
@@ -336,7 +340,8 @@ def measure_rate(ev: RingEvidence) -> Measured:
             grows[f"{label}/{load}"] = bool(np.all(np.diff(d) > 0))
     h = drops["e=1/hydrostatic"]
     return Measured(
-        numbers={"relative_drop_0_to_10": drops, "drop_grows_with_nu": grows},
+        numbers={"relative_drop_0_to_10": drops, "drop_grows_with_nu": grows,
+                 "fewest_nus": min((len(v) for v in drops.values()), default=0)},
         evidence="Relative drop q(0)→q(10) by ν (e = 1, hydrostatic): "
                  + ", ".join(f"{nu:g}: {v:+.3f}" for nu, v in h.items())
                  + "; grows with ν: " + ", ".join(f"{k} {v}" for k, v in grows.items())
@@ -474,10 +479,10 @@ DESTABILISES = ClaimSpec(
     methods=(SECOND_VARIATION, CLASSICAL), shared_checks=True,
     rule=Rule("holds if q_cr(N) < q_cr(0) in every case for both load models; holds "
               "approximately if so for one of the two load models the paper's wording allows; "
-              "fails if for neither",
-              lambda n: ("holds" if all(n["every_case_lowered"].values()) else
-                         "holds approximately" if any(n["every_case_lowered"].values())
-                         else "fails")),
+              "fails if for neither; inconclusive if a load model has no twisted case solved",
+              lambda n: "inconclusive" if n["fewest_cases"] == 0 else
+              "holds" if all(n["every_case_lowered"].values()) else
+              "holds approximately" if any(n["every_case_lowered"].values()) else "fails"),
     figure="ring.png", related=("caveat-load-model", "ring-rate-grows-with-nu"))
 
 
@@ -515,7 +520,8 @@ def measure_destabilises(ev: RingEvidence) -> Measured:
     zero = ("No twist leads to instability without load (every q_cr > 0)."
             if s["all_positive"] else "Some q_cr ≤ 0: see ring-spontaneous-instability.")
     return Measured(
-        numbers={"per_load": d, "every_case_lowered": every, "nu_boundary": bounds,
+        numbers={"per_load": d, "every_case_lowered": every,
+                 "fewest_cases": min(v["total"] for v in d.values()), "nu_boundary": bounds,
                  "limits_e1": lim},
         evidence=f"{txt}. Some twist raises the load above ν* ({btxt or 'nowhere on the scan'}); "
                  f"{_lowering_text(ev, d)}. N → ∞ limit (e = 1, hydrostatic): ν = 1.5: "
@@ -534,8 +540,10 @@ THREE_D = ClaimSpec(
     methods=(SECOND_VARIATION, MUNDER), shared_checks=True,
     rule=Rule("holds if every critical mode with N ≥ 1, ν > 1 is coupled (in-plane share in "
               f"({RING_KIND_TOL:g}, 1 − {RING_KIND_TOL:g})); holds approximately if ≥ "
-              f"{COUPLED_MOSTLY:.0%} are; fails otherwise",
-              lambda n: "holds" if n["coupled_fraction"] == 1.0 else
+              f"{COUPLED_MOSTLY:.0%} are; fails otherwise; inconclusive if no such mode was "
+              "solved",
+              lambda n: "inconclusive" if n["n_modes"] == 0 else
+              "holds" if n["coupled_fraction"] == 1.0 else
               "holds approximately" if n["coupled_fraction"] >= COUPLED_MOSTLY else "fails"),
     related=("intro-three-dimensional",))
 
@@ -543,12 +551,14 @@ THREE_D = ClaimSpec(
 def measure_three_d(ev: RingEvidence) -> Measured:
     t = ev.table[(ev.table["nu"] > 1.0) & (ev.table["N"] >= 1)]
     kinds = [t[f"kind_{ld}"] for ld in RING_LOADS]
-    coupled = float(np.mean([(k == "coupled").mean() for k in kinds]))
+    n_modes = sum(len(k) for k in kinds)
+    coupled = float(np.mean([(k == "coupled").mean() for k in kinds])) if n_modes else math.nan
     shares = np.concatenate([t[f"in_plane_fraction_{ld}"].to_numpy() for ld in RING_LOADS])
     f = ev.formulations
     same = float((f["kind_galerkin"] != f["kind_munder"]).sum())
     return Measured(
-        numbers={"coupled_fraction": coupled, "in_plane_share_range": (float(shares.min()),
+        numbers={"coupled_fraction": coupled, "n_modes": n_modes,
+                 "in_plane_share_range": (float(shares.min()),
                                                                        float(shares.max())),
                  "kind_disagreements": same},
         evidence=f"{coupled:.0%} of the {len(t)} twisted rings (ν > 1, N ≥ 1) × 2 load models "
@@ -571,18 +581,22 @@ INTRO_3D = ClaimSpec(
     # it is the mode's, not the solver's
     rule=Rule("holds if the rod's mode is non-planar (> 1e-3) and every twisted ring mode is "
               "coupled; holds approximately if the ring's modes are coupled in ≥ "
-              f"{COUPLED_MOSTLY:.0%} of the cases; fails otherwise",
-              lambda n: ("holds" if n["ring_coupled_fraction"] == 1.0 else "holds approximately"
-                         if n["ring_coupled_fraction"] >= COUPLED_MOSTLY else "fails")
-              if n["rod_non_planarity"] > 1e-3 else "fails"),
+              f"{COUPLED_MOSTLY:.0%} of the cases; fails otherwise; inconclusive if no twisted "
+              "ring mode was solved",
+              lambda n: "fails" if not n["rod_non_planarity"] > 1e-3 else
+              "inconclusive" if n["ring_n_modes"] == 0 else
+              "holds" if n["ring_coupled_fraction"] == 1.0 else
+              "holds approximately" if n["ring_coupled_fraction"] >= COUPLED_MOSTLY else "fails"),
     related=("rod-three-dimensional", "ring-three-dimensional"))
 
 
 def measure_intro_3d(ev: RingEvidence) -> Measured:
     rod = ev.rod_non_planarity
-    ring = measure_three_d(ev).numbers["coupled_fraction"]
+    three_d = measure_three_d(ev).numbers
+    ring = three_d["coupled_fraction"]
     return Measured(
-        numbers={"rod_non_planarity": rod, "ring_coupled_fraction": ring},
+        numbers={"rod_non_planarity": rod, "ring_coupled_fraction": ring,
+                 "ring_n_modes": three_d["n_modes"]},
         evidence=f"Rod (Ω = {ROD_MODE_CASE[0]:g}, ν = {ROD_MODE_CASE[1]:g}): σ_min/σ_max = "
                  f"{rod:.3f} (see rod-three-dimensional for more cases); ring: {ring:.0%} of the "
                  "twisted modes coupled. For ν = 1 (circular section) neither statement applies: "
