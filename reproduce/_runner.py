@@ -28,17 +28,22 @@ import platform
 import subprocess
 import sys
 import time
-from collections import Counter
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 from types import ModuleType
 
-from reproduce.io import ensure_writable_dir, remove_stale_temporaries, write_text
+from reproduce.io import (
+    ensure_writable_dir,
+    json_value,
+    read_json,
+    remove_stale_temporaries,
+    write_text,
+)
+from reproduce.ledger import SCENE_ORDER, read_ledger, verdict_counts
 from reproduce.paths import CODE_DIR
 
-#: Scenes in the order `all` runs them (those whose module exists in this checkout).
-SCENE_ORDER = ("figure1", "claims", "ring", "convergence", "extremes")
+#: The scenes of :data:`reproduce.ledger.SCENE_ORDER` whose module exists in this checkout.
 SCENE_MODULES = tuple(name for name in SCENE_ORDER
                       if importlib.util.find_spec(f"reproduce.{name}") is not None)
 
@@ -81,19 +86,22 @@ def versions() -> dict[str, str]:
 
 
 def headline_verdicts(claims_json: Path) -> list[str]:
-    """Markdown lines: the number of claims per verdict and one line per claim ([] if the
-    ledger is absent or unreadable: the report is still written)."""
-    try:
-        rows = json.loads(claims_json.read_text(encoding="utf-8"))
-        rows = [(str(r["verdict"]), str(r["id"]), str(r["claim"])) for r in rows]
-    except (OSError, ValueError, TypeError, KeyError):
+    """Markdown lines: the number of claims per verdict and one line per claim ([] if there is
+    no ledger yet; :class:`reproduce.io.OutputFileError` if it is corrupt)."""
+    rows = read_ledger(claims_json)
+    if not rows:
         return []
-    counts = Counter(v for v, _, _ in rows)
+    counts = verdict_counts(str(r["verdict"]) for r in rows)
     lines = ["## Verdicts", "",
              f"{len(rows)} claims of the paper checked (`claims.md`): "
-             + ", ".join(f"**{v}** {n}" for v, n in counts.most_common()) + ".", ""]
-    lines += [f"- **{v}** `{i}`: {c}" for v, i, c in rows]
+             + ", ".join(f"**{v}** {n}" for v, n in sorted(counts.items(), key=lambda x: -x[1])
+                         if n) + ".", ""]
+    lines += [f"- **{r['verdict']}** `{r['id']}`: {r['claim']}" for r in rows]
     return [*lines, ""]
+
+
+#: Keys of ``sections/NAME.json`` that the report needs (written by :func:`_run_one`).
+SECTION_KEYS = ("seconds", "finished", "commit")
 
 
 def _assemble_report(out: Path) -> Path:
@@ -108,13 +116,13 @@ def _assemble_report(out: Path) -> Path:
         meta_path, body_path = sections / f"{name}.json", sections / f"{name}.md"
         if not (meta_path.exists() and body_path.exists()):
             continue
-        meta = json.loads(meta_path.read_text(encoding="utf-8"))
+        meta = read_json(meta_path, dict, SECTION_KEYS)
         lines.append(f"| [{name}](#{name}) | {meta['seconds']:.2f} | {meta['finished']} "
                      f"| `{meta['commit'][:12]}` |")
         bodies += ["", body_path.read_text(encoding="utf-8")]
     meta_all = sections / "_environment.json"
     if meta_all.exists():
-        env = json.loads(meta_all.read_text(encoding="utf-8"))
+        env = read_json(meta_all, dict, ("versions", "commit"))
         lines += ["", "## Environment", "", "| package | version |", "|---|---|"]
         lines += [f"| {k} | {v} |" for k, v in env["versions"].items()]
         lines += ["", f"Commit: `{env['commit']}`"]
@@ -167,7 +175,7 @@ def _run_one(name: str, counter: str, out: Path, commit: str, log: Callable[[str
                json.dumps({"seconds": seconds, "finished": finished, "commit": commit,
                            "files": [str(p.relative_to(out)) if p.is_relative_to(out)
                                      else str(p) for p in result.files],
-                           "details": result.details}, indent=2, default=str))
+                           "details": result.details}, indent=2, default=json_value))
     log(f"    {name}: done in {seconds:.1f} s, wrote {len(result.files)} files")
     return seconds
 

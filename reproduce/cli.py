@@ -17,6 +17,7 @@ from collections.abc import Callable
 from pathlib import Path
 
 from reproduce._runner import SCENE_MODULES, load_scene, log_stderr, run_scenes
+from reproduce.io import OutputFileError
 from reproduce.paths import OUT_NAME, default_out
 from reproduce.signals import interrupted_exit
 
@@ -48,8 +49,9 @@ def _parser() -> argparse.ArgumentParser:
 
 
 def _scene_names(parser: argparse.ArgumentParser, targets: list[str]) -> list[str] | None:
-    """Scene names for `targets` ('all' -> every scene); None (after printing usage) if bad."""
-    names = list(SCENE_MODULES) if targets in (["all"], []) else targets
+    """Scene names for `targets` ('all' -> every scene; a repeated name runs once, in the place
+    it was first given); None (after printing usage) if bad."""
+    names = list(SCENE_MODULES) if targets in (["all"], []) else list(dict.fromkeys(targets))
     unknown = [t for t in names if t not in SCENE_MODULES]
     if unknown or ("all" in targets and len(targets) > 1):
         parser.print_usage(sys.stderr)
@@ -93,7 +95,7 @@ def _run(names: list[str], args: argparse.Namespace, checking: bool,
             return run_check(names, args.against or default_out(), log)
         out = args.out if args.out is not None else default_out()
         run_scenes(names, out, log)
-    except (OSError, ReferenceDataError) as exc:
+    except (OSError, ReferenceDataError, OutputFileError) as exc:
         print(f"{PROG}: error: {exc}", file=sys.stderr)
         return 2
     except KeyboardInterrupt as exc:

@@ -31,7 +31,8 @@ import numpy as np
 import pandas as pd
 
 from reproduce._runner import SceneOutput
-from reproduce.io import write_with
+from reproduce.io import write_csv, write_figure
+from reproduce.tables import markdown_table
 from spectral_rod import (
     ConvergenceWarning,
     baseline_sweep,
@@ -40,6 +41,7 @@ from spectral_rod import (
     critical_load,
     fd_critical_load,
     load_figure1,
+    observed_order,
     tail_for_tolerance,
 )
 
@@ -67,7 +69,6 @@ CHECK = {
 CASES = ((2.0, 1.5), (10.0, 1.1), (30.0, 2.0), (100.0, 1.5))
 TARGETS = (1e-4, 1e-8, 1e-12)
 FD_INTERVALS = (16, 64, 256, 1024, 4096, 16384)
-COLORS = ("tab:blue", "tab:orange", "tab:green", "tab:red")
 
 
 def best_time(fn: Callable[[], object], min_total: float = 0.02, max_repeats: int = 20
@@ -94,11 +95,9 @@ def collocation_degrees(twist: float) -> list[int]:
     return list(range(8, int(abs(twist) / 2 + 52), 2 if abs(twist) < 20 else 4))
 
 
-def study_case(twist: float, nu: float) -> tuple[pd.DataFrame, float, float]:
-    """All runs at one (Omega, nu): method, resolution, unknowns per field, error, time.
-
-    Returns the runs, the reference p* and the reference's wall time.
-    """
+def study_case(twist: float, nu: float) -> pd.DataFrame:
+    """All runs at one (Omega, nu): method, resolution, unknowns per field, error, time (the
+    mpmath reference's own wall time is the row of the characteristic equation)."""
     t0 = time.perf_counter()
     ref = characteristic_critical_load(twist, nu).p_star  # no caching there: time one call
     t_ref = time.perf_counter() - t0
@@ -124,7 +123,7 @@ def study_case(twist: float, nu: float) -> tuple[pd.DataFrame, float, float]:
                                      "seconds"])
     df.insert(0, "nu", nu)
     df.insert(0, "twist_angle", twist)
-    return df, ref, t_ref
+    return df
 
 
 def cost_table(runs: pd.DataFrame) -> pd.DataFrame:
@@ -167,36 +166,51 @@ def mode_coefficients(twist: float, nu: float, tol: float = 1e-12
     return n, family, c1 / scale, c2 / scale
 
 
-def figure1_speed() -> dict[str, float]:
-    """Wall time of the Figure 1 sweep (1,201 points, tol 1e-12) vs the obvious implementation."""
+TRADE_TOLS = (1e-2, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12)
+#: Scalar calls timed per tol: a sample spread over the whole Figure 1 sweep (every
+#: (points // TRADE_SCALARS)-th point), enough for a mean per call without the full sweep's cost.
+TRADE_SCALARS = 61
+#: The tol of the speed comparison with the obvious implementation (its own accuracy level).
+SPEED_TOL = 1e-12
+
+
+def figure1_points() -> tuple[np.ndarray, np.ndarray]:
+    """Twists and nu of the digitised Figure 1 points (the sweep every timing here uses)."""
     d = load_figure1()
-    twist, nu = d["twist_angle"].to_numpy(), d["nu"].to_numpy()
-    t_new, p_new = best_time(lambda: critical_load(twist, nu, tol=1e-12, method="collocation"),
-                             min_total=0.3)
+    return d["twist_angle"].to_numpy(), d["nu"].to_numpy()
+
+
+def figure1_batches(twist: np.ndarray, nu: np.ndarray) -> dict[float, tuple[float, object]]:
+    """Per tol of TRADE_TOLS: best-of-repeats wall time and full result of the one-call Figure 1
+    batch, measured once for the tol trade and the speed comparison."""
+    return {tol: best_time(lambda tol=tol: critical_load(twist, nu, tol=tol, full_output=True),
+                           min_total=0.3) for tol in TRADE_TOLS}
+
+
+def figure1_speed(twist: np.ndarray, nu: np.ndarray, batch: tuple[float, object]
+                  ) -> dict[str, float]:
+    """Wall time of the Figure 1 sweep (`batch`: its time and result at SPEED_TOL) vs the
+    obvious implementation."""
+    t_new, res = batch
+    p_new = np.asarray(res.p_star)
     t_base, p_base = best_time(lambda: baseline_sweep(twist, nu), min_total=0.0, max_repeats=1)
     return {"points": float(twist.size), "new_s": t_new, "baseline_s": t_base,
             "ratio": t_base / t_new,
             "max_rel_diff": float(np.max(np.abs(np.asarray(p_base) / p_new - 1)))}
 
 
-TRADE_TOLS = (1e-2, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12)
-TRADE_SCALARS = 61  # every 20th Figure 1 point, one scalar call each
-
-
-def tol_trade(refs: Callable[[float, float], float]) -> pd.DataFrame:
-    """What the tol knob buys: per tol, the Figure 1 batch (one call, 1,201 points) and scalar
-    calls (TRADE_SCALARS points, one call each): best-of-repeats wall time, the largest relative
-    error against the mpmath reference on a sample, the largest error estimate, the degrees.
+def tol_trade(twist: np.ndarray, nu: np.ndarray, batches: dict[float, tuple[float, object]],
+              refs: Callable[[float, float], float]) -> pd.DataFrame:
+    """What the tol knob buys: per tol, the Figure 1 batch (`batches`) and scalar calls
+    (TRADE_SCALARS points, one call each): best-of-repeats wall time, the largest relative
+    error against the mpmath reference on the sample, the largest error estimate, the degrees.
     """
-    d = load_figure1()
-    twist, nu = d["twist_angle"].to_numpy(), d["nu"].to_numpy()
     sample = np.arange(0, twist.size, twist.size // TRADE_SCALARS)[:TRADE_SCALARS]
     ref = np.array([refs(float(twist[i]), float(nu[i])) for i in sample])
     scal_tw, scal_nu = twist[sample].tolist(), nu[sample].tolist()
     rows = []
     for tol in TRADE_TOLS:
-        t_batch, res = best_time(lambda tol=tol: critical_load(twist, nu, tol=tol,
-                                                               full_output=True), min_total=0.3)
+        t_batch, res = batches[tol]
         t_scal, ps = best_time(lambda tol=tol: [critical_load(a, b, tol=tol) for a, b
                                                 in zip(scal_tw, scal_nu, strict=True)],
                                min_total=0.2)
@@ -211,15 +225,25 @@ def tol_trade(refs: Callable[[float, float], float]) -> pd.DataFrame:
     return df
 
 
-def _trade_table(trade: pd.DataFrame) -> list[str]:
-    lines = ["| tol | Figure 1 batch | vs 1e-12 | max error | n | scalar call | vs 1e-12 | "
-             "max error |", "|---|---|---|---|---|---|---|---|"]
-    for r in trade.itertuples():
-        lines.append(f"| {r.tol:g} | {r.batch_seconds * 1e3:.1f} ms | "
-                     f"{r.batch_cost_ratio:.2f} | {r.batch_max_rel_error:.1e} | "
-                     f"{r.n_min}-{r.n_max} | {r.scalar_seconds * 1e6:.0f} us | "
-                     f"{r.scalar_cost_ratio:.2f} | {r.scalar_max_rel_error:.1e} |")
-    return lines
+def _trade_table(trade: pd.DataFrame) -> str:
+    last = f"{TRADE_TOLS[-1]:g}"
+    return markdown_table(
+        ["tol", "Figure 1 batch", f"vs {last}", "max error", "n", "scalar call", f"vs {last}",
+         "max error"],
+        [[f"{r.tol:g}", f"{r.batch_seconds * 1e3:.1f} ms", f"{r.batch_cost_ratio:.2f}",
+          f"{r.batch_max_rel_error:.1e}", f"{r.n_min}-{r.n_max}",
+          f"{r.scalar_seconds * 1e6:.0f} us", f"{r.scalar_cost_ratio:.2f}",
+          f"{r.scalar_max_rel_error:.1e}"] for r in trade.itertuples()])
+
+
+def _cost_markdown(cost: pd.DataFrame) -> str:
+    rows = []
+    for (om, nu), case in cost.groupby(["twist_angle", "nu"], sort=False):
+        for method, sub in case.groupby("method", sort=False):
+            rows.append([f"{om:g}, {nu:g}", method] + [
+                _fmt_cost(sub[sub["target"] == t].iloc[0]) if (sub["target"] == t).any()
+                else "–" for t in TARGETS])
+    return markdown_table(["Ω(L), ν", "method", *(f"to {t:g}" for t in TARGETS)], rows)
 
 
 def _case_label(om: float, nu: float) -> str:
@@ -271,14 +295,16 @@ def draw_time(runs: pd.DataFrame):
         ax.loglog(col["seconds"], col["rel_error"].clip(lower=1e-17), "o-", ms=3,
                   label="collocation (fixed n)")
         ax.loglog(auto["seconds"], auto["rel_error"].clip(lower=1e-17), "D", ms=6,
-                  mfc="none", color="tab:purple", label="collocation, tol = 1e-4/1e-8/1e-12")
+                  mfc="none", color="tab:purple",
+                  label="collocation, tol = " + "/".join(f"{t:g}" for t in TARGETS))
         ax.loglog(fd["seconds"], fd["rel_error"].clip(lower=1e-17), "s-", ms=4,
                   label="finite differences")
         ax.axvline(float(ref["seconds"].iloc[0]), color="k", ls="--", lw=1,
                    label="mpmath characteristic eq. (one call)")
         _style_error_panel(ax, om, nu, "wall time per p* [s]")
     handles, labels = axes.flat[0].get_legend_handles_labels()
-    fig.suptitle("Error vs wall time (one p*, best of repeats; grey lines: 1e-4, 1e-8, 1e-12)")
+    fig.suptitle("Error vs wall time (one p*, best of repeats; grey lines: "
+                 + ", ".join(f"{t:g}" for t in TARGETS) + ")")
     fig.tight_layout(rect=(0, 0.06, 1, 1))
     fig.legend(handles, labels, loc="lower center", ncol=2, fontsize=9, frameon=False)
     return fig
@@ -315,38 +341,26 @@ def _fmt_cost(row: pd.Series) -> str:
 
 def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
     out = Path(out)
-    runs, refs = [], {}
+    runs = []
     for om, nu in CASES:
         progress(f"{_case_label(om, nu)}: collocation, finite differences, mpmath")
-        df, ref, _ = study_case(om, nu)
-        runs.append(df)
-        refs[(om, nu)] = ref
+        runs.append(study_case(om, nu))
     runs_df = pd.concat(runs, ignore_index=True)
     cost = cost_table(runs_df)
-    progress("mode coefficients; Figure 1 sweep vs the obvious implementation")
+    progress("mode coefficients; the Figure 1 batch at each tol; vs the obvious implementation")
     modes = [(om, nu, *mode_coefficients(om, nu)) for om, nu in CASES]
-    speed = figure1_speed()
-    progress("the tol knob: Figure 1 batch and scalar calls at tol 1e-2 .. 1e-12")
-    trade = tol_trade(lambda om, nu: float(characteristic_critical_load(om, nu).p_star))
-    files = [write_with(out / "convergence.csv",
-                        lambda p: runs_df.to_csv(p, index=False, float_format="%.6g")),
-             write_with(out / "convergence_cost.csv",
-                        lambda p: cost.to_csv(p, index=False, float_format="%.6g")),
-             write_with(out / "convergence_tol_trade.csv",
-                        lambda p: trade.to_csv(p, index=False, float_format="%.6g"))]
-    for name, fig in (("convergence_resolution.png", draw_resolution(runs_df)),
-                      ("convergence_time.png", draw_time(runs_df)),
-                      ("convergence_coefficients.png", draw_coefficients(modes))):
-        files.append(write_with(out / name, lambda p, f=fig: f.savefig(p, format="png",
-                                                                       dpi=150)))
-        plt.close(fig)
-    table = ["| Ω(L), ν | method | " + " | ".join(f"to {t:g}" for t in TARGETS) + " |",
-             "|---|---|" + "---|" * len(TARGETS)]
-    for (om, nu), case in cost.groupby(["twist_angle", "nu"], sort=False):
-        for method, sub in case.groupby("method", sort=False):
-            cells = [_fmt_cost(sub[sub["target"] == t].iloc[0]) if (sub["target"] == t).any()
-                     else "–" for t in TARGETS]
-            table.append(f"| {om:g}, {nu:g} | {method} | " + " | ".join(cells) + " |")
+    twist, nu_pts = figure1_points()
+    batches = figure1_batches(twist, nu_pts)
+    speed = figure1_speed(twist, nu_pts, batches[SPEED_TOL])
+    progress(f"the tol knob: scalar calls at tol {TRADE_TOLS[0]:g} .. {TRADE_TOLS[-1]:g}")
+    trade = tol_trade(twist, nu_pts, batches,
+                      lambda om, nu: float(characteristic_critical_load(om, nu).p_star))
+    files = [write_csv(out / "convergence.csv", runs_df, float_format="%.6g"),
+             write_csv(out / "convergence_cost.csv", cost, float_format="%.6g"),
+             write_csv(out / "convergence_tol_trade.csv", trade, float_format="%.6g"),
+             write_figure(out / "convergence_resolution.png", draw_resolution(runs_df)),
+             write_figure(out / "convergence_time.png", draw_time(runs_df)),
+             write_figure(out / "convergence_coefficients.png", draw_coefficients(modes))]
     fd_slope = _fd_slopes(runs_df)
     report = "\n".join([
         "## Convergence: speed-accuracy trade of the straight-rod solvers", "",
@@ -358,9 +372,9 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
         "![error vs time](convergence_time.png)", "",
         "Cost to reach a relative error (resolution: degree n for collocation, intervals N for "
         "finite differences; best-of-repeats wall time of one p*; 'auto' = "
-        "`critical_load(tol=target)`, which chooses n itself):", "", *table, "",
+        "`critical_load(tol=target)`, which chooses n itself):", "", _cost_markdown(cost), "",
         "![mode coefficients](convergence_coefficients.png)", "",
-        f"Figure 1 sweep ({int(speed['points'])} points, tol 1e-12): "
+        f"Figure 1 sweep ({int(speed['points']):,} points, tol {SPEED_TOL:g}): "
         f"{speed['new_s'] * 1e3:.1f} ms against {speed['baseline_s'] * 1e3:.0f} ms for the "
         "obvious implementation (Trefethen `cheb`, n = 24, dense operator and `eigvals` per "
         f"point; `spectral_rod.baseline`): ratio {speed['ratio']:.0f} in this run "
@@ -369,10 +383,10 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
         f"{speed['max_rel_diff']:.1e}.", "",
         "What the tolerance buys (`critical_load(..., tol=tol)`; best-of-repeats wall time in "
         "this run; errors against the mpmath characteristic equation at "
-        f"{TRADE_SCALARS} of the 1,201 Figure 1 points; scalar = one call per point, mean "
-        "per call). Looser tolerances lower the degree, stop the eigen-iteration earlier and "
-        "use a cheaper eigenvalue check (convergence_tol_trade.csv):", "",
-        *_trade_table(trade),
+        f"{TRADE_SCALARS} of the {twist.size:,} Figure 1 points; scalar = one call per point, "
+        "mean per call). Looser tolerances lower the degree, stop the eigen-iteration earlier "
+        "and use a cheaper eigenvalue check (convergence_tol_trade.csv):", "",
+        _trade_table(trade),
     ])
     details = {"cost": cost.to_dict(orient="records"), "figure1_speed": speed,
                "tol_trade": trade.to_dict(orient="records"),
@@ -387,6 +401,5 @@ def _fd_slopes(runs: pd.DataFrame) -> list[float]:
         fd = case[case["method"] == "finite differences"]
         ok = (fd["rel_error"] < 1e-2) & (fd["rel_error"] > 1e-7)
         if ok.sum() >= 2:
-            slopes.append(float(-np.polyfit(np.log(fd["resolution"][ok]),
-                                            np.log(fd["rel_error"][ok]), 1)[0]))
+            slopes.append(-observed_order(fd["resolution"][ok], fd["rel_error"][ok]))
     return slopes

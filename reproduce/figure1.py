@@ -24,7 +24,7 @@ import numpy as np
 import pandas as pd
 
 from reproduce._runner import SceneOutput
-from reproduce.io import write_text, write_with
+from reproduce.io import json_value, write_csv, write_figure, write_text
 from reproduce.ledger import (
     Claim,
     ClaimSpec,
@@ -33,6 +33,7 @@ from reproduce.ledger import (
     Method,
     Rule,
     judge,
+    ledger_check,
     update_ledger,
 )
 from spectral_rod import (
@@ -69,13 +70,11 @@ CHECK = {
         "error_estimate": {"rel": 1e-6, "abs": 1e-12},  # an estimate near round-off
         "*": "exact",  # the digitised inputs, n, mode_family
     },
-    "claims.json": {"_owner": "scene", "*.evidence": "text", "*.numbers.headline": "text",
-                    "*.numbers.max_abs_deviation": {"rel": 1e-6, "abs": 1e-12},
-                    "*.numbers.rms_per_curve.*": {"rel": 1e-6, "abs": 1e-12},
-                    "*.numbers.clusters.*.max_abs_deviation": {"rel": 1e-6, "abs": 1e-12},
-                    "*.numbers.*": {"rel": 1e-9, "abs": 1e-12},
-                    "*.cross_checks.*.disagreement": {"rel": 1e-6, "abs": 1e-10},
-                    "*": "exact"},
+    "claims.json": ledger_check({"*.numbers.max_abs_deviation": {"rel": 1e-6, "abs": 1e-12},
+                                 "*.numbers.rms_per_curve.*": {"rel": 1e-6, "abs": 1e-12},
+                                 "*.numbers.clusters.*.max_abs_deviation": {"rel": 1e-6,
+                                                                           "abs": 1e-12},
+                                 "*.numbers.*": {"rel": 1e-9, "abs": 1e-12}}),
     "figure1_forensics.json": {"*.max_abs_deviation": {"rel": 1e-6, "abs": 1e-12},
                                "*.twist_from": 1e-12, "*.twist_to": 1e-12,
                                "*.explanation": "text", "*": "exact"},
@@ -503,11 +502,9 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
     curves = {nu: (grid, critical_load(grid, nu, tol=TOL)) for nu in FIGURE1_NU}
     summary = deviation_summary(table)
     fig = draw(table, curves)
-    files = [write_with(out / "figure1.png", lambda p: fig.savefig(p, format="png", dpi=160)),
-             write_with(out / "figure1.pdf", lambda p: fig.savefig(p, format="pdf"))]
-    plt.close(fig)
-    files.append(write_with(out / "figure1_comparison.csv",
-                            lambda p: table.to_csv(p, index=False, float_format="%.12g")))
+    files = [write_figure(out / "figure1.png", fig, dpi=160, close=False),
+             write_figure(out / "figure1.pdf", fig)]
+    files.append(write_csv(out / "figure1_comparison.csv", table, float_format="%.12g"))
     n_used = table["n"]
     lines = [
         "## Figure 1: critical load versus twist", "",
@@ -536,12 +533,9 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
     progress(f"forensics: best model reproduces {int(fx.points['ok'].sum())} of "
              f"{len(fx.points)} points, {len(fx.clusters)} clusters, "
              f"{len(fx.missing_points)} missing points ({t_fx:.1f} s)")
-    fig = draw_forensics(fx)
-    files.append(write_with(out / "figure1_forensics.png",
-                            lambda p: fig.savefig(p, format="png", dpi=150)))
-    plt.close(fig)
+    files.append(write_figure(out / "figure1_forensics.png", draw_forensics(fx)))
     files.append(write_text(out / "figure1_forensics.json",
-                            json.dumps(fx.to_json(), indent=1, default=float) + "\n"))
+                            json.dumps(fx.to_json(), indent=1, default=json_value) + "\n"))
     claim = forensics_claim(fx, summary, truth_check(table))
     files += update_ledger(out, NAME, [claim])
     lines += ["", *forensics_section(fx, claim, t_fx)]

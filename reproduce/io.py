@@ -8,16 +8,25 @@ previous results intact (write to a temporary file in the same directory, then r
 - Outputs get the permissions of a normally created file (``0o666`` less the umask), not the
   ``0o600`` of :func:`tempfile.mkstemp`, which would survive the rename.
 - A failed write (disk full, quota, I/O error) raises :class:`OSError` naming the output file.
+- An earlier output read back (the ledger, a report section) that is not what the pipeline
+  wrote raises :class:`OutputFileError` naming the file, so the CLI can exit 2 with one line.
 """
 
 from __future__ import annotations
 
 import contextlib
+import json
 import os
 import re
 import tempfile
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
+from typing import Any
+
+
+class OutputFileError(ValueError):
+    """An output of an earlier run is unreadable or not of the shape this pipeline writes; the
+    message names the file and how to recover."""
 
 
 def _current_umask() -> int:
@@ -72,6 +81,63 @@ def write_with(path: str | os.PathLike[str], writer: Callable[[Path], object]) -
     with atomic_path(path) as tmp:
         writer(tmp)
     return Path(path)
+
+
+def write_csv(path: str | os.PathLike[str], frame: Any, *, float_format: str | None = None
+              ) -> Path:
+    """Write the DataFrame `frame` to `path` atomically (no index column)."""
+    return write_with(path, lambda p: frame.to_csv(p, index=False, float_format=float_format))
+
+
+def write_figure(path: str | os.PathLike[str], fig: Any, dpi: int = 150, *,
+                 close: bool = True) -> Path:
+    """Save the matplotlib figure `fig` to `path` atomically, in the format its suffix names,
+    then close it (``close=False`` to save the same figure again in another format)."""
+    fmt = Path(path).suffix.lstrip(".")
+    written = write_with(path, lambda p: fig.savefig(p, format=fmt, dpi=dpi))
+    if close:
+        import matplotlib.pyplot as plt  # lazily: the CLI's --help must not load matplotlib
+
+        plt.close(fig)
+    return written
+
+
+def json_value(value: Any) -> Any:
+    """``default=`` of :func:`json.dumps` for the outputs: numpy scalars and arrays as the JSON
+    type of their value (bool, int, float, list), other real numbers (mpmath's) as floats, paths
+    as text; anything else is an error, not text, so that a number never reaches a JSON output
+    as a string and a flag never as a float.
+
+    >>> import numpy as np
+    >>> json.dumps({"n": np.int64(3), "ok": np.bool_(True), "x": np.float64(0.5)},
+    ...            default=json_value)
+    '{"n": 3, "ok": true, "x": 0.5}'
+    """
+    if hasattr(value, "tolist") and hasattr(value, "dtype"):  # numpy scalar or array
+        return value.tolist()
+    if isinstance(value, os.PathLike):
+        return os.fspath(value)
+    if hasattr(value, "__float__") and not isinstance(value, (str, bytes)):  # e.g. mpmath.mpf
+        return float(value)
+    raise TypeError(f"{type(value).__name__} {value!r} is not a JSON value")
+
+
+def read_json(path: str | os.PathLike[str], kind: type = dict, keys: Sequence[str] = ()
+              ) -> Any:
+    """The JSON document at `path`, checked to be a `kind` (dict or list) and, for a dict, to
+    have `keys`; :class:`OutputFileError` naming the file otherwise."""
+    path = Path(path)
+    fix = "delete it to rebuild it"
+    try:
+        value = json.loads(path.read_text(encoding="utf-8"))
+    except (UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise OutputFileError(f"{path} is not valid JSON ({exc}); {fix}") from exc
+    if not isinstance(value, kind):
+        raise OutputFileError(f"{path} must hold a JSON {kind.__name__}; {fix}")
+    missing = [k for k in keys if k not in value] if isinstance(value, dict) else []
+    if missing:
+        raise OutputFileError(f"{path} lacks the keys {missing}; {fix}")
+    return value
 
 
 #: ``.NAME~PID~XXXXXXXX.SUFFIX`` (this module) and ``.STEM-XXXXXXXX.SUFFIX`` (earlier versions,

@@ -11,7 +11,8 @@ text made from the numbers), then *judged* (:func:`judge`):
 
 So a test can perturb the measured numbers (or a cross-check) and see the verdict change. A
 verdict backed by methods of a single formulation (e.g. two solvers of Eq. ``inst1``) says so in
-its evidence.
+its evidence. A scene whose rows share a cross-check (the ring's two formulations) passes it once
+to :func:`evaluate`; it is added to every row declared with ``shared_checks=True``.
 
 Several scenes contribute rows; each calls :func:`update_ledger` with *its* rows, and rows from
 other scenes already in ``claims.json`` are kept. ``claims.json`` is a list of objects with the
@@ -25,15 +26,19 @@ from __future__ import annotations
 
 import json
 import math
-from collections.abc import Callable, Mapping, Sequence
+from collections import Counter
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
 
-from reproduce.io import write_text
+from reproduce.io import OutputFileError, json_value, read_json, write_text
 from reproduce.tables import markdown_table
 
 VERDICTS = ("holds", "holds approximately", "fails", "inconclusive")
+#: The scenes in the order `python -m reproduce all` runs them; the ledger lists their rows in
+#: the same order (rows of other scenes after them, alphabetically).
+SCENE_ORDER = ("figure1", "claims", "ring", "convergence", "extremes")
 
 
 @dataclass(frozen=True)
@@ -79,6 +84,10 @@ class ClaimSpec:
     rule: Rule
     figure: str | None = None
     related: tuple[str, ...] = ()
+    #: the scene's shared cross-checks bear on this row (it uses the numbers they check)
+    shared_checks: bool = False
+    #: why a single formulation is all there is (said in the evidence of such a verdict)
+    one_formulation_why: str = "no independent formulation applies to it"
 
 
 @dataclass(frozen=True)
@@ -132,7 +141,7 @@ def judge(spec: ClaimSpec, measured: Measured, scene: str) -> Claim:
     forms = formulations(spec.methods)
     if len(forms) < 2:
         evidence += (f" (This verdict rests on one formulation only: {forms[0] if forms else '-'};"
-                     " no independent formulation applies to it.)")
+                     f" {spec.one_formulation_why}.)")
     return Claim(
         id=spec.id, section=spec.section, claim=spec.claim, test=spec.test, evidence=evidence,
         verdict=verdict, scene=scene, figure=spec.figure, numbers=measured.numbers,
@@ -141,28 +150,46 @@ def judge(spec: ClaimSpec, measured: Measured, scene: str) -> Claim:
         related=list(spec.related))
 
 
+def with_shared(spec: ClaimSpec, measured: Measured, shared: Sequence[CrossCheck]) -> Measured:
+    """`measured` with the scene's `shared` cross-checks first, if `spec` declares it uses them."""
+    if not spec.shared_checks or not shared:
+        return measured
+    return Measured(measured.numbers, measured.evidence, (*shared, *measured.cross_checks))
+
+
 def evaluate(claims: Sequence[tuple[ClaimSpec, Callable[[Any], Measured]]], evidence: Any,
-             scene: str, claim_id: str | None = None) -> list[Claim]:
+             scene: str, claim_id: str | None = None,
+             shared_checks: Sequence[CrossCheck] = ()) -> list[Claim]:
     """Judge every (declaration, measurement) pair of a scene on its evidence, or only the one
-    `claim_id` (KeyError if the scene declares no such row)."""
-    rows = [judge(spec, measure(evidence), scene) for spec, measure in claims
-            if claim_id is None or spec.id == claim_id]
+    `claim_id` (KeyError if the scene declares no such row); `shared_checks` join the
+    cross-checks of the rows declared with ``shared_checks=True``."""
+    rows = [judge(spec, with_shared(spec, measure(evidence), shared_checks), scene)
+            for spec, measure in claims if claim_id is None or spec.id == claim_id]
     if claim_id is not None and not rows:
         raise KeyError(claim_id)
     return rows
 
 
+#: Keys every ledger row has (what the report's headline and the ledger's order rely on).
+ROW_KEYS = ("id", "claim", "verdict")
+
+
 def read_ledger(path: Path) -> list[dict[str, Any]]:
-    """Rows of an existing ``claims.json`` ([] if there is none)."""
+    """Rows of an existing ``claims.json`` ([] if there is none); :class:`OutputFileError`
+    naming the file if it is not a list of rows."""
     if not path.exists():
         return []
-    try:
-        rows = json.loads(path.read_text(encoding="utf-8"))
-    except json.JSONDecodeError as exc:
-        raise ValueError(f"{path} is not valid JSON ({exc}); delete it to rebuild") from exc
-    if not isinstance(rows, list):
-        raise ValueError(f"{path} must hold a JSON list of claims")
+    rows = read_json(path, list)
+    if not all(isinstance(r, dict) and all(k in r for k in ROW_KEYS) for r in rows):
+        raise OutputFileError(f"{path}: every row must be an object with the keys {ROW_KEYS}; "
+                              "delete it to rebuild it")
     return rows
+
+
+def verdict_counts(verdicts: Iterable[str]) -> dict[str, int]:
+    """How many of `verdicts` are each of :data:`VERDICTS` (in that order; zeros kept)."""
+    counts = Counter(verdicts)
+    return {v: counts[v] for v in VERDICTS}
 
 
 def _methods_text(row: Mapping[str, Any]) -> str:
@@ -170,7 +197,7 @@ def _methods_text(row: Mapping[str, Any]) -> str:
 
 
 def _markdown(rows: list[dict[str, Any]]) -> str:
-    counts = {v: sum(r["verdict"] == v for r in rows) for v in VERDICTS}
+    counts = verdict_counts(r["verdict"] for r in rows)
     lines = ["# Claims ledger", "",
              "Every checkable statement of Drozdov & Rabin, with the test, the methods it rests "
              "on (and their starting formulations), the computed evidence and a verdict by a "
@@ -193,10 +220,6 @@ def _markdown(rows: list[dict[str, Any]]) -> str:
     return "\n".join(lines) + "\n"
 
 
-#: Order of the scenes' rows in the ledger (others after them, alphabetically).
-SCENE_ORDER = ("claims", "figure1", "ring")
-
-
 def update_ledger(out_dir: Path, scene: str, claims: list[Claim]) -> list[Path]:
     """Replace the rows written by `scene` in ``claims.json``/``claims.md`` under `out_dir`."""
     json_path = Path(out_dir) / "claims.json"
@@ -208,26 +231,24 @@ def update_ledger(out_dir: Path, scene: str, claims: list[Claim]) -> list[Path]:
         raise ValueError(f"duplicate claim ids in the ledger: {dupes}")
     order = {s: i for i, s in enumerate(SCENE_ORDER)}
     rows.sort(key=lambda r: (order.get(r["scene"], len(order)), r["scene"], r["id"]))
-    write_text(json_path, json.dumps(rows, indent=2, default=float) + "\n")
+    write_text(json_path, json.dumps(rows, indent=2, default=json_value) + "\n")
     md_path = write_text(Path(out_dir) / "claims.md", _markdown(rows))
     return [json_path, md_path]
 
 
-# ------------------------------------------------------------------------------------------
-# rules used by several claims
-# ------------------------------------------------------------------------------------------
+#: `python -m reproduce check` rules for the ledger rows a scene owns (rules in
+#: reproduce/compare.py): evidence texts by their words and numbers, measured numbers to 1e-9
+#: relative (1e-10 absolute for agreement measures at round-off), cross-check disagreements to
+#: 1e-6 (they are round-off-level differences of two solvers), everything else exact (id, claim,
+#: test, verdict, methods, rule, figure).
+LEDGER_CHECK: dict[str, Any] = {
+    "_owner": "scene", "*.evidence": "text", "*.numbers.headline": "text",
+    "*.numbers.*": {"rel": 1e-9, "abs": 1e-10},
+    "*.cross_checks.*.disagreement": {"rel": 1e-6, "abs": 1e-10},
+    "*": "exact"}
 
-def all_of(text: str, keys: Sequence[str], otherwise: str = "fails") -> Rule:
-    """holds if every boolean ``numbers[k]`` is true, else `otherwise`."""
-    return Rule(text, lambda n: "holds" if all(bool(n[k]) for k in keys) else otherwise)
 
-
-def tiered(text: str, holds: Sequence[str], approximately: Sequence[str]) -> Rule:
-    """holds if every key of `holds` is true; holds approximately if those of `approximately`
-    are; fails otherwise."""
-    def decide(n: Mapping[str, Any]) -> str:
-        if all(bool(n[k]) for k in holds):
-            return "holds"
-        return "holds approximately" if all(bool(n[k]) for k in approximately) else "fails"
-
-    return Rule(text, decide)
+def ledger_check(numbers: Mapping[str, Any] | None = None) -> dict[str, Any]:
+    """:data:`LEDGER_CHECK` with a scene's own rules for some ``*.numbers.*`` keys, matched
+    before the general ones (the first matching pattern applies)."""
+    return {**(numbers or {}), **LEDGER_CHECK}

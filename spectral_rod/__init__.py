@@ -99,7 +99,10 @@ _EXPORTS = {
     "ThresholdTwist": "ring_formula", "crit2": "ring_formula", "ring_formula_load": "ring_formula",
     "threshold_twist": "ring_formula",
     "RingBuckling": "ring_stability", "RING_LOADS": "ring_stability",
-    "RING_METHODS": "ring_stability", "munder_buckling": "ring_munder",
+    "RING_METHODS": "ring_stability", "RING_KIND_TOL": "ring_stability:KIND_TOL",
+    "destabilisation_threshold": "ring_stability", "munder_buckling": "ring_munder",
+    "RING_E_ISOTROPIC": "ring_munder:E_ISOTROPIC",
+    "RING_ISOTROPIC_POISSON": "ring_munder:ISOTROPIC_POISSON",
     "ring_formulation_agreement": "ring_munder",
     "munder_base_residual": "ring_munder:base_residual",
     "RING_AGREEMENT_CASES": "ring_munder:AGREEMENT_CASES",
@@ -113,7 +116,7 @@ _EXPORTS = {
     "FIGURE1_PRINT_QUANTUM": "figure_data:PICTURE_STEP",
     "FIGURE1_Y_PER_P": "figure_data:Y_PER_P",
     "non_planarity": "measures", "local_maxima": "measures", "family_switches": "measures",
-    "increasing_up_to": "measures", "settling_point": "measures",
+    "increasing_up_to": "measures", "settling_point": "measures", "observed_order": "measures",
     "ring_buckling": "ring_stability", "ring_critical_load": "ring_stability",
 }
 

@@ -17,7 +17,7 @@ from numpy.typing import ArrayLike, NDArray
 from spectral_rod._validation import check_real, real_array
 
 __all__ = ["family_switches", "increasing_up_to", "local_maxima", "non_planarity",
-           "settling_point"]
+           "observed_order", "settling_point"]
 
 
 def _curve(name_a: str, a: ArrayLike, name_b: str, b: ArrayLike, minimum: int = 2
@@ -73,3 +73,24 @@ def settling_point(grid: ArrayLike, gap: ArrayLike, level: float) -> float | Non
     if bad[-1] + 1 >= g.size:
         return None
     return float(g[bad[-1] + 1])
+
+
+def observed_order(x: ArrayLike, err: ArrayLike) -> float:
+    """Observed order p of ``|err| ~ C x**p``: the least-squares slope of log|err| against log x
+    (negative for an error that decays as x grows, e.g. -2 for an O(x^-2) remainder; for a
+    discretisation error against the number of intervals, minus the order of accuracy).
+
+    `x` positive and not all equal, `err` non-zero, both 1-D of the same length >= 2. The slope
+    is a fit, not a limit: it measures the order only over a range where one power dominates.
+
+    >>> x = np.array([10.0, 20.0, 40.0])
+    >>> round(observed_order(x, 3.0 / x**2), 12)
+    -2.0
+    """
+    a, e = _curve("x", x, "err", err, 2)
+    if np.any(a <= 0) or np.ptp(a) == 0:
+        raise ValueError(f"x must be positive and not all equal, got {a!r}")
+    e = np.abs(e)
+    if np.any(e == 0):
+        raise ValueError(f"err must be non-zero (its logarithm is fitted), got {e!r}")
+    return float(np.polyfit(np.log(a), np.log(e), 1)[0])

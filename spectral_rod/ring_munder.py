@@ -651,8 +651,11 @@ def munder_critical_load(N: object, nu: object, *, e_ratio: object = 1.0,
 
 # ---------------------------------------------------------------- agreement table
 
-#: e = E2/E1 of an isotropic material with Poisson ratio 0.3 (E2 = G = E/(2 (1 + 0.3))).
-E_ISOTROPIC = 1.0 / (2.0 * (1.0 + 0.3))
+#: Poisson's ratio of the isotropic material of the ring cases (a typical metal's).
+ISOTROPIC_POISSON = 0.3
+#: e = E2/E1 of that material: A3 = E2 (I1 + I2) is G J of a circular section, so
+#: E2 = G = E1/(2 (1 + Poisson)).
+E_ISOTROPIC = 1.0 / (2.0 * (1.0 + ISOTROPIC_POISSON))
 #: The agreement cases (N, nu, e, load): N = 0..8, several nu and e, both loads.
 AGREEMENT_CASES: tuple[tuple[int, float, float, str], ...] = (
     (0, 1.0, 1.0, "hydrostatic"),

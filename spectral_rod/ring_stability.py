@@ -69,9 +69,17 @@ from typing import TypeVar
 
 import numpy as np
 import scipy.linalg
+import scipy.optimize
 from numpy.typing import NDArray
 
-from spectral_rod._validation import check_bool, check_choice, check_int, check_real
+from spectral_rod._validation import (
+    check_bool,
+    check_choice,
+    check_int,
+    check_nu,
+    check_real,
+    real_array,
+)
 from spectral_rod.errors import RingConvergenceError
 from spectral_rod.ring_formula import check_e_ratio, check_scalar_nu, check_twist_count
 
@@ -516,3 +524,77 @@ def ring_critical_load(N: object, nu: object, *, e_ratio: object = 1.0,
 
         return munder_critical_load(N, nu, e_ratio=e_ratio, load=load, tol=tol)
     return ring_buckling(N, nu, e_ratio=e_ratio, load=load, tol=tol).load
+
+
+def _check_twists(twists: object) -> tuple[int, ...]:
+    if isinstance(twists, (str, bytes)) or not hasattr(twists, "__iter__"):
+        raise TypeError(f"twists must be a sequence of integers N >= 0 including 0, got "
+                        f"{type(twists).__name__}")
+    out = tuple(check_twist_count(N, "twists", MAX_SOLVER_TWIST)
+                for N in twists)  # type: ignore[attr-defined]
+    if 0 not in out or len(set(out)) < 2 or len(set(out)) != len(out):
+        raise ValueError(f"twists must hold 0 and at least one N > 0, each once, got {out}")
+    return out
+
+
+def _check_nus(nus: object) -> NDArray[np.float64]:
+    grid = np.atleast_1d(check_nu(nus, "nus"))  # type: ignore[arg-type]
+    if grid.ndim != 1 or grid.size < 2 or np.any(np.diff(grid) <= 0):
+        raise ValueError(f"nus must be >= 2 increasing values of nu = I2/I1 >= 1, got {nus!r}")
+    return grid
+
+
+def _twist_gain(q: NDArray[np.float64], twists: tuple[int, ...]) -> float:
+    """max over N > 0 of q(N)/q(0) - 1 for loads `q` ordered like `twists`."""
+    q0 = q[twists.index(0)]
+    return float(max(q[i] for i, N in enumerate(twists) if N > 0) / q0 - 1.0)
+
+
+def _check_grid_loads(loads: object, shape: tuple[int, int]) -> NDArray[np.float64] | None:
+    if loads is None:
+        return None
+    arr = real_array(loads, "loads")  # type: ignore[arg-type]
+    if arr.shape != shape or np.any(arr <= 0):
+        raise ValueError(f"loads must be positive critical loads of shape (len(nus), "
+                         f"len(twists)) = {shape}, got shape {arr.shape}")
+    return arr
+
+
+def destabilisation_threshold(e_ratio: object, load: object, nus: object, *,
+                              twists: object = tuple(range(11)), xtol: float = 1.0e-3,
+                              loads: object = None, method: str = "second-variation") -> float:
+    """The asymmetry nu* above which some spontaneous twist raises the ring's critical load.
+
+    The twist gain g(nu) = max over N > 0 in ``twists`` of q_cr(N, nu)/q_cr(0, nu) - 1 is
+    negative while every twist lowers q_cr (twist destabilises). The grid ``nus`` (increasing,
+    nu >= 1) is scanned for the first interval where g goes from < 0 to >= 0, and nu* is refined
+    there by Brent's method to ``xtol`` in nu; ``math.nan`` if g does not so change sign on the
+    grid. ``loads``: q_cr already solved on the grid (shape (len(nus), len(twists)), e.g. a
+    scan of the caller's), so that the scan solves nothing again; otherwise the scan solves them.
+    ``method``: one of :data:`RING_METHODS` (the formulation of every solve). e = E2/E1 and the
+    load model as in :func:`ring_critical_load`.
+
+    >>> nu_star = destabilisation_threshold(1.0, "hydrostatic", [2.0, 4.0], twists=(0, 1))
+    >>> 2.0 < nu_star < 4.0
+    True
+    """
+    e, ld = check_e_ratio(e_ratio), check_load(load)
+    grid, Ns = _check_nus(nus), _check_twists(twists)
+    xtol = check_real(xtol, "xtol", 1e-12, 1.0)
+    method = check_choice(method, "method", RING_METHODS)
+    known = _check_grid_loads(loads, (grid.size, len(Ns)))
+
+    def gain(nu: float) -> float:
+        return _twist_gain(np.array([ring_critical_load(N, nu, e_ratio=e, load=ld, method=method)
+                                     for N in Ns]), Ns)
+
+    gains = [_twist_gain(known[i], Ns) if known is not None else gain(float(nu))
+             for i, nu in enumerate(grid)]
+    i = next((i for i in range(grid.size - 1) if gains[i] < 0 <= gains[i + 1]), None)
+    if i is None:
+        return math.nan
+    a, b = float(grid[i]), float(grid[i + 1])
+    ends = {a: gains[i], b: gains[i + 1]}
+    # Brent evaluates both ends first: their gains are known already
+    return float(scipy.optimize.brentq(lambda v: ends[v] if v in ends else gain(v), a, b,
+                                       xtol=xtol))

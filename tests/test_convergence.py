@@ -10,12 +10,11 @@ from reproduce import convergence as scene
 
 @pytest.fixture(scope="module")
 def case_runs():
-    df, ref, t_ref = scene.study_case(10.0, 1.1)
-    return df, ref, t_ref
+    return scene.study_case(10.0, 1.1)
 
 
 def test_collocation_converges_exponentially_and_fd_algebraically(case_runs):
-    df, _, _ = case_runs
+    df = case_runs
     col = df[df["method"] == "collocation (fixed n)"]
     fd = df[df["method"] == "finite differences"]
     # collocation: from error 1e-2 down to 1e-12 within ~20 degrees (exponential)
@@ -28,7 +27,7 @@ def test_collocation_converges_exponentially_and_fd_algebraically(case_runs):
 
 
 def test_cost_table_lists_every_method_and_target(case_runs):
-    df, _, _ = case_runs
+    df = case_runs
     cost = scene.cost_table(df)
     assert set(cost["target"]) == set(scene.TARGETS)
     methods = set(cost["method"])

@@ -15,7 +15,8 @@ import spectral_rod
 
 CANDIDATES = sorted(
     [m.name for m in pkgutil.walk_packages(spectral_rod.__path__, "spectral_rod.")]
-    + ["spectral_rod", "reproduce.ledger", "reproduce.tables", "reproduce.compare"])
+    + ["spectral_rod", "reproduce.ledger", "reproduce.tables", "reproduce.compare",
+       "reproduce.io"])
 
 
 def _has_examples(name: str) -> bool:

@@ -16,7 +16,7 @@ import pytest
 
 import reproduce.cli
 from reproduce._runner import run_scenes
-from reproduce.io import remove_stale_temporaries, write_text, write_with
+from reproduce.io import json_value, remove_stale_temporaries, write_text, write_with
 from spectral_rod import figure_data
 from spectral_rod.figure_data import ReferenceDataError, figure1_path, load_figure1
 
@@ -197,3 +197,18 @@ def test_missing_reference_data_exit_2(tmp_path, monkeypatch, capsys):
     monkeypatch.setattr(figure_data, "figure1_path", lambda: tmp_path / "gone.csv")
     assert reproduce.cli.main(["figure1", "--out", str(tmp_path / "out"), "-q"]) == 2
     assert "gone.csv is missing" in capsys.readouterr().err
+
+
+def test_json_outputs_keep_the_type_of_every_number() -> None:
+    import json
+
+    import mpmath
+    import numpy as np
+
+    doc = {"n": np.int64(704), "flag": np.bool_(False), "x": np.float64(0.25),
+           "v": np.array([1.0, 2.0]), "mp": mpmath.mpf("0.5"), "p": Path("a/b.csv")}
+    assert json.loads(json.dumps(doc, default=json_value)) == {
+        "n": 704, "flag": False, "x": 0.25, "v": [1.0, 2.0], "mp": 0.5, "p": "a/b.csv"}
+    assert json.loads(json.dumps({"flag": np.bool_(True)}, default=json_value))["flag"] is True
+    with pytest.raises(TypeError, match="not a JSON value"):
+        json.dumps({"x": object()}, default=json_value)

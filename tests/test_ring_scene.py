@@ -4,6 +4,7 @@ verdicts that flip when the evidence changes, and the files the scene writes."""
 from __future__ import annotations
 
 import copy
+import dataclasses
 import json
 import math
 from pathlib import Path
@@ -13,8 +14,9 @@ import pandas as pd
 import pytest
 
 import reproduce.ring as scene
-from reproduce.ledger import VERDICTS, Measured, judge
+from reproduce.ledger import VERDICTS, Measured, judge, with_shared
 from reproduce.ring import rows
+from spectral_rod import ring_critical_load
 
 
 @pytest.fixture(scope="module")
@@ -61,12 +63,13 @@ def test_all_verdicts_valid_and_ids_prefixed(claims: dict) -> None:
 
 def test_gt97_and_two_formulations_recomputed(evidence: scene.RingEvidence,
                                              claims: dict) -> None:
-    t = evidence.table
+    t, w = evidence.table, evidence.wide
     no_zero_load_solution = bool(
         (t[["min_inverse_load_hydrostatic", "min_inverse_load_axis"]] > -1e-12).all().all()
-        and (evidence.wide["q"] > 0).all())
-    assert claims["ring-gt97-comparison"].verdict == ("fails" if no_zero_load_solution
-                                                      else "holds")
+        and (w["min_inverse_load"] > -1e-12).all() and (w["q"] > 0).all()
+        and (t[["q_hydrostatic", "q_axis"]] > 0).all().all())
+    assert no_zero_load_solution
+    assert claims["ring-gt97-comparison"].verdict == "fails"
     f = evidence.formulations
     assert len(f) >= 12 and set(f["N"]) >= set(range(9))
     agree = bool((abs(f["q_munder"] - f["q_galerkin"]) / f["q_galerkin"] <= 1e-6).all())
@@ -148,28 +151,35 @@ def test_destabilises_verdict(evidence: scene.RingEvidence, claims: dict) -> Non
     expected = ("holds" if all(every.values()) else
                 "holds approximately" if any(every.values()) else "fails")
     assert claims["ring-destabilises"].verdict == expected
-    # the boundary nu* is where the largest twist gain changes sign
-    for key, nu_star in numbers["nu_boundary"].items():
-        if math.isfinite(nu_star):
-            label, load = key.split("/")
-            e = scene.E_RATIOS[label]
-            from reproduce.ring.evidence import largest_twist_gain
-            assert largest_twist_gain(nu_star * 0.99, e, load) < 0 < \
-                largest_twist_gain(nu_star * 1.01, e, load)
+    # the boundary nu* is where the largest twist gain changes sign (gain typed here)
+    def gain(nu: float, e: float, load: str) -> float:
+        q = [ring_critical_load(N, nu, e_ratio=e, load=load) for N in range(11)]
+        return max(q[1:]) / q[0] - 1
+
+    finite = {k: v for k, v in numbers["nu_boundary"].items() if math.isfinite(v)}
+    assert finite
+    for key, nu_star in finite.items():
+        label, load = key.split("/")
+        e = scene.E_RATIOS[label]
+        assert gain(nu_star * 0.99, e, load) < 0 < gain(nu_star * 1.01, e, load)
 
 
 def test_destabilising_rule() -> None:
-    decide = rows.DESTABILISES.rule.decide
-    assert decide({"every_case_lowered": {"hydrostatic": True, "axis": True}}) == "holds"
-    assert decide({"every_case_lowered": {"hydrostatic": False, "axis": True}}) == \
-        "holds approximately"
-    assert decide({"every_case_lowered": {"hydrostatic": False, "axis": False}}) == "fails"
+    def decide(hydrostatic: bool, axis: bool, cases: int = 10) -> str:
+        return rows.DESTABILISES.rule.decide(
+            {"every_case_lowered": {"hydrostatic": hydrostatic, "axis": axis},
+             "fewest_cases": cases})
+
+    assert decide(True, True) == "holds"
+    assert decide(False, True) == "holds approximately"
+    assert decide(False, False) == "fails"
+    assert decide(True, True, cases=0) == "inconclusive"  # all([]) is no evidence
 
 
 @pytest.mark.parametrize("spec_measure", rows.CLAIMS, ids=[s.id for s, _ in rows.CLAIMS])
 def test_a_failed_cross_check_makes_the_verdict_inconclusive(evidence, spec_measure) -> None:
     spec, measure = spec_measure
-    measured = measure(evidence)
+    measured = with_shared(spec, measure(evidence), rows.shared_checks(evidence))
     assert judge(spec, measured, "ring").verdict != "inconclusive"
     for i, check in enumerate(measured.cross_checks):
         broken = list(measured.cross_checks)
@@ -266,3 +276,123 @@ def test_scene_metadata() -> None:
     assert scene.NAME == "ring"
     assert "\n" not in scene.SUMMARY
     assert scene.__doc__ and "Writes" in scene.__doc__ and "Compares" in scene.__doc__
+
+
+# ----------------------------------------------------------- rules: holds, fails, inconclusive
+
+def _numbers(claim_id: str, ev: scene.RingEvidence) -> dict:
+    _, measure = next(c for c in rows.CLAIMS if c[0].id == claim_id)
+    return measure(ev).numbers
+
+
+def test_spontaneous_and_gt97_rules_have_three_outcomes(evidence: scene.RingEvidence) -> None:
+    t = evidence.table.copy()
+    assert scene.evaluate_claim("ring-spontaneous-instability", evidence).verdict == "fails"
+    # a negative 1/q beyond round-off, every load still positive: the evidence contradicts itself
+    odd = evidence.wide.copy()
+    odd.loc[odd.index[-1], "min_inverse_load"] = -1e-6
+    mixed = _with_table(evidence, t, odd)
+    assert scene.evaluate_claim("ring-spontaneous-instability", mixed).verdict == "inconclusive"
+    assert scene.evaluate_claim("ring-gt97-comparison", mixed).verdict == "inconclusive"
+    # a twisted ring with q_cr <= 0: a non-trivial solution without load
+    neg = t.copy()
+    neg.loc[(neg["nu"] == 2.0) & (neg["N"] == 5), "q_axis"] = -0.1
+    assert scene.evaluate_claim("ring-gt97-comparison", _with_table(evidence, neg)).verdict == \
+        "holds"
+    # no ring at or beyond the threshold solved: nothing decides the claim
+    n = _numbers("ring-spontaneous-instability", evidence)
+    assert rows.SPONTANEOUS.rule.decide({**n, "beyond_threshold": []}) == "inconclusive"
+
+
+def test_load_caveat_rule_has_three_outcomes(evidence: scene.RingEvidence) -> None:
+    assert scene.evaluate_claim("caveat-load-model", evidence).verdict == "fails"
+    same = rows.single_load_evidence(evidence, "hydrostatic")
+    assert scene.evaluate_claim("caveat-load-model", same).verdict == "holds"
+    # one load model's evidence undecided for a claim (a 1/q below round-off there only)
+    undecided = copy.copy(same)
+    undecided.table = same.table.assign(min_inverse_load_axis=-1e-6)
+    got = scene.evaluate_claim("caveat-load-model", undecided)
+    assert got.verdict == "inconclusive"
+    assert "ring-spontaneous-instability" in got.numbers["undecided_claims"]
+    # every other ring claim is compared, not a chosen few
+    assert set(got.numbers["verdicts_per_load"]) == {s.id for s, _ in rows.CLAIMS} - {
+        "caveat-load-model"}
+
+
+def test_single_load_evidence_replaces_every_number_of_the_other_model(evidence) -> None:
+    one = rows.single_load_evidence(evidence, "axis")
+    assert (one.table["q_hydrostatic"] == evidence.table["q_axis"]).all()
+    assert (one.thresholds["q_hydrostatic_at_N_e=1"].fillna(0)
+            == evidence.thresholds["q_axis_at_N_e=1"].fillna(0)).all()
+    for name in ("wide", "untwisted_circular", "boundaries", "rectangle"):
+        frame = getattr(one, name)
+        hyd = frame[frame["load"] == "hydrostatic"].drop(columns="load").reset_index(drop=True)
+        axis = frame[frame["load"] == "axis"].drop(columns="load").reset_index(drop=True)
+        assert hyd.equals(axis), name
+
+
+def test_zero_load_numbers_cover_the_table_and_the_wide_scan(evidence) -> None:
+    n = _numbers("ring-spontaneous-instability", evidence)
+    keys = {(r.e_label, r.nu, r.N, ld) for r in evidence.table.itertuples() for ld in
+            ("hydrostatic", "axis")} | {(r.e_label, r.nu, r.N, r.load)
+                                        for r in evidence.wide.itertuples()}
+    assert n["n_solves"] == len(keys) < 2 * len(evidence.table) + len(evidence.wide)
+    low = evidence.wide.copy()
+    only_wide = low.index[~low["nu"].isin(scene.NUS)][0]  # a ring the table does not solve
+    low.loc[only_wide, "min_inverse_load"] = -5e-13  # round-off still
+    assert _numbers("ring-spontaneous-instability",
+                    _with_table(evidence, evidence.table, low))["min_inverse_load"] == -5e-13
+
+
+def test_each_ring_is_solved_once_per_run(evidence) -> None:
+    from reproduce.ring.evidence import EQUILIBRIUM_CASES
+    e_of = scene.E_RATIOS
+    second = ({(r.N, r.nu, r.e_ratio, ld) for r in evidence.table.itertuples()
+               for ld in ("hydrostatic", "axis")}
+              | {(r.N, r.nu, e_of[r.e_label], r.load) for r in evidence.wide.itertuples()}
+              | {(r.N, r.nu, r.e_ratio, r.load) for r in evidence.rectangle.itertuples()})
+    munder = {(r.N, r.nu, r.e_ratio, r.load) for r in evidence.formulations.itertuples()}
+    munder |= set(EQUILIBRIUM_CASES)
+    distinct = len(second) + len(munder) + len(EQUILIBRIUM_CASES)  # + Kirchhoff's
+    assert evidence.solves["distinct"] == distinct < evidence.solves["requested"]
+
+
+def test_shared_cross_check_reaches_every_row_using_second_variation_loads(claims) -> None:
+    name = next(c["name"] for c in claims["ring-crit2"].cross_checks)
+    assert name.startswith("q_cr: second variation vs Munder")
+    with_it = {i for i, c in claims.items() if any(x["name"] == name for x in c.cross_checks)}
+    assert "caveat-torsional-stiffness" in with_it
+    assert {"ring-two-formulations", "ring-hoop-force"}.isdisjoint(with_it)
+    # Munder is a method only where its numbers enter the measurement
+    for i in ("ring-circular-twist-independent", "ring-monotone-decrease",
+              "ring-rate-grows-with-nu", "caveat-load-model"):
+        assert "Munder" not in {m["formulation"] for m in claims[i].methods}
+        assert "one formulation only" in claims[i].evidence
+        assert "comparison cases" in claims[i].evidence
+
+
+def test_threshold_paragraph_follows_the_verdict(claims) -> None:
+    row = claims["ring-spontaneous-instability"]
+    assert "physical?** No." in scene.physical_threshold_text(row)
+    for verdict, word in (("holds", "Yes"), ("inconclusive", "Undecided")):
+        assert word in scene.physical_threshold_text(dataclasses.replace(row, verdict=verdict))
+
+
+def test_rules_without_evidence_are_inconclusive(evidence: scene.RingEvidence) -> None:
+    """A rule never reads "holds" or "fails" off an empty set of cases (all([]) is True)."""
+    cases = {"ring-monotone-decrease": {"groups": 0},
+             "ring-rate-grows-with-nu": {"fewest_nus": 1},
+             "ring-three-dimensional": {"n_modes": 0},
+             "intro-three-dimensional": {"ring_n_modes": 0}}
+    for claim_id, empty in cases.items():
+        spec = next(s for s, _ in rows.CLAIMS if s.id == claim_id)
+        n = _numbers(claim_id, evidence)
+        assert spec.rule.decide(n) != "inconclusive", claim_id
+        assert spec.rule.decide({**n, **empty}) == "inconclusive", claim_id
+    n = _numbers("ring-destabilises", evidence)
+    assert n["fewest_cases"] > 0
+    assert rows.DESTABILISES.rule.decide({**n, "fewest_cases": 0}) == "inconclusive"
+    # a planar rod mode decides the introduction's claim whatever the ring shows
+    n = _numbers("intro-three-dimensional", evidence)
+    assert rows.INTRO_3D.rule.decide({**n, "rod_non_planarity": 0.0, "ring_n_modes": 0}) == \
+        "fails"

@@ -22,6 +22,7 @@ from spectral_rod.ring_formula import ring_formula_load
 from spectral_rod.ring_stability import (
     RingConvergenceError,
     assemble,
+    destabilisation_threshold,
     frequency_families,
     rigid_body_constraints,
     ring_buckling,
@@ -263,3 +264,44 @@ def test_solver_bad_input(kwargs: dict, exc: type[Exception], word: str) -> None
     if set(kwargs) <= {"N", "nu", "e_ratio", "load"}:
         with pytest.raises(exc, match=word):
             ring_critical_load(N, nu, **args)
+
+
+# ---------------------------------------------------------------- the destabilisation threshold
+
+def _munder_gain(nu: float, twists: tuple[int, ...]) -> float:
+    """max over N > 0 of q(N)/q(0) - 1 by the other formulation (Eqs. Munder), typed here."""
+    q = {N: ring_critical_load(N, nu, method="munder") for N in twists}
+    return max(q[N] for N in twists if N > 0) / q[0] - 1
+
+
+def test_destabilisation_threshold_is_where_munder_changes_sign():
+    twists = (0, 1, 2, 3)
+    nu_star = destabilisation_threshold(1.0, "hydrostatic", [2.0, 4.0], twists=twists,
+                                        xtol=1e-6)
+    assert 2.0 < nu_star < 4.0
+    assert _munder_gain(0.99 * nu_star, twists) < 0 < _munder_gain(1.01 * nu_star, twists)
+
+
+def test_destabilisation_threshold_from_known_loads_and_without_crossing():
+    twists, grid = (0, 1), [2.0, 4.0]
+    loads = [[ring_critical_load(N, nu) for N in twists] for nu in grid]
+    solved = destabilisation_threshold(1.0, "hydrostatic", grid, twists=twists)
+    assert destabilisation_threshold(1.0, "hydrostatic", grid, twists=twists,
+                                     loads=loads) == solved
+    # under the axis-directed load twist N = 1 lowers q_cr on the whole grid
+    assert math.isnan(destabilisation_threshold(1.0, "axis", grid, twists=twists))
+
+
+@pytest.mark.parametrize(("kwargs", "exc", "name"), [
+    ({"nus": [4.0, 2.0]}, ValueError, "nus"), ({"nus": [2.0]}, ValueError, "nus"),
+    ({"nus": [0.5, 2.0]}, ValueError, "nus"), ({"twists": (1, 2)}, ValueError, "twists"),
+    ({"twists": (0, 1.5)}, ValueError, "twists"), ({"twists": 3}, TypeError, "twists"),
+    ({"loads": [[1.0, 2.0]]}, ValueError, "loads"), ({"xtol": 0.0}, ValueError, "xtol"),
+    ({"method": "energy"}, ValueError, "method"), ({"load": "gravity"}, ValueError, "load"),
+])
+def test_destabilisation_threshold_validates(kwargs, exc, name):
+    args = {"e_ratio": 1.0, "load": "hydrostatic", "nus": [2.0, 4.0], "twists": (0, 1),
+            **kwargs}
+    with pytest.raises(exc, match=name):
+        destabilisation_threshold(args.pop("e_ratio"), args.pop("load"), args.pop("nus"),
+                                  **args)

@@ -9,7 +9,7 @@ Writes: claims.json / claims.md (via :mod:`reproduce.ledger`, keeping the other 
 claims_load.png (p* to 20 pi with the limit lines and the approach to the limit),
 claims_wavenumbers.png (beta_k L and beta_2 - beta_1 against Omega(L), the imaginary-beta_1
 window marked), claims_mode.png (the 3-D centreline of the buckling mode vs Euler's planar
-mode) and the report section.
+mode) and the report section (in ``report.md``).
 
 The package: :mod:`.evidence` computes every number (calls to the library),
 :mod:`.rows` declares each claim with its verdict rule and measures it, :mod:`.figures` draws.
@@ -23,10 +23,10 @@ from pathlib import Path
 
 from reproduce._runner import SceneOutput
 from reproduce.claims.evidence import DPS, StraightRodEvidence, compute_evidence, solver_agreement
-from reproduce.claims.figures import figure_load, figure_mode, figure_wavenumbers, plt
+from reproduce.claims.figures import figure_load, figure_mode, figure_wavenumbers
 from reproduce.claims.rows import CLAIMS, evaluate_claim, evaluate_claims
-from reproduce.io import write_text, write_with
-from reproduce.ledger import VERDICTS, Claim, update_ledger
+from reproduce.io import write_figure
+from reproduce.ledger import LEDGER_CHECK, Claim, update_ledger, verdict_counts
 from reproduce.tables import markdown_table
 
 NAME = "claims"
@@ -36,10 +36,7 @@ SUMMARY = ("straight twisted rod: every claim of the paper's straight-rod sectio
 #: `python -m reproduce check`: per output file and column (or JSON key), how a regenerated
 #: value may differ from the committed one (rules in reproduce/compare.py).
 CHECK = {
-    "claims.json": {"_owner": "scene", "*.evidence": "text", "*.numbers.headline": "text",
-                    "*.numbers.*": {"rel": 1e-9, "abs": 1e-10},  # abs: agreement measures
-                    "*.cross_checks.*.disagreement": {"rel": 1e-6, "abs": 1e-10},
-                    "*": "exact"},  # id, claim, test, verdict, methods, rule, figure
+    "claims.json": LEDGER_CHECK,
     "sections/claims.json": {"details.timings.*": "ignore",
                              "details.solver_agreement": {"rel": 1e-6, "abs": 1e-10},
                              "*": "exact"},
@@ -50,7 +47,7 @@ __all__ = ["CLAIMS", "NAME", "SUMMARY", "compute_evidence", "evaluate_claim", "e
 
 
 def report_section(claims: list[Claim], ev: StraightRodEvidence, seconds: float) -> str:
-    counts = ", ".join(f"{sum(c.verdict == v for c in claims)} {v}" for v in VERDICTS)
+    counts = ", ".join(f"{n} {v}" for v, n in verdict_counts(c.verdict for c in claims).items())
     lines = ["## Claims: the straight rod, statement by statement", "",
              f"{len(claims)} claims of the paper's straight-rod section checked: {counts}. "
              f"Decisive numbers come from both solvers (collocation and the characteristic "
@@ -75,12 +72,9 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
     for name, maker in (("claims_load.png", figure_load),
                         ("claims_wavenumbers.png", figure_wavenumbers),
                         ("claims_mode.png", figure_mode)):
-        fig = maker(ev)
-        files.append(write_with(out / name, lambda p, f=fig: f.savefig(p, format="png", dpi=150)))
-        plt.close(fig)
+        files.append(write_figure(out / name, maker(ev)))
     seconds = time.perf_counter() - t0
     report = report_section(claims, ev, seconds)
-    files.append(write_text(out / "claims_report.md", report))
     progress("verdicts: " + ", ".join(f"{c.id}={c.verdict}" for c in claims))
     details = {"verdicts": {c.id: c.verdict for c in claims}, "timings": ev.timings,
                "solver_agreement": solver_agreement(ev)}

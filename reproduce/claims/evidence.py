@@ -31,7 +31,6 @@ from spectral_rod import (
     inst1_variant_table,
     large_twist_expansion,
     large_twist_limit,
-    local_maxima,
     non_planarity,
     settling_point,
 )
@@ -56,8 +55,6 @@ PLANARITY_TWISTS = (12.0, 24.0, 48.0)
 CURVE_TOL = 1e-10   # dense curves (figures, shape checks)
 TOL = 1e-12         # decisive collocation numbers
 DPS = 30
-#: "Holds approximately" if the maxima sit within this relative distance of n pi.
-NEAR = 1e-2
 
 
 # ------------------------------------------------------------------------------------------
@@ -218,19 +215,15 @@ def compute_evidence(progress: Callable[[str], None] = lambda _m: None) -> Strai
     modes.insert(0, {"twist": 0.0, "nu": MODE_CASES[0][1], "family": euler.family,
                      "s": euler.s, "x1": euler.x1 / e_scale, "x2": euler.x2 / e_scale,
                      "planarity_coll": non_planarity(euler.x1, euler.x2),
-                     "planarity_mp": 0.0,  # closed form: x = sin(pi s) e1
                      "omega2_over_omega1": float(np.max(np.abs(euler.omega2))
                                                  / np.max(np.abs(euler.omega1))),
                      "shape_mismatch": float(np.max(np.abs(
                          euler.x1 / e_scale - np.sin(np.pi * euler.s))))})
     planarity_decay = []
-    lam_inf = math.pi**2 * large_twist_limit(DETAIL_NU)
     for om in PLANARITY_TWISTS:  # mpmath only (the collocation mode is checked at MODE_CASES)
         root = characteristic_critical_load(om, DETAIL_NU, dps=DPS)
         cm = characteristic_mode(root, om, DETAIL_NU, points=121, dps=20)
-        planarity_decay.append({
-            "twist": om, "planarity_mp": non_planarity(cm.x1, cm.x2),
-            "fast_amplitude": lam_inf * 0.5 * (1 - 1 / DETAIL_NU) / (4 * om**2)})
+        planarity_decay.append({"twist": om, "planarity_mp": non_planarity(cm.x1, cm.x2)})
     timings["spot checks, limit, windows, modes"] = time.perf_counter() - t2
     progress(f"spot checks, large-twist loads, windows and modes in "
              f"{timings['spot checks, limit, windows, modes']:.1f} s")
@@ -263,10 +256,10 @@ def ritz_values(spot: list[dict[str, float]], limit: list[dict[str, float]],
 
 
 def run_derivations() -> dict[str, object]:
-    """Run the sympy derivations (each step asserts); record what they proved or where they
-    stopped, and the misprinted variants of inst1 against Figure 1."""
+    """Run the straight rod's sympy derivation (each step asserts); record what it proved or
+    where it stopped, and the misprinted variants of inst1 against Figure 1. (The ring's
+    derivation is the ring scene's.)"""
     return {"straight_rod": derivation_status("straight_rod"),
-            "ring": derivation_status("ring_linearisation"),
             "variants": inst1_variant_table()}
 
 
@@ -279,11 +272,6 @@ def solver_agreement(ev: StraightRodEvidence) -> float:
     rel = [abs(r["p_coll"] - r["p_mp"]) / r["p_mp"] for r in ev.spot + ev.limit]
     rel += [abs(m.p_coll - m.p_mp) / m.p_mp for m in ev.maxima]
     return float(max(rel))
-
-
-def grid_local_maxima(ev: StraightRodEvidence, nu: float) -> NDArray[np.float64]:
-    """Twists of the local maxima of p* on the dense collocation grid (interior points)."""
-    return local_maxima(ev.grid, ev.p[nu])
 
 
 def rises_until_first_maximum(ev: StraightRodEvidence, nu: float) -> bool:

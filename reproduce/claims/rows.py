@@ -33,11 +33,15 @@ from spectral_rod import (
     large_twist_limit,
     large_twist_wavenumbers,
     local_maxima,
+    observed_order,
 )
 
 SCENE = "claims"
 #: "Holds approximately" if the maxima sit within this relative distance of n pi.
 NEAR = 1e-2
+#: |D| at a root of the characteristic determinant evaluated with DPS digits: its terms are O(1)
+#: and cancel, so 10 digits of cancellation leave 10**(10 - DPS); a non-root gives O(1).
+DET_ZERO = 10.0 ** (10 - DPS)
 
 COLLOCATION = Method("Chebyshev collocation (spectral_rod.straight_rod)", "inst1")
 CHARACTERISTIC = Method("characteristic equation in mpmath (spectral_rod.characteristic)",
@@ -54,10 +58,6 @@ RITZ_LIMIT = 1e-11
 
 def _fmt_pi(x: float, digits: int = 7) -> str:
     return f"{x / math.pi:.{digits}f}π"
-
-
-def _rule(text: str, decide: Callable[[dict], str]) -> Rule:
-    return Rule(text, decide)
 
 
 def _maxima_cross_checks(ev: StraightRodEvidence) -> tuple[CrossCheck, ...]:
@@ -93,10 +93,10 @@ ZERO_TWIST = ClaimSpec(
     test="p*(0, ν) by collocation for ν = " + ", ".join(map(str, NUS)) + "; the characteristic "
          "determinant at λ = π² (Ω = 0); planarity of the collocation mode.",
     methods=(COLLOCATION, CHARACTERISTIC),
-    rule=_rule("holds if max |p*(0, ν) − 1| < 1e-12, |D_sym(π², 0, ν)| < 1e-20 and the Euler "
-               "mode's non-planarity < 1e-12; fails otherwise",
-               lambda n: "holds" if n["max_dev_coll"] < 1e-12 and n["max_det_mp"] < 1e-20
-               and n["euler_planarity"] < 1e-12 else "fails"),
+    rule=Rule(f"holds if max |p*(0, ν) − 1| < 1e-12, |D_sym(π², 0, ν)| < {DET_ZERO:g} and the "
+              "Euler mode's non-planarity < 1e-12; fails otherwise",
+              lambda n: "holds" if n["max_dev_coll"] < 1e-12 and n["max_det_mp"] < DET_ZERO
+              and n["euler_planarity"] < 1e-12 else "fails"),
     figure="claims_mode.png")
 
 
@@ -121,10 +121,10 @@ ISOTROPIC = ClaimSpec(
          "λ = π² on the same twists (mpmath); in the fixed-frame form (A) of asymptotics.py the "
          "twist term has coefficient δ = (1 − 1/ν)/2 = 0, so Z'' + π² p Z = 0 exactly.",
     methods=(COLLOCATION, CHARACTERISTIC, CLOSED_FORM),
-    rule=_rule("holds if max |p*(Ω, 1) − 1| < 1e-12 and max |D_sym(π², Ω, 1)| < 1e-20 on the "
-               "grid; fails otherwise",
-               lambda n: "holds" if n["max_dev_coll"] < 1e-12 and n["max_det_mp"] < 1e-20
-               else "fails"))
+    rule=Rule(f"holds if max |p*(Ω, 1) − 1| < 1e-12 and max |D_sym(π², Ω, 1)| < {DET_ZERO:g} on "
+              "the grid; fails otherwise",
+              lambda n: "holds" if n["max_dev_coll"] < 1e-12 and n["max_det_mp"] < DET_ZERO
+              else "fails"))
 
 
 def measure_isotropic(ev: StraightRodEvidence) -> Measured:
@@ -147,7 +147,7 @@ STABILISING = ClaimSpec(
          "(P_E ∫|x'|²) is ≥ 1 (A2 ≥ A1, Wirtinger) and non-decreasing in A2 for every trial "
          "mode.",
     methods=(COLLOCATION, CHARACTERISTIC, RITZ),
-    rule=_rule("holds if min (p* − 1) > 0 for Ω > 0, p* increases with ν at every twist, and every "
+    rule=Rule("holds if min (p* − 1) > 0 for Ω > 0, p* increases with ν at every twist, and every "
                "mpmath spot value is > 1 and increasing in ν; fails otherwise",
                lambda n: "holds" if n["min_excess"] > 0 and n["min_step_in_nu"] > 0
                and n["spot_above_one"] and n["spot_increasing_in_nu"] else "fails"),
@@ -183,7 +183,7 @@ FIRST_MAXIMUM = ClaimSpec(
          "(n+1)π exactly). Slopes dp/dΩ of both branches; p* increasing on the collocation grid "
          "before it.",
     methods=(CHARACTERISTIC, COLLOCATION, CLOSED_FORM, RITZ),
-    rule=_rule(f"holds if p* rises up to a corner maximum at exactly 2π (to 1e-9); holds "
+    rule=Rule(f"holds if p* rises up to a corner maximum at exactly 2π (to 1e-9); holds "
                f"approximately if the corner is within {NEAR:g} relative of 2π; fails otherwise",
                lambda n: ("holds" if n["max_rel_offset"] < 1e-9 else "holds approximately")
                if n["rises"] and n["corners"] and n["max_rel_offset"] < NEAR else "fails"),
@@ -201,6 +201,8 @@ def measure_first_maximum(ev: StraightRodEvidence) -> Measured:
     below_limit = all(m.p_mp < large_twist_limit(m.nu) for m in firsts)
     table = "; ".join(f"ν = {m.nu}: Ω₂ = {_fmt_pi(m.twist_mp)} = {m.twist_mp:.9f} "
                       f"(p* = {m.p_mp:.9f})" for m in firsts)
+    seconds = [ev.maxima_for(nu)[1].twist_mp for nu in NUS]
+    growing = bool(np.all(np.diff(rel) > 0))
     m15 = next(m for m in firsts if m.nu == DETAIL_NU)
     return Measured(
         numbers={"headline": f"Ω₂ = {_fmt_pi(firsts[0].twist_mp)} (ν = {firsts[0].nu}) … "
@@ -218,9 +220,11 @@ def measure_first_maximum(ev: StraightRodEvidence) -> Measured:
                  f"of two smooth branches, slopes of opposite sign, e.g. ν = {DETAIL_NU}: "
                  f"{m15.slopes_mp[m15.left]:+.4f} ({m15.left}) / {m15.slopes_mp[m15.right]:+.4f}"
                  f" ({m15.right})), not a smooth maximum; p* rises monotonically before it: "
-                 f"{rises}. Only a local maximum: the next one (near 3π) is higher and p* → "
-                 f"2ν/(1+ν) > p*(Ω₂) ({later_higher and below_limit}). Distance from 2π: "
-                 f"{min(rel):.1e} … {max(rel):.1e} relative, growing with ν.",
+                 f"{rises}. Only a local maximum: the next one (at {_fmt_pi(min(seconds), 4)} … "
+                 f"{_fmt_pi(max(seconds), 4)}) is higher and p* → 2ν/(1+ν) > p*(Ω₂) "
+                 f"({later_higher and below_limit}). Distance from 2π: {min(rel):.1e} … "
+                 f"{max(rel):.1e} relative, " + ("growing with ν." if growing
+                                                   else "not monotone in ν."),
         cross_checks=(*_maxima_cross_checks(ev), _ritz_check(ev, "maxima")))
 
 
@@ -234,7 +238,7 @@ FURTHER_MAXIMA = ClaimSpec(
          "maximum of the dense collocation curve must sit at a family switch; fit of the offset "
          "Ω_n − nπ against n; is there a maximum near π?",
     methods=(CHARACTERISTIC, COLLOCATION, CLOSED_FORM, RITZ),
-    rule=_rule(f"holds approximately if every maximum is a family-crossing corner within {NEAR:g} "
+    rule=Rule(f"holds approximately if every maximum is a family-crossing corner within {NEAR:g} "
                "relative of nπ and every grid maximum sits at a family switch (the maxima are "
                "near, not at, nπ, and there is none near π); fails otherwise",
                lambda n: "holds approximately" if n["all_corners"] and n["max_relative_offset"]
@@ -253,7 +257,7 @@ def measure_further_maxima(ev: StraightRodEvidence) -> Measured:
     # offset scaling (Omega_n - n pi) ~ C n^-3 for the detailed nu
     ns = np.array([m.n for m in detail], dtype=float)
     offs = np.array([m.offset for m in detail])
-    slope = float(np.polyfit(np.log(ns[-8:]), np.log(offs[-8:]), 1)[0])
+    slope = observed_order(ns[-8:], offs[-8:])
     last = detail[-1]
     predicted = (crossing_twist_asymptotic(last.n, DETAIL_NU) - last.n * math.pi) / math.pi
     no_max_near_pi = all(rises_until_first_maximum(ev, nu) for nu in NUS)
@@ -264,6 +268,8 @@ def measure_further_maxima(ev: StraightRodEvidence) -> Measured:
             gaps.append(float(np.min(np.abs(sw - om))) if sw.size else math.inf)
     grid_max_at_switch = max(gaps) <= 1.01 * float(ev.grid[1] - ev.grid[0])
     agree = maxima_agreement(ev)
+    alternating = ("alternately symmetric/antisymmetric" if _families_alternate(ev)
+                   else "not alternating between the families")
     rows = ", ".join(f"{m.n}π{m.offset:+.2e}π" for m in detail[:6])
     others = "; ".join(f"ν = {nu}: " + ", ".join(f"{_fmt_pi(m.twist_mp, 6)}"
                                                 for m in ev.maxima_for(nu))
@@ -281,8 +287,8 @@ def measure_further_maxima(ev: StraightRodEvidence) -> Measured:
         evidence=f"ν = {DETAIL_NU}: maxima at {rows}, … (offset ∝ n^{slope:.2f}; "
                  f"asymptotically π((ν−1)/(ν+1))²/(8n³): at n = {last.n} {predicted:.4e}π "
                  f"predicted, {last.offset:.4e}π found); {others}. All {len(ev.maxima)} are "
-                 f"corners where the critical mode switches family (alternately "
-                 f"symmetric/antisymmetric): {all_corner}; none is smooth (grid maxima at family "
+                 f"corners where the critical mode switches family ({alternating}): "
+                 f"{all_corner}; none is smooth (grid maxima at family "
                  f"switches: {grid_max_at_switch}); mpmath, collocation and closed form agree to "
                  f"{agree['p_coll_vs_closed']:.1e} in p* and {agree['twist_coll_vs_closed']:.1e} "
                  f"in Ω; heights increase towards the limit: {heights_rise}. Largest relative "
@@ -300,7 +306,10 @@ LIMIT = ClaimSpec(
          f"with p* from both solvers at Ω = π/2 + 2πj, j = {LIMIT_J}; observed decay order of "
          "p* − p∞ and of the expansion error.",
     methods=(CHARACTERISTIC, COLLOCATION, CLOSED_FORM, RITZ),
-    rule=_rule("holds if p∞ − p* decays faster than Ω^-1.8 and the 4-term expansion's error "
+    # predicted orders −2 (−3 where the ripple dominates) and −5; a wrong p∞ would give 0 and an
+    # expansion with a wrong term −4 or slower, so the margins 0.2 and 0.5 are room for the
+    # 3-point fits (the next term is O(1/Ω) relative at Ω ≥ 33), not for a wrong result
+    rule=Rule("holds if p∞ − p* decays faster than Ω^-1.8 and the 4-term expansion's error "
                "faster than Ω^-4.5 for every ν; fails otherwise",
                lambda n: "holds" if n["observed_order_p_minus_limit"][1] < -1.8
                and n["observed_order_expansion_error"][1] < -4.5 else "fails"),
@@ -316,7 +325,7 @@ def measure_limit(ev: StraightRodEvidence) -> Measured:
             r = [x for x in rows if x["nu"] == nu]
             om = np.array([x["twist"] for x in r])
             err = np.abs(np.array([x[f"err{k}"] for x in r]))
-            fits.append(float(np.polyfit(np.log(om), np.log(err), 1)[0]))
+            fits.append(observed_order(om, err))
         orders[k] = (min(fits), max(fits))
     om_max = max(x["twist"] for x in rows)
     worst4 = max(abs(x["err4"]) for x in rows if x["twist"] == om_max)
@@ -353,10 +362,12 @@ WAVENUMBERS_REAL = ClaimSpec(
          "λ/ν < Ω² < λ. Window ends where X− = 0 along p*(Ω): closed forms (asymptotics.py) "
          "checked against p* from both solvers at the ends, X− at the window centre from both.",
     methods=(CLOSED_FORM, CHARACTERISTIC, COLLOCATION),
-    rule=_rule("fails if β1² = X− < 0 at the centre of the closed-form window for every ν (with "
-               "the symmetric family critical at both ends); holds if X− ≥ 0 there",
-               lambda n: "fails" if n["imaginary_at_centre"] and n["symmetric_at_ends"]
-               else "holds"),
+    rule=Rule("fails if both solvers find β1² = X− < 0 at the centre of the closed-form window "
+              "for every ν, with the symmetric family critical at both ends (the closed form's "
+              "premise); holds if both find X− ≥ 0 there for every ν; inconclusive otherwise "
+              "(the ν or the solvers disagree, or the window's premise is not met)",
+              lambda n: "fails" if n["imaginary_at_centre"] and n["symmetric_at_ends"]
+              else "holds" if n["real_at_centre"] else "inconclusive"),
     figure="claims_wavenumbers.png", related=("rod-beta-difference",))
 
 
@@ -366,17 +377,20 @@ def measure_wavenumbers_real(ev: StraightRodEvidence) -> Measured:
     sym_ends = all(r["family_a"] == r["family_b"] == "symmetric" for r in w)
     imag_mp = all(r["x_minus_mid_mp"] < 0 for r in w)
     imag_coll = all(r["x_minus_mid_coll"] < 0 for r in w)
+    real = all(r["x_minus_mid_mp"] >= 0 and r["x_minus_mid_coll"] >= 0 for r in w)
     tab = "; ".join(f"ν = {r['nu']}: ({r['omega_a']:.6f}, {r['omega_b']:.6f}) = "
                     f"({_fmt_pi(r['omega_a'], 4)}, {_fmt_pi(r['omega_b'], 4)})" for r in w)
     return Measured(
         numbers={"headline": "β1 imaginary for 2y/√(ν+3) < Ω < 2π√(ν/(3ν+1)), "
                              "(ν−1) y cos y + 4 sin y = 0 (e.g. ν = 1.5: "
                              f"{_fmt_pi(w[1]['omega_a'], 4)} … {_fmt_pi(w[1]['omega_b'], 4)})",
-                 "imaginary_at_centre": imag_mp and imag_coll, "symmetric_at_ends": sym_ends,
+                 "imaginary_at_centre": imag_mp and imag_coll, "real_at_centre": real,
+                 "symmetric_at_ends": sym_ends,
                  "windows": [{k: r[k] for k in ("nu", "omega_a", "omega_b", "p_a", "p_b")}
                              for r in w],
                  "max_closed_form_dev": dev},
-        evidence=f"β1 is imaginary on a window around π for every ν > 1: Ω_a < Ω(L) < Ω_b with "
+        evidence=f"By the closed forms β1 is imaginary on a window around π for every ν > 1: "
+                 f"Ω_a < Ω(L) < Ω_b with "
                  f"Ω_b = 2π√(ν/(3ν+1)) (p* = 4ν/(3ν+1) there) and Ω_a = 2y/√(ν+3), "
                  f"(ν−1) y cos y + 4 sin y = 0, y ∈ (π/2, π] (p* = 4νy²/(π²(ν+3))). {tab}. "
                  f"Closed forms match p* of both solvers at the ends to {dev:.1e}; X− at the "
@@ -396,7 +410,7 @@ BETA_DIFFERENCE = ClaimSpec(
          "(the crossing theorem in asymptotics.py); its local maxima and its largest value on "
          "the dense collocation curve; its value at the largest twist checked.",
     methods=(CHARACTERISTIC, COLLOCATION, CLOSED_FORM),
-    rule=_rule("holds approximately if every crossing is a corner maximum of β2 − β1 with β_k L "
+    rule=Rule("holds approximately if every crossing is a corner maximum of β2 − β1 with β_k L "
                "= (n ∓ 1)π to 1e-15, no other grid maxima and never above 2π, and 2π − (β2 − β1) "
                "< 1e-4 at the largest twist (the maxima are near, not at, nπ); fails otherwise",
                lambda n: "holds approximately" if n["corner_maxima_at_crossings"]
@@ -453,7 +467,9 @@ RESONANCE = ClaimSpec(
          "|β_k L − (Ω ∓ π)| and of the deviation from the O(Ω⁻³) prediction of "
          "asymptotics.large_twist_wavenumbers; β_k L at the maxima (crossings).",
     methods=(CHARACTERISTIC, CLOSED_FORM),
-    rule=_rule("holds if max_k |β_k L − (Ω ∓ π)| decays faster than Ω^-2.5 and the remainder "
+    # predicted orders −3 (the Ω⁻² terms cancel) and −4; each threshold is halfway to the order a
+    # failed prediction would leave (−2 without the cancellation, −3 with wrong Ω⁻³ terms)
+    rule=Rule("holds if max_k |β_k L − (Ω ∓ π)| decays faster than Ω^-2.5 and the remainder "
                "after the predicted Ω^-3 terms faster than Ω^-3.5 for every ν; fails otherwise",
                lambda n: "holds" if max(n["decay_order"]) < -2.5
                and max(n["decay_order_after_prediction"]) < -3.5 else "fails"),
@@ -470,8 +486,8 @@ def measure_resonance(ev: StraightRodEvidence) -> Measured:
              max(abs(b1 - a1), abs(b2 - a2))))
 
     def order(k: int) -> list[float]:
-        return [float(np.polyfit(np.log([r[0] for r in rows]), np.log([r[k] for r in rows]),
-                                 1)[0]) for rows in devs.values()]
+        return [observed_order([r[0] for r in rows], [r[k] for r in rows])
+                for rows in devs.values()]
 
     fits, fits_pred = order(1), order(2)
     worst = max(r[1] for rows in devs.values() for r in rows
@@ -499,7 +515,9 @@ THREE_DIMENSIONAL = ClaimSpec(
          "planar mode Z = c f(s) in Eq. (A) of asymptotics.py would need e^{2iΩs} c̄/c real for "
          "all s.",
     methods=(CHARACTERISTIC, COLLOCATION),
-    rule=_rule("holds if every twisted mode has non-planarity and |ω2|/|ω1| above 1e-3, the "
+    # 1e-3: a planar mode measures at round-off (the Euler mode: < 1e-12), so values above it are
+    # the mode's, not the solvers'
+    rule=Rule("holds if every twisted mode has non-planarity and |ω2|/|ω1| above 1e-3, the "
                "Euler mode is planar (< 1e-12) and the non-planarity stays positive with twist; "
                "fails otherwise",
                lambda n: "holds" if n["min_non_planarity"] > 1e-3
@@ -515,8 +533,7 @@ def measure_three_dimensional(ev: StraightRodEvidence) -> Measured:
     min_ratio = min(m["omega2_over_omega1"] for m in twisted)
     mismatch = max(m["shape_mismatch"] for m in twisted)
     dec = ev.planarity_decay
-    decay = float(np.polyfit(np.log([r["twist"] for r in dec]),
-                             np.log([r["planarity_mp"] for r in dec]), 1)[0])
+    decay = observed_order([r["twist"] for r in dec], [r["planarity_mp"] for r in dec])
     cases = "; ".join(f"Ω = {m['twist']:g}, ν = {m['nu']:g}: σ_min/σ_max = "
                       f"{m['planarity_mp']:.3f} (mpmath) / {m['planarity_coll']:.3f} "
                       f"(collocation), max|ω2|/max|ω1| = {m['omega2_over_omega1']:.3f}"
@@ -547,7 +564,7 @@ TWIST_RAISES_LOAD = ClaimSpec(
     test="Sign of dp*/dΩ on the dense collocation grid in [0, 20π]; the largest fall of p* after "
          "the first maximum (between the crossings near 2π and 3π).",
     methods=(COLLOCATION, CHARACTERISTIC, RITZ),
-    rule=_rule("holds if p* > 1 for Ω > 0 and never falls; holds approximately if p* > 1 but "
+    rule=Rule("holds if p* > 1 for Ω > 0 and never falls; holds approximately if p* > 1 but "
                "falls somewhere (true as a trend, not as monotonicity); fails if p* ≤ 1 "
                "anywhere",
                lambda n: ("holds approximately" if n["max_drop_after_first_max"] > 0
@@ -589,7 +606,7 @@ INST1 = ClaimSpec(
          "reader might suspect (coupling factor 1, one sign flipped, the A's exchanged) against "
          "Figure 1.",
     methods=(SYMPY_ENERGY, SYMPY_MUNDER, RITZ, CHARACTERISTIC),
-    rule=_rule("holds if both derivations reproduce inst1 exactly; fails if either finds "
+    rule=Rule("holds if both derivations reproduce inst1 exactly; fails if either finds "
                "another equation",
                lambda n: "holds" if n["derivation"] == "all steps checked" else "fails"),
     related=("rod-decoupling", "eq-munder", "fig1-curves"))
@@ -627,7 +644,7 @@ DECOUPLING = ClaimSpec(
          "twisted rod, with F_t = −P + f: lines 1 and 2 contain no ω and lines 3 and 4 no f, α; "
          "the energy's torsion term gives the same A₃α'' = 0.",
     methods=(SYMPY_MUNDER, SYMPY_ENERGY),
-    rule=_rule("holds if the derivation's decoupling checks pass; fails otherwise",
+    rule=Rule("holds if the derivation's decoupling checks pass; fails otherwise",
                lambda n: "holds" if n["derivation"] == "all steps checked" else "fails"),
     related=("eq-inst1",))
 
@@ -648,7 +665,7 @@ END_ALIGNMENT = ClaimSpec(
     test="Geometry: u₀(L)·u₀(0) = cos Ω(L). As an explanation of the maxima: are the maxima of "
          "p* exactly at kπ, and is there one at every kπ (k ≥ 1)?",
     methods=(CHARACTERISTIC, COLLOCATION, CLOSED_FORM),
-    rule=_rule("holds if the maxima sit at kπ (to 1e-9) for every k ≥ 1 — i.e. alignment "
+    rule=Rule("holds if the maxima sit at kπ (to 1e-9) for every k ≥ 1 — i.e. alignment "
                "locates them; fails otherwise (the geometric statement is then true but does "
                "not explain the maxima)",
                lambda n: "holds" if n["max_offset_over_pi"] < 1e-9 and not n["none_near_pi"]
@@ -663,8 +680,8 @@ def measure_end_alignment(ev: StraightRodEvidence) -> Measured:
         numbers={"max_offset_over_pi": max(offs), "min_offset_over_pi": min(offs),
                  "none_near_pi": none_near_pi},
         evidence=f"The geometric statement is true (u₀(L) = ±u₀(0) at Ω(L) = kπ), but the maxima "
-                 f"are not where the ends align: they sit at Ω_n = nπ + (1e-8 … 1e-2)π "
-                 f"(offsets {min(offs):.1e}π … {max(offs):.1e}π), and there is none at π: p* "
+                 f"are not where the ends align: they sit at Ω_n = nπ + ({min(offs):.1e} … "
+                 f"{max(offs):.1e})π, and there is none at π: p* "
                  f"rises monotonically through π for every ν ({none_near_pi}). They are where "
                  "the two mode families cross, with β₁L = (n−1)π and β₂L = (n+1)π exactly. The "
                  "conclusion 'maxima near kπ (k ≥ 2)' holds; the reasoning by alignment does "
@@ -680,16 +697,21 @@ TWO_MODES = ClaimSpec(
          "antisymmetric (about mid-span) roots located by both solvers and in closed form; their "
          "slopes at each crossing; the critical family on the dense grid.",
     methods=(CHARACTERISTIC, COLLOCATION, CLOSED_FORM),
-    rule=_rule("holds if every maximum is a corner where the two mode families cross and the "
+    rule=Rule("holds if every maximum is a corner where the two mode families cross and the "
                "critical family alternates; fails otherwise",
                lambda n: "holds" if n["all_corners"] and n["alternates"] else "fails"),
     related=("rod-further-maxima", "rod-beta-difference"))
 
 
+def _families_alternate(ev: StraightRodEvidence) -> bool:
+    """The critical family right of each maximum is the one left of the next (n to n + 1)."""
+    return all(a.right == b.left for nu in NUS
+               for a, b in zip(ev.maxima_for(nu)[:-1], ev.maxima_for(nu)[1:], strict=True)
+               if b.n == a.n + 1)
+
+
 def measure_two_modes(ev: StraightRodEvidence) -> Measured:
-    alternates = all(a.right == b.left for nu in NUS
-                     for a, b in zip(ev.maxima_for(nu)[:-1], ev.maxima_for(nu)[1:], strict=True)
-                     if b.n == a.n + 1)
+    alternates = _families_alternate(ev)
     corners = all(m.kind == "corner maximum" for m in ev.maxima)
     return Measured(
         numbers={"all_corners": corners, "alternates": alternates},
