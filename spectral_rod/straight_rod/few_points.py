@@ -151,7 +151,8 @@ def solve_few(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol:
         theta_k = (x1 @ dp.start) / (x @ dp.start)  # x0^T M^(k+1) x0 / x0^T M^k x0
         theta_2k = _dot(u, x1) / _dot(u, x)
         lam = _dot(y, ab_x[:, :, 0]) / _dot(y, ab_x[:, :, 1])
-        big = np.flatnonzero(np.abs(twist) > LONG_TWIST)
+        big = (np.flatnonzero(np.abs(twist) > LONG_TWIST) if pts > 1
+               else np.arange(int(abs(a) > LONG_TWIST)))
         for f, family in enumerate(FAMILIES):  # as the batched engine: extended precision
             if big.size:
                 lam[big, f] = pencil_rayleigh_quotient(family_operator(n, family), twist[big],
