@@ -513,7 +513,9 @@ def ring_critical_load(N: object, nu: object, *, e_ratio: object = 1.0,
     E1 I1), load "hydrostatic" (pressure on the ring's projection, force q e_z x R') or "axis"
     (force -q e_r at the displaced point: horizontal, toward the ring's axis); see the module
     docstring. ``method``: one of :data:`RING_METHODS` (two formulations that share no hand
-    derivation). Raises :class:`spectral_rod.RingConvergenceError` if not converged to ``tol``.
+    derivation). Raises :class:`spectral_rod.RingConvergenceError` if not converged to ``tol``:
+    ``tol`` in [1e-14, 1e-2] for "second-variation", [1e-13, 1e-2] for "munder" (each
+    method's range; outside it a ValueError names it).
     Use :func:`ring_buckling` for the mode, its kind and the convergence record.
 
     >>> round(ring_critical_load(0, 1.0), 12)   # untwisted circular ring: out of plane, 2
