@@ -364,8 +364,7 @@ def test_shared_cross_check_reaches_every_row_using_second_variation_loads(claim
     assert "caveat-torsional-stiffness" in with_it
     assert {"ring-two-formulations", "ring-hoop-force"}.isdisjoint(with_it)
     # Munder is a method only where its numbers enter the measurement
-    for i in ("ring-circular-twist-independent", "ring-monotone-decrease",
-              "ring-rate-grows-with-nu", "caveat-load-model"):
+    for i in ("ring-circular-twist-independent", "caveat-load-model"):
         assert "Munder" not in {m["formulation"] for m in claims[i].methods}
         assert "one formulation only" in claims[i].evidence
         assert "comparison cases" in claims[i].evidence
@@ -396,3 +395,34 @@ def test_rules_without_evidence_are_inconclusive(evidence: scene.RingEvidence) -
     n = _numbers("intro-three-dimensional", evidence)
     assert rows.INTRO_3D.rule.decide({**n, "rod_non_planarity": 0.0, "ring_n_modes": 0}) == \
         "fails"
+
+
+@pytest.mark.parametrize("claim_id", ["ring-monotone-decrease", "ring-rate-grows-with-nu"])
+def test_witnesses_decide_with_the_second_variation(evidence: scene.RingEvidence,
+                                                    claim_id: str) -> None:
+    """A "fails" resting on the second variation's full range needs Eqs. Munder to agree at
+    its decisive rings: the witness re-solved (and agreeing) gives "fails"; no solver (NaN),
+    or a Munder that disagrees, gives "inconclusive"."""
+    assert scene.evaluate_claim(claim_id, evidence).verdict == "fails"
+    row = scene.evaluate_claim(claim_id, evidence)
+    witness = [c for c in row.cross_checks if c["name"].startswith("witness:")]
+    assert len(witness) == 1 and witness[0]["passed"] and witness[0]["disagreement"] < 1e-12
+    assert "Munder" in {m["formulation"] for m in row.methods}
+    blind = dataclasses.replace(evidence, solve=None)
+    assert scene.evaluate_claim(claim_id, blind).verdict == "inconclusive"
+
+    class Flat(scene.RingEvidence):
+        def munder_load(self, N, nu, e_label, load):  # a Munder that sees no twist effect
+            return 3.0
+
+    flat = Flat(**{f.name: getattr(evidence, f.name) for f in dataclasses.fields(evidence)})
+    assert scene.evaluate_claim(claim_id, flat).verdict == "inconclusive"
+
+
+def test_single_load_evidence_re_solves_its_own_load_model(evidence: scene.RingEvidence
+                                                          ) -> None:
+    # the axis-only evidence stands under both labels: its witnesses must be axis rings
+    one = rows.single_load_evidence(evidence, "axis")
+    assert one.load_override == "axis"
+    q = one.munder_load(2, 2.0, "e=1", "hydrostatic")
+    assert q == pytest.approx(ring_critical_load(2, 2.0, load="axis"), rel=1e-9)

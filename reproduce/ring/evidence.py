@@ -79,6 +79,21 @@ class RingEvidence:
     rod_non_planarity: float = math.nan
     solves: dict[str, int] = field(default_factory=dict)
     timings: dict[str, float] = field(default_factory=dict)
+    #: The run's solver (:func:`memo_solver`), for rings re-solved on demand by the second
+    #: formulation (:meth:`munder_load`); None: no re-solves (their checks then fail).
+    solve: Solve | None = field(default=None, repr=False, compare=False)
+    #: Set where the evidence of one load model stands under both labels
+    #: (``rows.single_load_evidence``): re-solves use that model, whatever the label.
+    load_override: str | None = None
+
+    def munder_load(self, N: int, nu: float, e_label: str, load: str) -> float:
+        """q_cr of one ring by Eqs. Munder (the second formulation), solved once per run: a
+        verdict's decisive rings re-checked. NaN if this evidence has no solver."""
+        if self.solve is None:
+            return math.nan
+        ring = self.solve(int(N), float(nu), E_RATIOS[e_label], self.load_override or load,
+                          "munder")
+        return float(ring.load)
 
 
 def memo_solver() -> Solve:
@@ -263,7 +278,7 @@ def compute_evidence(progress: Callable[[str], None] = lambda _m: None) -> RingE
     info = solve.cache_info()
     solves = {"distinct": info.misses, "requested": info.hits + info.misses}
     return RingEvidence(table, thresholds, circ, forms, wide, boundaries, rect, equilibrium,
-                        rod, solves, timings)
+                        rod, solves, timings, solve)
 
 
 def q_at(ev: RingEvidence, nu: float, N: int, label: str = "e=1",

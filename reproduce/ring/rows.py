@@ -4,9 +4,12 @@ evidence (``measure_*``) and judged by its named rule (:func:`reproduce.ledger.j
 Two formulations stand behind the ring's numbers: the Fourier-Galerkin solution of the sympy
 second variation (:mod:`spectral_rod.ring_stability`) and the numerical linearisation of the
 paper's Eqs. ``Munder`` (:mod:`spectral_rod.ring_munder`). Munder is solved on the comparison
-cases only, so their agreement is the scene's shared cross-check, carried by every row that uses
-second-variation loads (``shared_checks=True``); Munder is listed among a row's methods only
-where its numbers enter the row's measurement.
+cases, so their agreement is the scene's shared cross-check, carried by every row that uses
+second-variation loads (``shared_checks=True``), and on the decisive rings ("witnesses") of the
+verdicts that rest on a range it does not cover (the largest rise of ring-monotone-decrease, the
+first step of ring-rate-grows-with-nu where the drop does not grow): those verdicts need both
+formulations to agree there. Munder is listed among a row's methods only where its numbers
+enter the row's measurement.
 """
 
 from __future__ import annotations
@@ -91,6 +94,15 @@ def _formulations_check(ev: RingEvidence) -> CrossCheck:
 def shared_checks(ev: RingEvidence) -> tuple[CrossCheck, ...]:
     """The cross-checks of every row declared with ``shared_checks=True``."""
     return (_formulations_check(ev),)
+
+
+def _witness_check(what: str, second_variation: list[float], munder: list[float]
+                   ) -> CrossCheck:
+    """The decisive rings of a verdict re-solved by Eqs. Munder: the largest relative
+    difference of their loads (NaN, a failed check, if they could not be re-solved)."""
+    diff = max(abs(m - q) / abs(q) for q, m in zip(second_variation, munder, strict=True))
+    return CrossCheck(f"witness: {what}, second variation vs Munder", float(diff),
+                      FORMULATION_TOL)
 
 
 def _deviation_verdict(dev: float) -> str:
@@ -269,11 +281,13 @@ MONOTONE = ClaimSpec(
           "decrease in the critical force.",
     test=f"Converged q_cr(N), N = {_range(TWISTS)}, for each ν > 1 of the table, e and load "
          "model: any rise q(N+1) > q(N). (crit2 itself is monotone by construction.)",
-    methods=(SECOND_VARIATION,), shared_checks=True, one_formulation_why=MUNDER_COVERAGE,
+    methods=(SECOND_VARIATION, MUNDER), shared_checks=True,
     rule=Rule("holds if q_cr(N) never rises with N in any (ν, e, load) series; fails if it rises "
-              "in some; inconclusive if no series was solved",
+              "in some and Eqs. Munder confirm the largest rise (its two rings re-solved: the "
+              "witness); inconclusive if no series was solved or the witness shows no rise",
               lambda n: "inconclusive" if n["groups"] == 0 else
-              "holds" if n["non_monotone_groups"] == 0 else "fails"),
+              "holds" if n["non_monotone_groups"] == 0 else
+              "fails" if (n["munder_rise"] or 0.0) > EXACT_TOL else "inconclusive"),
     figure="ring.png", related=("ring-rate-grows-with-nu", "ring-destabilises"))
 
 
@@ -291,12 +305,24 @@ def measure_monotone(ev: RingEvidence) -> Measured:
             if rel[k] > largest:
                 largest, at = float(rel[k]), (str(label), float(nu), load, k)
     label, nu, load, k = at
+    checks: tuple[CrossCheck, ...] = ()
+    munder_rise: float | None = None
+    witness = ""
+    if bad:
+        pair = (TWISTS[k], TWISTS[k + 1])
+        sv = [q_at(ev, nu, N, label, load) for N in pair]
+        mu = [ev.munder_load(N, nu, label, load) for N in pair]
+        munder_rise = (mu[1] - mu[0]) / mu[0]
+        checks = (_witness_check(f"q_cr at the largest rise (N = {pair[0]}, {pair[1]}; {label}, "
+                                 f"ν = {nu:g}, {load})", sv, mu),)
+        witness = f" Eqs. Munder at those two rings: a rise of {munder_rise:.1%}."
     return Measured(
         numbers={"largest_rise": largest, "largest_rise_at": at, "non_monotone_groups": bad,
-                 "groups": groups},
+                 "groups": groups, "munder_rise": munder_rise},
         evidence=f"q_cr rises somewhere in {bad} of {groups} (ν, e, load) series; largest rise "
-                 f"{largest:.1%} ({label}, ν = {nu:g}, {load}, N = {k}→{k + 1}). "
-                 + _typical_shape(ev, 2.0))
+                 f"{largest:.1%} ({label}, ν = {nu:g}, {load}, N = {k}→{k + 1}).{witness} "
+                 + _typical_shape(ev, 2.0),
+        cross_checks=checks)
 
 
 def _typical_shape(ev: RingEvidence, nu: float) -> str:
@@ -322,11 +348,14 @@ RATE = ClaimSpec(
     test=f"Relative drop (q(0) − q(10))/q(0) of the converged load for ν ∈ "
          f"{{{', '.join(f'{v:g}' for v in WIDE_NUS)}}}, both e and load models: is it increasing "
          "in ν?",
-    methods=(SECOND_VARIATION,), shared_checks=True, one_formulation_why=MUNDER_COVERAGE,
-    rule=Rule("holds if the relative drop grows with ν in every (e, load) series; fails if not; "
-              "inconclusive if some series has fewer than two ν (nothing to compare)",
+    methods=(SECOND_VARIATION, MUNDER), shared_checks=True,
+    rule=Rule("holds if the relative drop grows with ν in every (e, load) series; fails if not "
+              "and Eqs. Munder confirm the first ν step where it does not grow (its four rings "
+              "re-solved: the witness); inconclusive if some series has fewer than two ν "
+              "(nothing to compare) or the witness shows growth",
               lambda n: "inconclusive" if n["fewest_nus"] < 2 else
-              "holds" if all(n["drop_grows_with_nu"].values()) else "fails"),
+              "holds" if all(n["drop_grows_with_nu"].values()) else
+              "fails" if n["munder_witness_grows"] is False else "inconclusive"),
     related=("ring-monotone-decrease",))
 
 
@@ -339,13 +368,43 @@ def measure_rate(ev: RingEvidence) -> Measured:
             drops[f"{label}/{load}"] = dict(zip(s, d, strict=True))
             grows[f"{label}/{load}"] = bool(np.all(np.diff(d) > 0))
     h = drops["e=1/hydrostatic"]
+    checks, witness_grows, witness = _rate_witness(ev, drops, grows)
     return Measured(
         numbers={"relative_drop_0_to_10": drops, "drop_grows_with_nu": grows,
-                 "fewest_nus": min((len(v) for v in drops.values()), default=0)},
+                 "fewest_nus": min((len(v) for v in drops.values()), default=0),
+                 "munder_witness_grows": witness_grows},
         evidence="Relative drop q(0)→q(10) by ν (e = 1, hydrostatic): "
                  + ", ".join(f"{nu:g}: {v:+.3f}" for nu, v in h.items())
                  + "; grows with ν: " + ", ".join(f"{k} {v}" for k, v in grows.items())
-                 + ". " + _drop_sign_text(drops) + ".")
+                 + ". " + _drop_sign_text(drops) + "." + witness,
+        cross_checks=checks)
+
+
+def _rate_witness(ev: RingEvidence, drops: dict[str, dict[float, float]],
+                  grows: dict[str, bool]) -> tuple[tuple[CrossCheck, ...], bool | None, str]:
+    """The first (e, load) series whose drop does not grow, at its first such ν step,
+    re-solved by Eqs. Munder (N = first and last of the scan at both ν): the checks, whether
+    Munder's drop grows there (None: no such series), the evidence sentence."""
+    key = next((k for k, g in grows.items() if not g), None)
+    if key is None:
+        return (), None, ""
+    label, load = key.split("/")
+    nus, d = list(drops[key]), list(drops[key].values())
+    i = next(j for j in range(len(d) - 1) if not d[j + 1] > d[j])
+    ends = (WIDE_TWISTS[0], WIDE_TWISTS[-1])
+    wide = ev.wide[(ev.wide["e_label"] == label) & (ev.wide["load"] == load)]
+    sv, mu = [], []
+    for nu in nus[i:i + 2]:
+        g = wide[wide["nu"] == nu].set_index("N")["q"]
+        sv += [float(g.loc[N]) for N in ends]
+        mu += [ev.munder_load(N, nu, label, load) for N in ends]
+    d_mu = [(mu[0] - mu[1]) / mu[0], (mu[2] - mu[3]) / mu[2]]
+    check = _witness_check(f"q_cr at N = {ends[0]}, {ends[1]} for ν = {nus[i]:g}, "
+                           f"{nus[i + 1]:g} ({label}, {load})", sv, mu)
+    grows_mu = bool(d_mu[1] > d_mu[0])
+    return ((check,), grows_mu,
+            f" Eqs. Munder at ν = {nus[i]:g} → {nus[i + 1]:g} ({key}): drop {d_mu[0]:+.3f} → "
+            f"{d_mu[1]:+.3f}.")
 
 
 def _drop_sign_text(drops: dict[str, dict[float, float]]) -> str:
@@ -697,6 +756,13 @@ def _load_caveat_rule(n: dict) -> str:
     return "holds" if not n["undecided_claims"] and n["claims_compared"] else "inconclusive"
 
 
+#: Why the load-model caveat rests on one formulation (its evidence is other rows' verdicts).
+LOAD_CAVEAT_WHY = ("its evidence is the other ring rows' verdicts under each load model alone; "
+                   "each of those rows names its own formulations (ring-destabilises, the one "
+                   "that differs here: the second variation and the closed-form N → ∞ limit), "
+                   "and both load models' loads agree with Eqs. Munder on the comparison cases")
+
+
 LOAD_CAVEAT = ClaimSpec(
     id="caveat-load-model", section=SECTION + " (load left unspecified)",
     claim="(Modelling assumption) The load on the ring — 'a radially inward-directed force per "
@@ -707,7 +773,7 @@ LOAD_CAVEAT = ClaimSpec(
          "relative difference of q_cr on the table; every other ring claim judged by its rule "
          "on the evidence of each load model alone (the other model's numbers replaced by this "
          "one's), and the claims whose verdict differs between the two.",
-    methods=(SECOND_VARIATION,), shared_checks=True, one_formulation_why=MUNDER_COVERAGE,
+    methods=(SECOND_VARIATION,), shared_checks=True, one_formulation_why=LOAD_CAVEAT_WHY,
     rule=Rule("holds if every other ring claim gets the same verdict from either load model's "
               "evidence alone; fails if some claim's verdict changes with the load model (it then "
               "depends on a choice the paper does not make); inconclusive if some claim is "
@@ -733,6 +799,9 @@ def single_load_evidence(ev: RingEvidence, load: str) -> RingEvidence:
     """`ev` with every number of the other load model replaced by `load`'s (the formulation
     cases, one load model each, stay as they are)."""
     one = copy.copy(ev)
+    # its re-solves (witnesses) are of the model whose numbers it holds (already one model's
+    # evidence: that model's, whichever label is picked)
+    one.load_override = ev.load_override or load
     for name in ("table", "thresholds", "untwisted_circular", "wide", "boundaries", "rectangle"):
         setattr(one, name, _one_load_frame(getattr(ev, name), load))
     return one
