@@ -32,7 +32,6 @@ import numpy as np
 from numpy.typing import NDArray
 
 from spectral_rod.families import SHIFT
-from spectral_rod.straight_rod._blas import rows_matmul
 from spectral_rod.straight_rod.discretisation import (
     INST1,
     FamilyOperator,
@@ -196,7 +195,7 @@ class _ShiftedModal:
                                                       a2, a1, mf.g21, mf.g12)
         r_e = 1.0 / (d_e - SHIFT)
         k_s = d_s.shape[1]
-        schur = rows_matmul(-a * b * r_e, mf.outer).reshape(-1, k_s, k_s)
+        schur = ((-a * b * r_e) @ mf.outer).reshape(-1, k_s, k_s)
         schur[:, np.arange(k_s), np.arange(k_s)] += d_s - SHIFT
         return cls(elim, kept, r_e, a, b, g_es, g_se,
                    np.linalg.inv(schur))  # LinAlgError if singular
@@ -215,16 +214,16 @@ class _ShiftedModal:
     def solve(self, v: NDArray[np.float64]) -> NDArray[np.float64]:
         """(K - SHIFT)^{-1} v for each row v."""
         u = v[:, self.elim] * self.r_e
-        z_s = (self.schur_inv @ (v[:, self.kept] - self.b * rows_matmul(u, self.g_se.T))[:, :, None]
+        z_s = (self.schur_inv @ (v[:, self.kept] - self.b * (u @ self.g_se.T))[:, :, None]
                )[:, :, 0]
-        return self._assemble(u - self.a * rows_matmul(z_s, self.g_es.T) * self.r_e, z_s)
+        return self._assemble(u - self.a * (z_s @ self.g_es.T) * self.r_e, z_s)
 
     def solve_transposed(self, v: NDArray[np.float64]) -> NDArray[np.float64]:
         """(K - SHIFT)^{-T} v for each row v (its Schur complement is S^T)."""
         u = v[:, self.elim] * self.r_e
-        z_s = ((v[:, self.kept] - self.a * rows_matmul(u, self.g_es))[:, None, :] @ self.schur_inv
+        z_s = ((v[:, self.kept] - self.a * (u @ self.g_es))[:, None, :] @ self.schur_inv
                )[:, 0, :]
-        return self._assemble(u - self.b * rows_matmul(z_s, self.g_se) * self.r_e, z_s)
+        return self._assemble(u - self.b * (z_s @ self.g_se) * self.r_e, z_s)
 
 
 def _rowdot(a: NDArray[np.float64], b: NDArray[np.float64]) -> NDArray[np.float64]:
@@ -342,7 +341,7 @@ def _rayleigh_sums(op: FamilyOperator, twist: NDArray[np.float64], nu: NDArray[n
     x, y = right.astype(dtype), left.astype(dtype)
     terms = np.empty((x.shape[0], len(INST1)), dtype=dtype)
     for e, f, idx, blocks in _term_blocks(op.n, op.family, dtype):
-        px = rows_matmul(x[:, cols[f]], blocks).reshape(x.shape[0], len(idx), -1)
+        px = (x[:, cols[f]] @ blocks).reshape(x.shape[0], len(idx), -1)
         terms[:, idx] = np.einsum("pj,pij->pi", y[:, cols[e]], px)
     coef = term_coefficients(twist.astype(dtype), nu.astype(dtype))
     return ((coef * terms).sum(axis=1) / terms[:, _MASS_TERMS].sum(axis=1)).astype(np.float64)
@@ -374,13 +373,13 @@ def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np
     except np.linalg.LinAlgError:  # SHIFT an eigenvalue of some point (spurious): the rule
         return _solve_family_eig(n, family, twist, nu)
     k1 = mf.lam1.size
-    vec = np.hstack([rows_matmul(z[:, :k1], mf.u1.T), rows_matmul(z[:, k1:], mf.u2.T)])
+    vec = np.hstack([z[:, :k1] @ mf.u1.T, z[:, k1:] @ mf.u2.T])
     # the eigenvalue from the O(1) pencil itself: the two-sided Rayleigh quotient (its error is
     # the product of the vectors' errors; K carries round-off ~ eps n^4 in its diagonal)
     loose = rtol >= LOOSE_RTOL and n <= LOOSE_DEGREE
     good = np.flatnonzero(ok) if not loose else np.zeros(0, dtype=int)
     w = w[good]
-    left = np.hstack([rows_matmul(w[:, :k1], mf.left1), rows_matmul(w[:, k1:], mf.left2)])
+    left = np.hstack([w[:, :k1] @ mf.left1, w[:, k1:] @ mf.left2])
     lam[good] = pencil_rayleigh_quotient(op, twist[good], nu[good], left, vec[good])
     bad = np.flatnonzero(~(ok | above))
     tails = np.full(twist.size, np.inf)

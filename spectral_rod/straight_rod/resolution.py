@@ -14,7 +14,6 @@ from functools import lru_cache
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from spectral_rod.straight_rod._blas import rows_matmul
 from spectral_rod.straight_rod.discretisation import FamilyOperator, family_operator
 
 __all__ = ["ERR_LINEAR", "ERR_QUADRATIC", "N_MAX", "N_MIN", "ROUNDOFF_TWIST", "error_estimate",
@@ -150,4 +149,4 @@ def mode_tails(op: FamilyOperator, vectors: NDArray[np.float64]) -> NDArray[np.f
 
     A field that vanishes (omega2 at zero twist) has no meaningful tail of its own.
     """
-    return tails_of(rows_matmul(vectors, tail_rows(op).T))
+    return tails_of(vectors @ tail_rows(op).T)
