@@ -1,0 +1,93 @@
+"""The README's findings quote numbers from the generated outputs; each quoted number is
+re-derived here from the committed ``paper_figures/`` (what ``python -m reproduce check`` holds
+to the code), so a README that drifts from the outputs fails.
+
+Speed figures are not here: they are measurements of one machine and dated in the README.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from pathlib import Path
+
+import pandas as pd
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+OUT = ROOT / "paper_figures"
+README = ROOT / "README.md"
+
+pytestmark = pytest.mark.skipif(not (OUT / "claims.json").exists() or not README.exists(),
+                                reason="needs a source checkout with paper_figures/")
+
+
+@pytest.fixture(scope="module")
+def text() -> str:
+    return " ".join(README.read_text(encoding="utf-8").split())  # one line: no wrapping issues
+
+
+@pytest.fixture(scope="module")
+def forensics() -> dict:
+    return json.loads((OUT / "figure1_forensics.json").read_text(encoding="utf-8"))
+
+
+@pytest.fixture(scope="module")
+def claims() -> dict:
+    rows = json.loads((OUT / "claims.json").read_text(encoding="utf-8"))
+    return {r["id"]: r for r in rows}
+
+
+def _quoted(text: str, pattern: str) -> tuple[str, ...]:
+    m = re.search(pattern, text)
+    assert m, f"README no longer says {pattern!r}"
+    return m.groups()
+
+
+def _agrees(quoted: str, value: float) -> bool:
+    """`quoted` is `value` rounded to its printed digits (half a unit of the last one)."""
+    mantissa, _, exponent = quoted.partition("e")
+    decimals = len(mantissa.partition(".")[2])
+    unit = 10.0 ** (int(exponent or 0) - decimals)
+    return abs(float(quoted) - value) <= 0.5 * unit * (1 + 1e-9)
+
+
+def test_figure1_paragraph(text: str, forensics: dict) -> None:
+    got, total = _quoted(text, r"(\d+) of (\d+) plotted points are exactly")
+    assert (int(got), int(total)) == (forensics["reproduced_by_best"], forensics["points"])
+    lo, hi = _quoted(text, r"lies in \[−([\d.e-]+), ([\d.e-]+)\] there")
+    dev = forensics["reproduced_deviation"]
+    assert _agrees(lo, -dev["min"]) and _agrees(hi, dev["max"])
+    others, fails = _quoted(text, r"The other (\d+) were inserted .*? fails \(at (\d+) of them")
+    pvd = forensics["prediction_vs_data"].values()
+    assert int(others) == forensics["in_clusters"] == sum(v["irregular"] for v in pvd)
+    assert int(fails) == sum(v["both"] for v in pvd)
+    kinds = {}
+    for c in forensics["clusters"]:
+        kind = "window" if "window" in c["explanation"][:200] else "crossing"
+        n, dmax = kinds.get(kind, (0, 0.0))
+        kinds[kind] = (n + c["points"], max(dmax, c["max_abs_deviation"]))
+    n_w, d_w = _quoted(text, r"imaginary-β₁ window \((\d+) points, up to ([\d.e-]+) off\)")
+    n_c, d_c = _quoted(text, r"one scan step \((\d+) points, up to ([\d.e-]+) off\)")
+    assert int(n_w) == kinds["window"][0] and _agrees(d_w, kinds["window"][1])
+    assert int(n_c) == kinds["crossing"][0] and _agrees(d_c, kinds["crossing"][1])
+    assert "Eight grid points are missing" in text and len(forensics["missing_points"]) == 8
+    at_6275 = sorted(m["nu"] for m in forensics["missing_points"]
+                     if abs(m["twist_angle"] - 6.275) < 1e-9)
+    assert at_6275 == [1.1, 1.3] and "Ω = 6.275 for ν = 1.1 and 1.3" in text
+
+
+def test_maximum_and_ring_numbers(text: str, claims: dict) -> None:
+    (quoted,) = _quoted(text, r"(2\.\d+)π for ν = 1\.5")
+    assert _agrees(quoted, claims["rod-first-maximum"]["numbers"]["twist_over_pi"]["1.5"])
+    n = claims["ring-destabilises"]["numbers"]
+    cases, e1, iso = _quoted(text, r"in all (\d+) cases up to ν = 100; for pressure, only below "
+                                   r"ν\* = ([\d.]+) \(e = 1\) or ([\d.]+) \(isotropic\)")
+    assert int(cases) == n["fewest_cases"] and n["every_case_lowered"]["axis"]
+    assert _agrees(e1, n["nu_boundary"]["e=1/hydrostatic"])
+    assert _agrees(iso, n["nu_boundary"]["isotropic/hydrostatic"])
+    table = pd.read_csv(OUT / "ring_table.csv")
+    circ = table[(table["nu"] == 1.0) & (table["N"] == 0) & (table["e_label"] == "e=1")]
+    (load,) = _quoted(text, r"the true load is out-of-plane, ([\d.]+) E₁I₁/R³ \(e = 1\)")
+    assert _agrees(load, float(circ["q_hydrostatic"].iloc[0]))
+    assert circ["kind_hydrostatic"].iloc[0] == "out-of-plane"
