@@ -94,8 +94,7 @@ def headline_verdicts(claims_json: Path) -> list[str]:
     counts = verdict_counts(str(r["verdict"]) for r in rows)
     lines = ["## Verdicts", "",
              f"{len(rows)} claims of the paper checked (`claims.md`): "
-             + ", ".join(f"**{v}** {n}" for v, n in sorted(counts.items(), key=lambda x: -x[1])
-                         if n) + ".", ""]
+             + ", ".join(f"**{v}** {n}" for v, n in counts.items() if n) + ".", ""]
     lines += [f"- **{r['verdict']}** `{r['id']}`: {r['claim']}" for r in rows]
     return [*lines, ""]
 

@@ -14,7 +14,6 @@ compared by :data:`reproduce.compare.DEFAULT_RULE` and named as undeclared.
 
 from __future__ import annotations
 
-import json
 import tempfile
 from collections.abc import Callable
 from pathlib import Path
@@ -22,6 +21,7 @@ from typing import Any
 
 from reproduce._runner import load_scene, run_scenes
 from reproduce.compare import FileComparison, compare_file
+from reproduce.io import read_json
 
 #: Keys of ``sections/NAME.json`` that the runner writes and that differ on every run.
 RUNNER_KEYS = {"seconds": "ignore", "finished": "ignore", "commit": "ignore"}
@@ -38,7 +38,7 @@ def scene_specs(name: str, fresh: Path) -> dict[str, Any]:
     specs[section] = {**RUNNER_KEYS, **specs.get(section, {})}
     meta = fresh / section
     if meta.exists():
-        for written in json.loads(meta.read_text(encoding="utf-8")).get("files", []):
+        for written in read_json(meta).get("files", []):
             if written.endswith((".csv", ".json")) and written not in specs:
                 specs[written] = {}
     return specs

@@ -29,7 +29,6 @@ False
 from __future__ import annotations
 
 import fnmatch
-import json
 import math
 import re
 from dataclasses import dataclass, field
@@ -37,6 +36,8 @@ from pathlib import Path
 from typing import Any
 
 import pandas as pd
+
+from reproduce.io import read_json
 
 #: Rule for values that no pattern of the scene's CHECK matches.
 DEFAULT_RULE: dict[str, float] = {"rel": 1e-9}
@@ -198,8 +199,8 @@ def compare_json(name: str, old_path: Path, new_path: Path, spec: dict[str, Any]
     """Compare two JSON files leaf by leaf under `spec`."""
     out = FileComparison(name)
     owner = spec.get("_owner")
-    old = _flatten(_owned(json.loads(old_path.read_text(encoding="utf-8")), owner, scene))
-    new = _flatten(_owned(json.loads(new_path.read_text(encoding="utf-8")), owner, scene))
+    old = _flatten(_owned(read_json(old_path, object), owner, scene))
+    new = _flatten(_owned(read_json(new_path, object), owner, scene))
     for key in sorted(set(old) | set(new)):
         rule, declared = rule_for(spec, key)
         if not declared:

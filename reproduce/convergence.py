@@ -171,7 +171,7 @@ TRADE_TOLS = (1e-2, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12)
 #: (points // TRADE_SCALARS)-th point), enough for a mean per call without the full sweep's cost.
 TRADE_SCALARS = 61
 #: The tol of the speed comparison with the obvious implementation (its own accuracy level).
-SPEED_TOL = 1e-12
+SPEED_TOL = TRADE_TOLS[-1]
 
 
 def figure1_points() -> tuple[np.ndarray, np.ndarray]:

@@ -26,7 +26,7 @@ import numpy as np
 import pandas as pd
 
 from reproduce._runner import SceneOutput
-from reproduce.io import write_with
+from reproduce.io import write_csv, write_figure
 from spectral_rod import (
     NEAR_DEGENERATE,
     TWIST_ROUTE,
@@ -223,14 +223,11 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
     res = resolution_study()
     progress("large twist: collocation vs characteristic equation (error, time)")
     route = routing_study()
-    files = [write_with(out / "extremes_grid.csv", lambda p: grid.to_csv(p, index=False)),
-             write_with(out / "extremes_increment.csv", lambda p: inc.to_csv(p, index=False)),
-             write_with(out / "extremes_resolution.csv", lambda p: res.to_csv(p, index=False)),
-             write_with(out / "extremes_routing.csv", lambda p: route.to_csv(p, index=False))]
-    fig = draw(grid, inc, res, route)
-    files.append(write_with(out / "extremes.png",
-                            lambda p: fig.savefig(p, format="png", dpi=150)))
-    plt.close(fig)
+    files = [write_csv(out / "extremes_grid.csv", grid),
+             write_csv(out / "extremes_increment.csv", inc),
+             write_csv(out / "extremes_resolution.csv", res),
+             write_csv(out / "extremes_routing.csv", route),
+             write_figure(out / "extremes.png", draw(grid, inc, res, route))]
     worst_p = grid.loc[grid["rel_error"].idxmax()]
     worst_i = inc.loc[inc["rel_error"].idxmax()]
     by_route = grid.groupby("method")["rel_error"].max()

@@ -170,18 +170,24 @@ def evaluate(claims: Sequence[tuple[ClaimSpec, Callable[[Any], Measured]]], evid
     return rows
 
 
-#: Keys every ledger row has (what the report's headline and the ledger's order rely on).
+#: Keys every ledger row has (what the report's headline relies on).
 ROW_KEYS = ("id", "claim", "verdict")
+#: Keys a row must have to be kept when a scene rewrites the ledger (its order, claims.md).
+FULL_ROW_KEYS = (*ROW_KEYS, "scene", "section", "test", "evidence")
 
 
-def read_ledger(path: Path) -> list[dict[str, Any]]:
+def read_ledger(path: Path, keys: tuple[str, ...] = ROW_KEYS) -> list[dict[str, Any]]:
     """Rows of an existing ``claims.json`` ([] if there is none); :class:`OutputFileError`
-    naming the file if it is not a list of rows."""
+    naming the file if it is not a list of rows with `keys` and known verdicts."""
     if not path.exists():
         return []
     rows = read_json(path, list)
-    if not all(isinstance(r, dict) and all(k in r for k in ROW_KEYS) for r in rows):
-        raise OutputFileError(f"{path}: every row must be an object with the keys {ROW_KEYS}; "
+    if not all(isinstance(r, dict) and all(k in r for k in keys) for r in rows):
+        raise OutputFileError(f"{path}: every row must be an object with the keys {keys}; "
+                              "delete it to rebuild it")
+    unknown = sorted({str(r["verdict"]) for r in rows} - set(VERDICTS))
+    if unknown:
+        raise OutputFileError(f"{path}: unknown verdicts {unknown} (allowed: {VERDICTS}); "
                               "delete it to rebuild it")
     return rows
 
@@ -223,7 +229,7 @@ def _markdown(rows: list[dict[str, Any]]) -> str:
 def update_ledger(out_dir: Path, scene: str, claims: list[Claim]) -> list[Path]:
     """Replace the rows written by `scene` in ``claims.json``/``claims.md`` under `out_dir`."""
     json_path = Path(out_dir) / "claims.json"
-    rows = [r for r in read_ledger(json_path) if r.get("scene") != scene]
+    rows = [r for r in read_ledger(json_path, FULL_ROW_KEYS) if r["scene"] != scene]
     rows += [asdict(c) for c in claims]
     ids = [r["id"] for r in rows]
     dupes = sorted({i for i in ids if ids.count(i) > 1})

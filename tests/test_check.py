@@ -56,6 +56,16 @@ def test_json_rows_by_owner_and_verdicts(tmp_path):
         "c1.numbers.p"]
 
 
+def test_a_corrupt_json_is_a_clean_fault(tmp_path):
+    from reproduce.io import OutputFileError
+
+    good = _ledger(tmp_path / "good.json", "holds", 1.0)
+    bad = tmp_path / "bad.json"
+    bad.write_text('[{"id": "c1", ', encoding="utf-8")  # cut short
+    with pytest.raises(OutputFileError, match=r"bad\.json is not valid JSON"):
+        compare_json("c", good, bad, {"*": "exact"}, "s")
+
+
 @pytest.fixture(scope="module")
 def fresh_figure1(tmp_path_factory) -> Path:
     out = tmp_path_factory.mktemp("fresh")

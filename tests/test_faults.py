@@ -4,6 +4,7 @@ disk full, a report out of step with its sections, corrupted reference data."""
 from __future__ import annotations
 
 import errno
+import json
 import os
 import signal
 import subprocess
@@ -212,3 +213,17 @@ def test_json_outputs_keep_the_type_of_every_number() -> None:
     assert json.loads(json.dumps({"flag": np.bool_(True)}, default=json_value))["flag"] is True
     with pytest.raises(TypeError, match="not a JSON value"):
         json.dumps({"x": object()}, default=json_value)
+
+
+def test_a_ledger_row_without_its_scene_or_with_an_unknown_verdict_is_a_clean_fault(tmp_path):
+    from reproduce.io import OutputFileError
+    from reproduce.ledger import update_ledger
+
+    bare = [{"id": "a", "claim": "A holds.", "verdict": "holds"}]  # no scene, section, ...
+    write_text(tmp_path / "claims.json", json.dumps(bare))
+    with pytest.raises(OutputFileError, match="keys"):
+        update_ledger(tmp_path, "ring", [])
+    odd = [{**bare[0], "verdict": "probably"}]
+    write_text(tmp_path / "claims.json", json.dumps(odd))
+    with pytest.raises(OutputFileError, match="unknown verdicts"):
+        run_scenes([], tmp_path, lambda m: None)

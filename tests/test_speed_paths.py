@@ -48,12 +48,13 @@ def test_scalar_path_equals_the_array_path_for_one_point():
             assert a.method == b.method[0] and a.n == int(b.n[0])
 
 
-def test_scalar_path_does_not_solve_below_the_round_off_floor(monkeypatch):
+def test_scalar_path_does_not_solve_below_the_round_off_floor(monkeypatch, reference):
     # tol under the floor eps (32 + 0.3 Omega^2) cannot be met: the scalar path must hand the
     # point to the general path before solving (it solved twice), which warns and flags it
     import spectral_rod.critical as critical
 
-    converged = critical_load(45.0, 1.5)
+    with pytest.warns(ConvergenceWarning):
+        array = critical_load(np.array([45.0]), 1.5, tol=1e-14, full_output=True)
 
     def _must_not_run(*args, **kwargs):
         raise AssertionError("the scalar path solved a point whose tol is below the floor")
@@ -62,7 +63,8 @@ def test_scalar_path_does_not_solve_below_the_round_off_floor(monkeypatch):
     with pytest.warns(ConvergenceWarning, match="tol=1e-14 not met"):
         res = critical_load(45.0, 1.5, tol=1e-14, full_output=True)
     assert not res.converged and res.error_estimate > 1e-14
-    assert abs(res.p_star / converged - 1) <= 1e-13
+    assert res.p_star == float(array.p_star[0]) and res.n == int(array.n[0])  # the array path
+    assert abs(res.p_star / reference(45.0, 1.5) - 1) <= res.error_estimate
 
 
 def test_scalar_and_large_batch_agree_to_the_stated_bound(reference):

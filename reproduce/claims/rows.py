@@ -324,7 +324,7 @@ def measure_limit(ev: StraightRodEvidence) -> Measured:
         for nu in NUS:
             r = [x for x in rows if x["nu"] == nu]
             om = np.array([x["twist"] for x in r])
-            err = np.abs(np.array([x[f"err{k}"] for x in r]))
+            err = np.array([x[f"err{k}"] for x in r])
             fits.append(observed_order(om, err))
         orders[k] = (min(fits), max(fits))
     om_max = max(x["twist"] for x in rows)
@@ -552,9 +552,8 @@ def measure_three_dimensional(ev: StraightRodEvidence) -> Measured:
                  "torsion ω3 − ω30 = α' is zero in every case since α decouples.) The 3-D part "
                  f"weakens with twist: ν = {DETAIL_NU}, Ω = "
                  + ", ".join(f"{r['twist']:g}: {r['planarity_mp']:.2e}" for r in dec)
-                 + f" (∝ Ω^{decay:.2f}; the fast helical part of the mode has relative amplitude "
-                 "λδ/(4Ω²), asymptotics.py): at large twist the mode is nearly a planar sine in "
-                 "the plane of the mid-span section's principal axis.",
+                 + f" (∝ Ω^{decay:.2f}, measured): at large twist the mode is nearly a planar "
+                 "sine in the plane of the mid-span section's principal axis.",
         cross_checks=(CrossCheck("mode shape: collocation vs closed form", mismatch, 1e-8),))
 
 

@@ -15,6 +15,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
+from spectral_rod._blas_threads import one_blas_thread
 from spectral_rod._validation import check_resolution, scalar_nu, scalar_twist
 from spectral_rod.families import FAMILIES, check_family
 from spectral_rod.straight_rod.discretisation import family_operator
@@ -107,8 +108,14 @@ def pick_family(lam: NDArray[np.float64], tails: NDArray[np.float64]
 def collocation_critical_load(twist: NDArray[np.float64], nu: NDArray[np.float64], *,
                               n: int | None = None, tol: float = 1e-12) -> CollocationResult:
     """p* at flat arrays of points (|Omega|, nu), at degree ``n`` or chosen automatically for
-    relative accuracy ``tol`` (module docstring); validated input expected."""
-    tw = np.abs(twist)
+    relative accuracy ``tol`` (module docstring); validated input expected. Runs on one BLAS
+    thread (:func:`spectral_rod._blas_threads.one_blas_thread`: its products are small)."""
+    with one_blas_thread():
+        return _collocation_critical_load(np.abs(twist), nu, n, tol)
+
+
+def _collocation_critical_load(tw: NDArray[np.float64], nu: NDArray[np.float64],
+                               n: int | None, tol: float) -> CollocationResult:
     if n is not None:
         deg = np.full(tw.size, int(n))
         p, fam, tails = _solve_points(tw, nu, deg, tol)

@@ -119,6 +119,19 @@ class FamilyOperator:
         b[k1:, k1:] = self.bases[1][1].value
         return b
 
+    @cached_property
+    def tail_rows(self) -> NDArray[np.float64]:
+        """Rows mapping an eigenvector c to the Chebyshev coefficients of its fields' own
+        parity, the tail first: the last two of omega1, the last two of omega2, then the rest
+        (the layout :func:`spectral_rod.straight_rod.resolution.tails_of` reads)."""
+        k1 = self.sizes[0]
+        blocks = []
+        for f, b in enumerate((self.bases[0][0], self.bases[1][1])):
+            rows = np.zeros((b.coefficients.shape[0], self.mass.shape[0]))
+            rows[:, slice(0, k1) if f == 0 else slice(k1, None)] = b.coefficients
+            blocks.append(rows[b.parity::2])
+        return np.vstack([blk[-2:] for blk in blocks] + [blk[:-2] for blk in blocks])
+
     def pencil(self, twist_angle: ArrayLike, nu: ArrayLike
                ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
         """A for broadcast arrays `twist_angle`, `nu` (shape (..., m, m)), and B (m, m)."""

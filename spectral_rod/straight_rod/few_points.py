@@ -44,7 +44,7 @@ from spectral_rod.straight_rod.eigensolver import (
     _start_vector,
     pencil_rayleigh_quotient,
 )
-from spectral_rod.straight_rod.resolution import tail_rows, tails_of
+from spectral_rod.straight_rod.resolution import tails_of
 
 __all__ = ["LEAN_MAX_DEGREE", "SQUARING_MAX", "DensePencils", "dense_pencils", "solve_few"]
 
@@ -89,7 +89,7 @@ def dense_pencils(n: int) -> DensePencils:
         pieces[k, f, 0], pieces[k, f, 2] = -SHIFT * b_t, b_t
     start = _start_vector(m)
     return DensePencils(n, pieces.reshape(k + 1, -1), np.stack([op.mass for op in ops]),
-                        np.stack([tail_rows(op) for op in ops]), start / np.linalg.norm(start))
+                        np.stack([op.tail_rows for op in ops]), start / np.linalg.norm(start))
 
 
 def _inverses(f_t: NDArray[np.float64]) -> NDArray[np.float64] | None:
@@ -151,8 +151,7 @@ def solve_few(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol:
         theta_k = (x1 @ dp.start) / (x @ dp.start)  # x0^T M^(k+1) x0 / x0^T M^k x0
         theta_2k = _dot(u, x1) / _dot(u, x)
         lam = _dot(y, ab_x[:, :, 0]) / _dot(y, ab_x[:, :, 1])
-        big = (np.flatnonzero(np.abs(twist) > LONG_TWIST) if pts > 1
-               else np.arange(int(abs(a) > LONG_TWIST)))
+        big = np.flatnonzero(np.abs(twist) > LONG_TWIST)
         for f, family in enumerate(FAMILIES):  # as the batched engine: extended precision
             if big.size:
                 lam[big, f] = pencil_rayleigh_quotient(family_operator(n, family), twist[big],

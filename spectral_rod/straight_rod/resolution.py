@@ -9,16 +9,15 @@ calibrated function of that tail plus a measured round-off floor (:func:`error_e
 from __future__ import annotations
 
 import math
-from functools import lru_cache
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from spectral_rod.straight_rod.discretisation import FamilyOperator, family_operator
+from spectral_rod.straight_rod.discretisation import FamilyOperator
 
 __all__ = ["ERR_LINEAR", "ERR_QUADRATIC", "N_MAX", "N_MIN", "ROUNDOFF_TWIST", "error_estimate",
            "error_estimate_scalar", "initial_degree", "initial_degree_scalar", "mode_tails",
-           "raised_degree", "roundoff_floor", "tail_for_tolerance", "tail_rows", "tails_of"]
+           "raised_degree", "roundoff_floor", "tail_for_tolerance", "tails_of"]
 
 N_MIN, N_MAX = 8, 512
 EPS = float(np.finfo(float).eps)
@@ -110,31 +109,10 @@ def roundoff_floor(twist_angle: ArrayLike) -> NDArray[np.float64]:
     return EPS * (ROUNDOFF_BASE + ROUNDOFF_TWIST * (om * om))
 
 
-def tail_rows(op: FamilyOperator) -> NDArray[np.float64]:
-    """Rows mapping an eigenvector c to the Chebyshev coefficients of its fields' own parity,
-    the tail first: the last two of omega1, the last two of omega2, then the rest (the layout
-    :func:`tails_of` reads). Cached per (n, family)."""
-    return _tail_rows(op.n, op.family)
-
-
-@lru_cache(maxsize=128)
-def _tail_rows(n: int, family: str) -> NDArray[np.float64]:
-    op = family_operator(n, family)
-    k1 = op.sizes[0]
-    blocks = []
-    for f, b in enumerate((op.bases[0][0], op.bases[1][1])):
-        rows = np.zeros((b.coefficients.shape[0], op.mass.shape[0]))
-        rows[:, slice(0, k1) if f == 0 else slice(k1, None)] = b.coefficients
-        blocks.append(rows[b.parity::2])
-    out = np.vstack([blk[-2:] for blk in blocks] + [blk[:-2] for blk in blocks])
-    out.flags.writeable = False
-    return out
-
-
 def tails_of(coefficients: NDArray[np.float64]) -> NDArray[np.float64]:
-    """The coefficient tail from coefficients laid out as :func:`tail_rows` gives them (last
-    axis): the largest of the four tail coefficients relative to the largest of all; inf where
-    the mode is zero."""
+    """The coefficient tail from coefficients laid out as ``FamilyOperator.tail_rows`` gives
+    them (last axis): the largest of the four tail coefficients relative to the largest of all;
+    inf where the mode is zero."""
     a = np.abs(coefficients)
     scale, last = np.maximum.reduce(a, axis=-1), np.maximum.reduce(a[..., :4], axis=-1)
     if scale.all():  # no zero mode: skip the guarded division (half the cost of a scalar call's)
@@ -149,4 +127,4 @@ def mode_tails(op: FamilyOperator, vectors: NDArray[np.float64]) -> NDArray[np.f
 
     A field that vanishes (omega2 at zero twist) has no meaningful tail of its own.
     """
-    return tails_of(vectors @ tail_rows(op).T)
+    return tails_of(vectors @ op.tail_rows.T)
