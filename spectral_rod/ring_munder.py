@@ -468,17 +468,29 @@ def _equilibrate(J0: NDArray, J1: NDArray) -> tuple[NDArray, NDArray]:
     return J0 * r[:, None] * c[None, :], J1 * r[:, None] * c[None, :]
 
 
+def _pattern_magnitudes(J0: NDArray, J1: NDArray) -> NDArray[np.float64]:
+    A0, A1 = _equilibrate(J0, J1)
+    return np.abs(A0) + np.abs(A1)
+
+
+def pattern_has_gap(J0: NDArray, J1: NDArray) -> bool:
+    """Whether the equilibrated entries leave a gap of PATTERN_GAP around PATTERN_TOL (the
+    smallest entry above it is >= PATTERN_GAP times the largest nonzero one below it), so that
+    round-off can be told from couplings; True if one side is empty."""
+    S = _pattern_magnitudes(J0, J1)
+    below, above = S[(S > 0) & (S <= PATTERN_TOL)], S[S > PATTERN_TOL]
+    return not (below.size and above.size and above.min() < PATTERN_GAP * below.max())
+
+
 def blocks(J0: NDArray, J1: NDArray) -> list[tuple[NDArray[np.int64], NDArray[np.int64]]]:
     """Independent square blocks (rows, columns) of the pencil: connected components of the
     bipartite row-column graph of the equilibrated nonzero pattern (entries above
     :data:`PATTERN_TOL`); one block, the whole pencil, if there is no gap
     (:data:`PATTERN_GAP`) between round-off and couplings."""
-    A0, A1 = _equilibrate(J0, J1)
     n = J0.shape[0]
-    S = np.abs(A0) + np.abs(A1)
-    below, above = S[(S > 0) & (S <= PATTERN_TOL)], S[S > PATTERN_TOL]
-    if below.size and above.size and above.min() < PATTERN_GAP * below.max():
-        return [(np.arange(n), np.arange(n))]  # no gap: round-off not told from couplings
+    S = _pattern_magnitudes(J0, J1)
+    if not pattern_has_gap(J0, J1):
+        return [(np.arange(n), np.arange(n))]  # round-off not told from couplings
     pattern = scipy.sparse.coo_matrix(S > PATTERN_TOL)
     graph = scipy.sparse.bmat([[None, pattern], [pattern.T, None]])
     n_comp, label = scipy.sparse.csgraph.connected_components(graph, directed=False)
@@ -491,6 +503,24 @@ def blocks(J0: NDArray, J1: NDArray) -> list[tuple[NDArray[np.int64], NDArray[np
         if rows.size:
             out.append((rows, cols))
     return out
+
+
+#: A mode's unknown counts as part of it if its (equilibrated) coefficient exceeds this
+#: fraction of the largest: sqrt of ring_stability's KIND_TOL, whose in-plane share of the load
+#: work is quadratic in the amplitudes (an in-plane mode's out-of-plane part is round-off).
+MODE_SUPPORT_TOL = 1.0e-4
+
+
+def _mode_support(J0: NDArray, J1: NDArray, q: float) -> NDArray[np.bool_]:
+    """The unknowns the null vector of J0 + q J1 involves (two steps of inverse iteration in
+    the equilibrated variables from a fixed generic vector): fields and frequencies of an
+    unsplit pencil's critical mode, which the block structure no longer shows."""
+    A0, A1 = _equilibrate(J0, J1)
+    lu = scipy.linalg.lu_factor(A0 + q * (1.0 + 1e-13) * A1, check_finite=False)  # beside q
+    x = np.random.default_rng(7).standard_normal(A0.shape[0])
+    for _ in range(2):
+        x = scipy.linalg.lu_solve(lu, x / np.abs(x).max(), check_finite=False)
+    return np.abs(x) > MODE_SUPPORT_TOL * np.abs(x).max()
 
 
 def _block_loads(J0: NDArray, J1: NDArray) -> tuple[NDArray[np.float64], float]:
@@ -539,10 +569,13 @@ def block_loads(N: int, nu: float, e_ratio: float, load: str, M: int,
     n = prob.n_field
     names = [*prob.fields]
     out, worst = [], 0.0
-    for rows, cols in blocks(J0, J1):
+    parts = blocks(J0, J1)
+    for rows, cols in parts:
         qs, w = _block_loads(J0[np.ix_(rows, cols)], J1[np.ix_(rows, cols)])
         worst = max(worst, w)
         pos = qs[qs > 0]
+        if len(parts) == 1 and pos.size:  # not split: the mode itself says what it involves
+            cols = cols[_mode_support(J0, J1, float(pos[0]))]
         fl = cols[cols < len(names) * n]
         freqs = tuple(sorted({int(prob.grid.freq[c % n]) for c in fl}))
         fields = tuple(sorted({names[c // n] for c in fl}, key=names.index))

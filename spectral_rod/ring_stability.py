@@ -528,11 +528,20 @@ def ring_critical_load(N: object, nu: object, *, e_ratio: object = 1.0,
     return ring_buckling(N, nu, e_ratio=e_ratio, load=load, tol=tol).load
 
 
-def _check_twists(twists: object) -> tuple[int, ...]:
+def _max_twist(method: str) -> int:
+    """The largest N the formulation `method` solves."""
+    if method == "munder":
+        from spectral_rod.ring_munder import MAX_TWIST
+
+        return MAX_TWIST
+    return MAX_SOLVER_TWIST
+
+
+def _check_twists(twists: object, maximum: int = MAX_SOLVER_TWIST) -> tuple[int, ...]:
     if isinstance(twists, (str, bytes)) or not hasattr(twists, "__iter__"):
         raise TypeError(f"twists must be a sequence of integers N >= 0 including 0, got "
                         f"{type(twists).__name__}")
-    out = tuple(check_twist_count(N, "twists", MAX_SOLVER_TWIST)
+    out = tuple(check_twist_count(N, "twists", maximum)
                 for N in twists)  # type: ignore[attr-defined]
     if 0 not in out or len(set(out)) < 2 or len(set(out)) != len(out):
         raise ValueError(f"twists must hold 0 and at least one N > 0, each once, got {out}")
@@ -581,9 +590,10 @@ def destabilisation_threshold(e_ratio: object, load: object, nus: object, *,
     True
     """
     e, ld = check_e_ratio(e_ratio), check_load(load)
-    grid, Ns = _check_nus(nus), _check_twists(twists)
-    xtol = check_real(xtol, "xtol", 1e-12, 1.0)
     method = check_choice(method, "method", RING_METHODS)
+    grid = _check_nus(nus)
+    Ns = _check_twists(twists, _max_twist(method))
+    xtol = check_real(xtol, "xtol", 1e-12, 1.0)
     known = _check_grid_loads(loads, (grid.size, len(Ns)))
 
     def gain(nu: float) -> float:

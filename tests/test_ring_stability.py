@@ -305,3 +305,12 @@ def test_destabilisation_threshold_validates(kwargs, exc, name):
     with pytest.raises(exc, match=name):
         destabilisation_threshold(args.pop("e_ratio"), args.pop("load"), args.pop("nus"),
                                   **args)
+
+
+def test_destabilisation_threshold_checks_twists_against_the_chosen_method() -> None:
+    from spectral_rod import destabilisation_threshold
+    from spectral_rod.ring_munder import MAX_TWIST
+
+    with pytest.raises(ValueError, match=rf"\[0, {MAX_TWIST}\]"):  # before any solve
+        destabilisation_threshold(1.0, "hydrostatic", [1.5, 2.0], twists=[0, MAX_TWIST + 1],
+                                  method="munder")

@@ -108,9 +108,11 @@ def report_section(claims: list[Claim], ev: RingEvidence, seconds: float,
              f"{E_RATIOS['isotropic']:.4f}) solved for both load models; every critical load "
              f"converged (largest change between the last two truncations {rel:.1e} relative, "
              f"frequencies ≤ {int(conv)}), and {len(ev.wide)} cases on the wide scan to ν = "
-             f"{max(WIDE_NUS):g}. Each ring is solved once per run: {ev.solves['distinct']} "
-             f"solves for {ev.solves['requested']} requests, and {witnesses} re-solves by Eqs. "
-             "Munder of the rings that decide two verdicts (the witnesses).", "",
+             f"{max(WIDE_NUS):g}. Each ring is solved once per run through one memo: "
+             f"{ev.solves['distinct']} solves for {ev.solves['requested']} requests (the ν* "
+             f"searches of `destabilisation_threshold` solve their own rings), and {witnesses} "
+             "rings re-solved by Eqs. Munder as witnesses (the decisive rings of two verdicts, "
+             "on the evidence of both load models and of each alone).", "",
              f"**Two formulations.** The second variation of the energy and the paper's "
              f"equilibrium equations Munder (linearised numerically) agree to "
              f"{ev.formulations['rel_diff'].max():.1e} (limit {FORMULATION_TOL:g}) on "
@@ -139,7 +141,7 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
     t0 = time.perf_counter()
     ev = compute_evidence(progress)
     claims = evaluate_claims(ev)
-    witnesses = ev.solve.cache_info().misses - ev.solves["distinct"] if ev.solve else 0
+    witnesses = len(ev.witnesses)
     progress("writing tables, figure and ledger rows")
     files = [write_csv(out / "ring_table.csv", ev.table),
              write_text(out / "ring_table.md", table_markdown(ev)),

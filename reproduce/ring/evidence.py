@@ -23,6 +23,7 @@ from spectral_rod import (
     RING_E_ISOTROPIC,
     RING_ISOTROPIC_POISSON,
     RING_LOADS,
+    RingConvergenceError,
     buckling_mode,
     crit2,
     derivation_status,
@@ -85,15 +86,22 @@ class RingEvidence:
     #: Set where the evidence of one load model stands under both labels
     #: (``rows.single_load_evidence``): re-solves use that model, whatever the label.
     load_override: str | None = None
+    #: The rings :meth:`munder_load` re-solved (shared by copies of this evidence).
+    witnesses: set[tuple[int, float, float, str]] = field(default_factory=set, repr=False,
+                                                          compare=False)
 
     def munder_load(self, N: int, nu: float, e_label: str, load: str) -> float:
         """q_cr of one ring by Eqs. Munder (the second formulation), solved once per run: a
-        verdict's decisive rings re-checked. NaN if this evidence has no solver."""
+        verdict's decisive rings re-checked. NaN if this evidence has no solver or the solve
+        does not converge (the witness's check then fails: "inconclusive")."""
         if self.solve is None:
             return math.nan
-        ring = self.solve(int(N), float(nu), E_RATIOS[e_label], self.load_override or load,
-                          "munder")
-        return float(ring.load)
+        ring = (int(N), float(nu), E_RATIOS[e_label], self.load_override or load)
+        self.witnesses.add(ring)
+        try:
+            return float(self.solve(*ring, "munder").load)
+        except RingConvergenceError:
+            return math.nan
 
 
 def memo_solver() -> Solve:

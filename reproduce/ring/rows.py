@@ -100,9 +100,9 @@ def _witness_check(what: str, second_variation: list[float], munder: list[float]
                    ) -> CrossCheck:
     """The decisive rings of a verdict re-solved by Eqs. Munder: the largest relative
     difference of their loads (NaN, a failed check, if they could not be re-solved)."""
-    diff = max(abs(m - q) / abs(q) for q, m in zip(second_variation, munder, strict=True))
-    return CrossCheck(f"witness: {what}, second variation vs Munder", float(diff),
-                      FORMULATION_TOL)
+    q, m = np.asarray(second_variation), np.asarray(munder)
+    diff = float(np.max(np.abs(m - q) / np.abs(q)))  # NaN (a failed check) if one is NaN
+    return CrossCheck(f"witness: {what}, second variation vs Munder", diff, FORMULATION_TOL)
 
 
 def _deviation_verdict(dev: float) -> str:
@@ -401,7 +401,7 @@ def _rate_witness(ev: RingEvidence, drops: dict[str, dict[float, float]],
     d_mu = [(mu[0] - mu[1]) / mu[0], (mu[2] - mu[3]) / mu[2]]
     check = _witness_check(f"q_cr at N = {ends[0]}, {ends[1]} for ν = {nus[i]:g}, "
                            f"{nus[i + 1]:g} ({label}, {load})", sv, mu)
-    grows_mu = bool(d_mu[1] > d_mu[0])
+    grows_mu = bool(d_mu[1] > d_mu[0]) if np.all(np.isfinite(d_mu)) else None
     return ((check,), grows_mu,
             f" Eqs. Munder at ν = {nus[i]:g} → {nus[i + 1]:g} ({key}): drop {d_mu[0]:+.3f} → "
             f"{d_mu[1]:+.3f}.")
