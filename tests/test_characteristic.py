@@ -5,7 +5,11 @@ from __future__ import annotations
 import mpmath as mp
 import pytest
 
-from spectral_rod.characteristic import characteristic_critical_load, determinant
+from spectral_rod.characteristic import (
+    characteristic_critical_load,
+    determinant,
+    family_critical_load,
+)
 
 
 def test_zero_twist_determinants_vanish_at_euler_loads():
@@ -35,3 +39,21 @@ def test_small_twist_matches_its_limit():
     # p* - 1 = O(Omega^2): continuous at zero twist (the removable singularity is handled)
     r = characteristic_critical_load(1e-4, 1.5)
     assert 0 < float(r.p_star) - 1 < 1e-6
+
+
+def test_family_double_batch_gives_each_familys_lowest_root():
+    """Both families, the higher one too, against the mpmath sign scan of each family (20
+    digits, its default finer step): one batch call, points spread over Figure 1's range and
+    beyond (1.1 <= nu <= 10), including near the family crossings 2 pi and 3 pi."""
+    import numpy as np
+
+    from spectral_rod.characteristic import family_double_batch
+
+    rng = np.random.default_rng(11)
+    tw = np.concatenate([rng.uniform(0.1, 20.0, 12), [6.275, 2 * np.pi + 1e-3, 9.43]])
+    nu = np.concatenate([rng.uniform(1.1, 10.0, 12), [1.3, 1.5, 1.5]])
+    p_sym, p_anti = family_double_batch(tw, nu)
+    for i in range(tw.size):
+        for fam, got in (("symmetric", p_sym[i]), ("antisymmetric", p_anti[i])):
+            ref = float(family_critical_load(fam, float(tw[i]), float(nu[i]), dps=20).p_star)
+            assert got == pytest.approx(ref, rel=1e-12), (fam, tw[i], nu[i])

@@ -121,6 +121,22 @@ def test_best_model_count_recomputed_from_its_rule(fx, points, truth):
     assert (ok == fx.points["ok"].to_numpy()).all()
 
 
+def test_best_model_is_the_same_under_exact_binary_rounding(fx, points):
+    """quantisation.printed rounds half away from 0 in decimal (a tie like 18.975, stored as
+    18.97499..., goes up); rounding the stored double exactly (Decimal, half up) is the other
+    convention. The best model must reproduce the same points under both."""
+    from decimal import ROUND_HALF_UP, Decimal
+
+    def exact(v: float) -> int:
+        return int((Decimal(v) * 100).quantize(Decimal(1), rounding=ROUND_HALF_UP))
+
+    y_model = fx.points["y_model"].to_numpy()
+    picture = [int(Decimal(str(v)) * 100) for v in points["picture_y"]]
+    ok = np.array([math.isfinite(m) and exact(float(m)) == q
+                   for m, q in zip(y_model, picture, strict=True)])
+    assert (ok == fx.points["ok"].to_numpy()).all()
+
+
 def test_every_point_is_accounted_for(fx):
     assert len(fx.unaccounted()) == 0
     assert all(c["explained"] for c in fx.clusters)

@@ -376,7 +376,7 @@ def explain_cluster(rows: pd.DataFrame, left: pd.Series | None, right: pd.Series
 
 
 def explain_missing(row: pd.Series, sites: pd.DataFrame, runs: dict[str, Hypothesis],
-                    off_runs: list[dict] | None = None, grid_step: float | None = None) -> dict:
+                    off_runs: list[dict], grid_step: float | None = None) -> dict:
     """Why a regular grid point is absent: its computed causes, and the same twist elsewhere.
 
     row: the missing site (columns of :func:`site_physics`); sites: all sites (for the other
@@ -401,7 +401,7 @@ def explain_missing(row: pd.Series, sites: pd.DataFrame, runs: dict[str, Hypothe
                  f"{'reproduced' if o['ok'] else 'not reproduced'} by the best model (its roots "
                  f"p_sym = {o['p_sym']:.7f}, p_anti = {o['p_anti']:.7f} lie "
                  f"{'in one step' if o['double_root'] else 'in different steps'}). ")
-    gap = next((r for r in off_runs or [] if r["left"] < x < r["right"]), None)
+    gap = next((r for r in off_runs if r["left"] < x < r["right"]), None)
     if gap:
         text += (f"The picture has {gap['count']} off-grid points of this curve in the gap "
                  f"between the grid points x = {gap['left']:.2f} and {gap['right']:.2f} that "
