@@ -104,6 +104,7 @@ _EXPORTS = {
     "RING_E_ISOTROPIC": "ring_munder:E_ISOTROPIC",
     "RING_ISOTROPIC_POISSON": "ring_munder:ISOTROPIC_POISSON",
     "ring_formulation_agreement": "ring_munder",
+    "ring_formulation_row": "ring_munder:formulation_row",
     "munder_base_residual": "ring_munder:base_residual",
     "RING_AGREEMENT_CASES": "ring_munder:AGREEMENT_CASES",
     "homogenised_limit": "ring_closed_forms", "in_plane_untwisted": "ring_closed_forms",

@@ -97,7 +97,7 @@ from numpy.typing import NDArray
 from spectral_rod._validation import check_bool, check_choice, check_int, check_real
 from spectral_rod.errors import ConvergenceWarning, RingConvergenceError
 from spectral_rod.ring_formula import check_e_ratio, check_scalar_nu, check_twist_count
-from spectral_rod.ring_stability import check_load, refine, stiffnesses
+from spectral_rod.ring_stability import RingBuckling, check_load, refine, stiffnesses
 
 #: Residual systems: the paper's Eq. ``Munder`` or the Kirchhoff vector balances.
 EQUATIONS = ("munder", "kirchhoff")
@@ -624,8 +624,13 @@ def _truncations(N: int) -> list[int]:
     return [2 * N + 8 + k * step for k in range(8)]
 
 
+#: The tol range of this formulation's truncation loop (one decade above the second
+#: variation's TOL_RANGE: its loads come from QZ eigenvalues of a larger, equilibrated pencil).
+TOL_RANGE = (1e-13, 1e-2)
+
+
 def _check_tol(tol: object) -> float:
-    return check_real(tol, "tol", 1e-13, 1e-2)
+    return check_real(tol, "tol", *TOL_RANGE)
 
 
 def munder_buckling(N: object, nu: object, *, e_ratio: object = 1.0,
@@ -749,11 +754,22 @@ def ring_formulation_agreement(cases: Iterable[Mapping[str, object] | tuple] = A
         t1 = time.perf_counter()
         mb = munder_buckling(N, nu, e_ratio=e, load=ld, tol=tol)
         t2 = time.perf_counter()
-        rows.append({"N": mb.N, "nu": mb.nu, "e_ratio": mb.e_ratio, "load": mb.load_model,
-                     "q_galerkin": ref.load, "q_munder": mb.load,
-                     "rel_diff": abs(mb.load - ref.load) / abs(ref.load),
-                     "kind_galerkin": ref.kind, "kind_munder": mb.kind,
-                     "max_frequency": mb.max_frequency, "n_unknowns": mb.n_unknowns,
-                     "galerkin_max_frequency": ref.max_frequency,
-                     "t_galerkin": t1 - t0, "t_munder": t2 - t1})
+        rows.append({**formulation_row(ref, mb), "t_galerkin": t1 - t0, "t_munder": t2 - t1})
     return rows
+
+
+def formulation_row(ref: RingBuckling, mb: MunderBuckling) -> dict[str, object]:
+    """One case of :func:`ring_formulation_agreement` (without its timings) from the two
+    formulations' results of one ring."""
+    if not (isinstance(ref, RingBuckling) and isinstance(mb, MunderBuckling)):
+        raise TypeError(f"formulation_row takes a RingBuckling and a MunderBuckling, got "
+                        f"{type(ref).__name__} and {type(mb).__name__}")
+    if (ref.N, ref.nu, ref.e_ratio) != (mb.N, mb.nu, mb.e_ratio):
+        raise ValueError(f"formulation_row: the two results are of different rings "
+                         f"({ref.N}, {ref.nu}, {ref.e_ratio}) and ({mb.N}, {mb.nu}, {mb.e_ratio})")
+    return {"N": mb.N, "nu": mb.nu, "e_ratio": mb.e_ratio, "load": mb.load_model,
+            "q_galerkin": ref.load, "q_munder": mb.load,
+            "rel_diff": abs(mb.load - ref.load) / abs(ref.load),
+            "kind_galerkin": ref.kind, "kind_munder": mb.kind,
+            "max_frequency": mb.max_frequency, "n_unknowns": mb.n_unknowns,
+            "galerkin_max_frequency": ref.max_frequency}

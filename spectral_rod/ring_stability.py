@@ -73,6 +73,7 @@ import scipy.optimize
 from numpy.typing import NDArray
 
 from spectral_rod._validation import (
+    TOL_RANGE,
     check_bool,
     check_choice,
     check_int,
@@ -472,7 +473,7 @@ def ring_buckling(N: object, nu: object, *, e_ratio: object = 1.0, load: object 
     fields = SUBSPACES[check_choice(subspace, "subspace", tuple(SUBSPACES))]
     if max_frequency is not None:
         max_frequency = check_int(max_frequency, "max_frequency", 4, 2000)
-    tol = check_real(tol, "tol", 1e-14, 1e-2)
+    tol = check_real(tol, "tol", *TOL_RANGE)
     raise_on_failure = check_bool(raise_on_failure, "raise_on_failure")
 
     def solve(M: int) -> tuple[tuple[FamilySolution, int, float], float]:
@@ -514,8 +515,8 @@ def ring_critical_load(N: object, nu: object, *, e_ratio: object = 1.0,
     (force -q e_r at the displaced point: horizontal, toward the ring's axis); see the module
     docstring. ``method``: one of :data:`RING_METHODS` (two formulations that share no hand
     derivation). Raises :class:`spectral_rod.RingConvergenceError` if not converged to ``tol``:
-    ``tol`` in [1e-14, 1e-2] for "second-variation", [1e-13, 1e-2] for "munder" (each
-    method's range; outside it a ValueError names it).
+    ``tol`` in :data:`spectral_rod._validation.TOL_RANGE` for "second-variation",
+    :data:`spectral_rod.ring_munder.TOL_RANGE` for "munder" (outside it a ValueError names it).
     Use :func:`ring_buckling` for the mode, its kind and the convergence record.
 
     >>> round(ring_critical_load(0, 1.0), 12)   # untwisted circular ring: out of plane, 2

@@ -425,6 +425,7 @@ EXEMPT = {
     "crossing_wavenumbers": "takes a FamilyCrossing; covered by test_exempt_calls",
     "figure1_picture": "no arguments",
     "inst1_variant_table": "no arguments (~4 s); tested in test_derivation_straight_rod",
+    "ring_formulation_row": "takes two solver results; covered by test_exempt_calls",
 }
 
 
@@ -448,3 +449,9 @@ def test_exempt_calls():
     with pytest.raises(TypeError, match="points"):
         sr.analyse_figure1("table")
     assert finite(sr.characteristic_mode(root, 5.0, 1.5, points=11).x1)
+    ring, munder = sr.ring_buckling(1, 1.5), sr.munder_buckling(1, 1.5)
+    with pytest.raises(TypeError, match="RingBuckling"):
+        sr.ring_formulation_row(munder, ring)
+    with pytest.raises(ValueError, match="different rings"):
+        sr.ring_formulation_row(sr.ring_buckling(2, 1.5), munder)
+    assert sr.ring_formulation_row(ring, munder)["rel_diff"] < 1e-9

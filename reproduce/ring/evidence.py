@@ -36,6 +36,7 @@ from spectral_rod import (
     rectangle_torsion_ratio,
     ring_buckling,
     ring_formula_load,
+    ring_formulation_row,
     threshold_twist,
 )
 
@@ -186,16 +187,8 @@ def formulation_rows(solve: Solve) -> pd.DataFrame:
     """The two formulations (second variation, Munder) on :data:`AGREEMENT_CASES`: the columns
     of :func:`spectral_rod.ring_formulation_agreement` (without its timings), from this run's
     solves (the second-variation ones are table rings)."""
-    rows = []
-    for N, nu, e, load in AGREEMENT_CASES:
-        ref, mb = solve(N, nu, e, load), solve(N, nu, e, load, "munder")
-        rows.append({"N": N, "nu": nu, "e_ratio": e, "load": load,
-                     "q_galerkin": ref.load, "q_munder": mb.load,
-                     "rel_diff": abs(mb.load - ref.load) / abs(ref.load),
-                     "kind_galerkin": ref.kind, "kind_munder": mb.kind,
-                     "max_frequency": mb.max_frequency, "n_unknowns": mb.n_unknowns,
-                     "galerkin_max_frequency": ref.max_frequency})
-    return pd.DataFrame(rows)
+    return pd.DataFrame([ring_formulation_row(solve(*case), solve(*case, "munder"))
+                         for case in AGREEMENT_CASES])
 
 
 def wide_rows(solve: Solve, progress: Callable[[str], None] = lambda _m: None) -> pd.DataFrame:
@@ -214,7 +207,7 @@ def wide_rows(solve: Solve, progress: Callable[[str], None] = lambda _m: None) -
 
 
 def boundary_rows(wide: pd.DataFrame) -> pd.DataFrame:
-    """Per e and load: the nu above which some twist N = 1..10 raises q_cr
+    """Per e and load: the nu above which some twist N = 1..WIDE_TWISTS[-1] raises q_cr
     (:func:`spectral_rod.destabilisation_threshold` on the wide scan's loads)."""
     rows = []
     for (label, load), g in wide.groupby(["e_label", "load"], sort=False):

@@ -56,6 +56,16 @@ FORMULATION_TOL = 1.0e-6
 #: The smallest eigenvalue 1/q of the Jacobi-scaled pencil (G x = mu K x) is zero to round-off,
 #: a few eps in magnitude; below -1e-12 it is a real eigenvalue at q <= 0, not round-off.
 ZERO_INVERSE_LOAD_TOL = 1.0e-12
+#: Closed forms of the untwisted ring vs the solver: both exact to ~1e-12, so 1e-9 (EXACT_TOL).
+CLOSED_FORM_TOL = EXACT_TOL
+#: A planar mode measures at round-off (the Euler mode: < 1e-12), so a non-planarity above
+#: this is the mode's, not the solver's.
+NON_PLANAR = 1.0e-3
+#: Munder vs Kirchhoff's balances: both converged to 1e-10 (Munder's default tol), so 10x that
+#: is agreement to their accuracy.
+EQUATIONS_TOL = 1.0e-9
+#: The loaded circle's residual in Eqs. Munder: zero to round-off of O(1) terms.
+RESIDUAL_TOL = 1.0e-12
 #: "holds approximately" for a 3-D character if at least 9 in 10 critical modes are coupled: the
 #: statement is then true of the twisted ring in general, with isolated exceptions.
 COUPLED_MOSTLY = 0.9
@@ -267,7 +277,7 @@ def measure_in_out(ev: RingEvidence) -> Measured:
                  f"torsional stiffnesses, 9A/4 = {sup_out:.4f}, {reach}. Solver vs closed "
                  f"forms: {closed:.1e}.",
         cross_checks=(CrossCheck("untwisted ring: solver vs classical closed forms", closed,
-                                 1e-9),))
+                                 CLOSED_FORM_TOL),))
 
 
 def _series(ev_wide, label: str, load: str):
@@ -332,8 +342,8 @@ def _typical_shape(ev: RingEvidence, nu: float) -> str:
     q, waves = g["q_hydrostatic"].to_numpy(), g["wavenumber_hydrostatic"].to_numpy()
     k = int(np.argmin(q))
     lim = homogenised_limit(nu, 1.0, "hydrostatic")
-    after = (f"then rising monotonically to q(10) = {q[-1]:.4f} (the N → ∞ limit, harmonic-mean "
-             f"stiffness: {lim:.4f})" if k < q.size - 1 and np.all(np.diff(q[k:]) > 0)
+    after = (f"then rising monotonically to q({TWISTS[-1]}) = {q[-1]:.4f} (the N → ∞ limit, "
+             f"harmonic-mean stiffness: {lim:.4f})" if k < q.size - 1 and np.all(np.diff(q[k:]) > 0)
              else "not rising monotonically after it")
     resonance = " (N equals the mode's wavenumber: the resonance n = 2N − n)" if k == waves[k] \
         else ""
@@ -345,7 +355,7 @@ def _typical_shape(ev: RingEvidence, nu: float) -> str:
 RATE = ClaimSpec(
     id="ring-rate-grows-with-nu", section="Sec. 'Conclusions'",
     claim="The rate of the decrease (of the ring's critical force with twist) grows with ν.",
-    test=f"Relative drop (q(0) − q(10))/q(0) of the converged load for ν ∈ "
+    test=f"Relative drop (q(0) − q({WIDE_TWISTS[-1]}))/q(0) of the converged load for ν ∈ "
          f"{{{', '.join(f'{v:g}' for v in WIDE_NUS)}}}, both e and load models: is it increasing "
          "in ν?",
     methods=(SECOND_VARIATION, MUNDER), shared_checks=True,
@@ -373,7 +383,7 @@ def measure_rate(ev: RingEvidence) -> Measured:
         numbers={"relative_drop_0_to_10": drops, "drop_grows_with_nu": grows,
                  "fewest_nus": min((len(v) for v in drops.values()), default=0),
                  "munder_witness_grows": witness_grows},
-        evidence="Relative drop q(0)→q(10) by ν (e = 1, hydrostatic): "
+        evidence=f"Relative drop q(0)→q({WIDE_TWISTS[-1]}) by ν (e = 1, hydrostatic): "
                  + ", ".join(f"{nu:g}: {v:+.3f}" for nu, v in h.items())
                  + "; grows with ν: " + ", ".join(f"{k} {v}" for k, v in grows.items())
                  + ". " + _drop_sign_text(drops) + "." + witness,
@@ -412,7 +422,7 @@ def _drop_sign_text(drops: dict[str, dict[float, float]]) -> str:
     parts = []
     for key, d in drops.items():
         rising = [nu for nu, v in d.items() if v < 0]
-        parts.append(f"{key}: a rise (q(10) > q(0)) from ν = {min(rising):g} on"
+        parts.append(f"{key}: a rise (q({WIDE_TWISTS[-1]}) > q(0)) from ν = {min(rising):g} on"
                      if rising else f"{key}: a drop at every ν")
     return "; ".join(parts)
 
@@ -532,7 +542,8 @@ DESTABILISES = ClaimSpec(
     claim="Spontaneous twist destabilises the ring (the opposite of its effect on the straight "
           "rod).",
     test=f"Converged q_cr(N) against q_cr(0) for ν ∈ {{{', '.join(f'{v:g}' for v in WIDE_NUS)}}}, "
-         "N = 1..10, e = 1 and isotropic, for each load model (the paper says both 'radially "
+         f"N = 1..{WIDE_TWISTS[-1]}, e = 1 and isotropic, for each load model (the paper says "
+         "both 'radially "
          "inward force' and 'pressure'); the ν above which some twist raises q_cr (Brent); the "
          "N → ∞ limit (isotropic ring of harmonic-mean stiffness 2A₁A₂/(A₁+A₂)).",
     methods=(SECOND_VARIATION, CLASSICAL), shared_checks=True,
@@ -636,13 +647,12 @@ INTRO_3D = ClaimSpec(
          f"{ROD_MODE_CASE[0]:g}, ν = {ROD_MODE_CASE[1]:g} (buckling_mode); ring: the coupled "
          "share of the critical modes (ring-three-dimensional).",
     methods=(ROD, SECOND_VARIATION), shared_checks=True,
-    # 1e-3: a planar mode measures at round-off (the Euler mode: < 1e-12), so any value above
-    # it is the mode's, not the solver's
-    rule=Rule("holds if the rod's mode is non-planar (> 1e-3) and every twisted ring mode is "
+    rule=Rule(f"holds if the rod's mode is non-planar (> {NON_PLANAR:g}) and every twisted "
+              "ring mode is "
               "coupled; holds approximately if the ring's modes are coupled in ≥ "
               f"{COUPLED_MOSTLY:.0%} of the cases; fails otherwise; inconclusive if no twisted "
               "ring mode was solved",
-              lambda n: "fails" if not n["rod_non_planarity"] > 1e-3 else
+              lambda n: "fails" if not n["rod_non_planarity"] > NON_PLANAR else
               "inconclusive" if n["ring_n_modes"] == 0 else
               "holds" if n["ring_coupled_fraction"] == 1.0 else
               "holds approximately" if n["ring_coupled_fraction"] >= COUPLED_MOSTLY else "fails"),
@@ -879,10 +889,9 @@ MUNDER_ROW = ClaimSpec(
          "rod: Munder linearised gives inst1, which the energy's Euler-Lagrange equations also "
          "give (eq-inst1).",
     methods=(MUNDER, KIRCHHOFF, SECOND_VARIATION, SYMPY_STRAIGHT), shared_checks=True,
-    # 1e-9: both are converged to 1e-10 (Munder's tol), so 10x that is agreement to accuracy
-    rule=Rule("holds if Munder agrees with Kirchhoff's balances to 1e-9 and the straight-rod "
-              "linearisation reproduces inst1; fails otherwise",
-              lambda n: "holds" if n["munder_vs_kirchhoff"] <= 1e-9
+    rule=Rule(f"holds if Munder agrees with Kirchhoff's balances to {EQUATIONS_TOL:g} and the "
+              "straight-rod linearisation reproduces inst1; fails otherwise",
+              lambda n: "holds" if n["munder_vs_kirchhoff"] <= EQUATIONS_TOL
               and n["straight_rod_derivation"] == "all steps checked" else "fails"),
     related=("eq-inst1", "ring-two-formulations", "ring-hoop-force"))
 
@@ -909,9 +918,9 @@ HOOP = ClaimSpec(
          "load models (ring_munder); the sympy ring derivation's step 2 (Munder at the "
          "stress-free state gives F_t = −qR₀).",
     methods=(MUNDER, SYMPY_RING),
-    rule=Rule("holds if the residual is below 1e-12 and the derivation's checks pass; fails "
-              "otherwise",
-              lambda n: "holds" if n["base_residual"] <= 1e-12
+    rule=Rule(f"holds if the residual is below {RESIDUAL_TOL:g} and the derivation's checks "
+              "pass; fails otherwise",
+              lambda n: "holds" if n["base_residual"] <= RESIDUAL_TOL
               and n["ring_derivation"] == "all steps checked" else "fails"),
     related=("eq-munder",))
 
