@@ -97,6 +97,8 @@ SCAN_MARGIN = 1e-6
 #: Omega(L) in [50, 1000], nu in [1, 100]: 33/65/129/257 -> 36/30/30/34 us a point.
 DOUBLE_CHUNK = 129
 _EPS = float(np.finfo(float).eps)
+#: The precisions of :func:`determinants` (those of :func:`entire_cs_double`).
+_DTYPES = (np.dtype(np.float64), np.dtype(np.float32))
 
 
 def entire_cs(x: mp.mpf, t: mp.mpf | None = None) -> tuple[mp.mpf, mp.mpf]:
@@ -156,15 +158,41 @@ def determinant(family: str, lam: mp.mpf, om: mp.mpf, nu: mp.mpf) -> mp.mpf:
     return combine_determinant(family, lam, mu, om**2, roots, cs)
 
 
-def determinants(p: ArrayLike, twist_angle: ArrayLike, nu: ArrayLike
-                 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """(D_sym, D_anti) in double precision at lambda = pi^2 p (p, twist_angle, nu broadcast)."""
-    lam = np.pi**2 * np.asarray(p, dtype=float)
-    om = np.asarray(twist_angle, dtype=float)
-    mu = lam / np.asarray(nu, dtype=float)
+def determinants(p: ArrayLike, twist_angle: ArrayLike, nu: ArrayLike, *,
+                 dtype: type = np.float64, real_wavenumbers: bool = False
+                 ) -> tuple[NDArray[np.floating], NDArray[np.floating]]:
+    """(D_sym, D_anti) at lambda = pi^2 p (p, twist_angle, nu broadcast), in `dtype`.
+
+    dtype: np.float64 (the production route) or np.float32 (single precision, every operation
+    in it). real_wavenumbers: sqrt(X) taken in real arithmetic, NaN where X < 0 beyond the
+    rounding level of X (as a program written in terms of real beta_k would compute it: an X
+    that is zero in exact arithmetic is not counted); otherwise continued to cosh, sinh/kappa.
+    D_sym changes sign across the symmetric root p = 1.0024446 at Omega = 0.5, nu = 1.5, in
+    either precision; at Omega = 3, nu = 1.5, p = 1 (beta_1 imaginary) only the continuation
+    has a value:
+
+    >>> d_sym, _ = determinants([1.002, 1.003], 0.5, 1.5)
+    >>> d_sym32, _ = determinants([1.002, 1.003], 0.5, 1.5, dtype=np.float32)
+    >>> np.sign(d_sym).tolist(), d_sym32.dtype, np.sign(d_sym32).tolist()
+    ([1.0, -1.0], dtype('float32'), [1.0, -1.0])
+    >>> [bool(np.isnan(determinants(1.0, 3.0, 1.5, real_wavenumbers=r)[0])) for r in (0, 1)]
+    [False, True]
+    """
+    if np.dtype(dtype) not in _DTYPES:
+        raise ValueError(f"dtype must be np.float64 or np.float32, got {dtype!r}")
+    t = np.dtype(dtype).type
+    lam = t(np.pi**2) * np.asarray(p, dtype=dtype)
+    om = np.asarray(twist_angle, dtype=dtype)
+    mu = lam / np.asarray(nu, dtype=dtype)
+    om2 = om * om
     roots = characteristic_roots(lam, mu, om)
     cs = (entire_cs_double(roots[0]), entire_cs_double(roots[1]))
-    return tuple(combine_determinant(f, lam, mu, om * om, roots, cs)  # type: ignore[return-value]
+    if real_wavenumbers:
+        # rounding level of X: X_- = 0 exactly where a scan of lambda - nu Omega^2 starts
+        zero = 64 * np.finfo(dtype).eps * (lam + om2)
+        cs = tuple((np.where(x < -zero, np.nan, c), np.where(x < -zero, np.nan, s))
+                   for x, (c, s) in zip(roots, cs, strict=True))
+    return tuple(combine_determinant(f, lam, mu, om2, roots, cs)  # type: ignore[return-value]
                  for f in FAMILIES)
 
 

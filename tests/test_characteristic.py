@@ -57,3 +57,31 @@ def test_family_double_batch_gives_each_familys_lowest_root():
         for fam, got in (("symmetric", p_sym[i]), ("antisymmetric", p_anti[i])):
             ref = float(family_critical_load(fam, float(tw[i]), float(nu[i]), dps=20).p_star)
             assert got == pytest.approx(ref, rel=1e-12), (fam, tw[i], nu[i])
+
+
+def test_double_determinants_follow_mpmath_in_both_precisions():
+    """The one double-precision kernel against the mpmath determinant: float64 to round-off,
+    float32 to its own precision, and real wavenumbers NaN exactly where beta_1 is imaginary
+    (X_- < 0 well beyond rounding), the same values elsewhere."""
+    import numpy as np
+
+    from spectral_rod.characteristic import determinants
+    from spectral_rod.wavenumbers import characteristic_roots
+
+    p, om, nu = np.linspace(0.8, 1.6, 17), 3.0, 1.5  # beta_1 imaginary for 0.912 < p < 1.368
+    with mp.workdps(30):
+        ref = np.array([[float(determinant(f, mp.pi**2 * mp.mpf(float(v)), mp.mpf(om),
+                                           mp.mpf(nu))) for v in p]
+                        for f in ("symmetric", "antisymmetric")])
+    scale = np.abs(ref).max()
+    for dtype, tol in ((np.float64, 1e-13), (np.float32, 1e-5)):
+        got = np.array(determinants(p, om, nu, dtype=dtype))
+        assert got.dtype == dtype and np.abs(got - ref).max() < tol * scale
+    lam = np.pi**2 * p
+    imaginary = characteristic_roots(lam, lam / nu, om)[0] < -1e-9
+    assert imaginary.any() and (~imaginary).any()
+    real = np.array(determinants(p, om, nu, real_wavenumbers=True))
+    assert (np.isnan(real).all(axis=0) == imaginary).all()
+    assert (real[:, ~imaginary] == np.array(determinants(p, om, nu))[:, ~imaginary]).all()
+    with pytest.raises(ValueError, match="dtype"):
+        determinants(p, om, nu, dtype=np.float16)

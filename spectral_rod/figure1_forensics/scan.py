@@ -11,16 +11,10 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from spectral_rod.characteristic import (
-    SCAN_MARGIN,
-    SCAN_START,
-    combine_determinant,
-    entire_cs_double,
-)
+from spectral_rod.characteristic import SCAN_MARGIN, SCAN_START, determinants
 from spectral_rod.families import p_star_bounds
 from spectral_rod.figure1_forensics.quantisation import VARIABLES, Variable
 from spectral_rod.figure_data import picture_y_from_p_star
-from spectral_rod.wavenumbers import characteristic_roots
 
 #: How each report rule of :meth:`ScanResult.report` reads in words.
 RULE_WORDS = {"upper": "the bracket's upper end", "lower": "the bracket's lower end",
@@ -34,39 +28,25 @@ RULE_BANDS = {"upper": (0.0, 1.0), "lower": (-1.0, 0.0), "midpoint": (-0.5, 0.5)
 
 def determinant_product(p: NDArray[np.float64], twist: float, nu: float, *,
                         real_wavenumbers: bool = False, dtype: type = np.float64
-                        ) -> NDArray:
+                        ) -> NDArray[np.floating]:
     """D_sym D_anti at lambda = pi^2 p: the sign of the paper's 4x4 boundary determinant.
 
     The 4x4 determinant equals 16 Omega^2 D_sym D_anti
     (:func:`spectral_rod.closed_form.boundary_determinant_4x4`), so at fixed Omega != 0 it
-    changes sign exactly where the product does. The formulas of
-    :func:`spectral_rod.characteristic.determinants` (the same
-    :func:`~spectral_rod.characteristic.entire_cs_double`), evaluated in `dtype` (np.float64 or
-    np.float32, to test single precision). real_wavenumbers: sqrt(X) taken in real arithmetic,
-    NaN where X < 0 beyond the rounding level of X (as a program written in terms of real beta_k
-    would compute it: an X that is zero in exact arithmetic is not counted); otherwise continued
-    to cosh, sinh/kappa. The sign changes across the root p* = 1.0024446 at Omega = 0.5,
-    nu = 1.5:
+    changes sign exactly where the product does. The factors are
+    :func:`spectral_rod.characteristic.determinants` with its `real_wavenumbers` and `dtype`
+    (np.float64 or np.float32, to test single precision). The sign changes across the root
+    p* = 1.0024446 at Omega = 0.5, nu = 1.5:
 
     >>> np.sign(determinant_product(np.array([1.002, 1.003]), 0.5, 1.5)).tolist()
     [-1.0, 1.0]
     """
-    t = np.dtype(dtype).type
-    lam = t(np.pi**2) * np.asarray(p, dtype=dtype)
-    om2, nu_t = t(twist) ** 2, t(nu)
-    mu = lam / nu_t
-    xm, xp = characteristic_roots(lam, mu, t(twist))
-    # rounding level of X: X_- = 0 exactly where the scan of lambda - nu Omega^2 starts
-    zero = 64 * np.finfo(lam.dtype).eps * (lam + om2)
-    cs = []
-    for x in (xm, xp):
-        with np.errstate(over="ignore"):
-            c, s = entire_cs_double(x)
-        if real_wavenumbers:
-            c, s = np.where(x < -zero, np.nan, c), np.where(x < -zero, np.nan, s)
-        cs.append((c.astype(lam.dtype), s.astype(lam.dtype)))
-    return (combine_determinant("symmetric", lam, mu, om2, (xm, xp), tuple(cs))
-            * combine_determinant("antisymmetric", lam, mu, om2, (xm, xp), tuple(cs)))
+    # a scan may step far from the roots, where cosh overflows (soonest in single precision):
+    # an infinite value never closes a bracket (_scan_one), so the warning says nothing
+    with np.errstate(over="ignore"):
+        d_sym, d_anti = determinants(p, twist, nu, dtype=dtype,
+                                     real_wavenumbers=real_wavenumbers)
+    return d_sym * d_anti
 
 
 @dataclass
