@@ -37,6 +37,8 @@ from reproduce.ledger import (
     update_ledger,
 )
 from spectral_rod import (
+    CLUSTER_DOUBLE_ROOT,
+    CLUSTER_WINDOW,
     FIGURE1_DOT,
     FIGURE1_NU,
     FIGURE1_PRINT_QUANTUM,
@@ -201,7 +203,7 @@ def cross_links(fx: Forensics) -> list[str]:
     """Straight-rod ledger rows the clusters and missing points bear on."""
     links = set()
     for rec in [*fx.clusters, *fx.missing_points]:
-        if rec.get("kind") == "imaginary-beta1 window" or "imaginary beta_1" in rec.get(
+        if rec.get("kind") == CLUSTER_WINDOW or "imaginary beta_1" in rec.get(
                 "causes", []):
             links.add("rod-beta-real")
         if rec.get("crossing"):
@@ -223,12 +225,12 @@ def _group_phrase(g: dict) -> str:
     """One kind of cluster in words (every number from :meth:`Forensics.cluster_groups`)."""
     off = f"up to {g['max_abs_deviation']:.1e} off"
     n = g["points"]
-    if g["kind"] == "imaginary-beta1 window":
+    if g["kind"] == CLUSTER_WINDOW:
         lines = "" if g["sloped_line"] == n else (f", {g['sloped_line']} of them on straight "
                                                   f"lines between the flanking computed points")
         return (f"{'straight lines ' if g['sloped_line'] == n else ''}across the imaginary-β₁ "
                 f"window ({n} points{lines}, {off})")
-    if g["kind"] == "double root in one scan step":
+    if g["kind"] == CLUSTER_DOUBLE_ROOT:
         ns = "/".join(f"{k}π" for k in g["crossings"])
         flat = "" if g["flat"] == n else f", {g['flat']} of them printed flat"
         return (f"{'flat values ' if g['flat'] == n else ''}at the {ns} crossing where both "
@@ -274,7 +276,7 @@ def readme_sentence(fx: Forensics) -> str:
     if crossed:
         miss = "; ".join(f"Ω = {m['twist_angle']:.3f} (ν = {m['nu']})" for m in crossed)
         miss_n = "/".join(sorted({f"{m['crossing']['n']}π" for m in crossed}))
-        why = ("For the same reason" if any(g["kind"] == "double root in one scan step"
+        why = ("For the same reason" if any(g["kind"] == CLUSTER_DOUBLE_ROOT
                                             for g in groups)
                else "Where both mode families' roots fall in one scan step")
         s += f" {why} at the {miss_n} crossing no value was printed at {miss}."

@@ -113,6 +113,8 @@ _EXPORTS = {
     "figure1_picture": "figure_data",
     "Forensics": "figure1_forensics", "analyse_figure1": "figure1_forensics",
     "picture_lines": "figure1_forensics",
+    "CLUSTER_KINDS": "figure1_forensics", "CLUSTER_WINDOW": "figure1_forensics",
+    "CLUSTER_DOUBLE_ROOT": "figure1_forensics",
     "FIGURE1_DOT": "figure_data:DOT_DIAMETER",
     "FIGURE1_PRINT_QUANTUM": "figure_data:PICTURE_STEP",
     "FIGURE1_Y_PER_P": "figure_data:Y_PER_P",

@@ -65,6 +65,12 @@ from __future__ import annotations
 
 from spectral_rod.figure1_forensics.analysis import Forensics, analyse_figure1
 from spectral_rod.figure1_forensics.explain import (
+    CLUSTER_DOUBLE_ROOT,
+    CLUSTER_EDITED,
+    CLUSTER_KINDS,
+    CLUSTER_NO_SIGN_CHANGE,
+    CLUSTER_UNEXPLAINED,
+    CLUSTER_WINDOW,
     explain_cluster,
     explain_missing,
     site_physics,
@@ -94,6 +100,12 @@ from spectral_rod.figure1_forensics.runs import MERGE_GAP, find_runs, fit_switch
 from spectral_rod.figure1_forensics.scan import ScanResult, determinant_product, scan_sign_change
 
 __all__ = [
+    "CLUSTER_DOUBLE_ROOT",
+    "CLUSTER_EDITED",
+    "CLUSTER_KINDS",
+    "CLUSTER_NO_SIGN_CHANGE",
+    "CLUSTER_UNEXPLAINED",
+    "CLUSTER_WINDOW",
     "MERGE_GAP",
     "Forensics",
     "Hypothesis",

@@ -15,6 +15,7 @@ from spectral_rod._validation import real_array
 from spectral_rod.asymptotics import crossing_closed_form, imaginary_beta1_window
 from spectral_rod.critical import critical_load
 from spectral_rod.figure1_forensics.explain import (
+    CLUSTER_KINDS,
     explain_cluster,
     explain_missing,
     site_physics,
@@ -40,9 +41,6 @@ from spectral_rod.figure_data import FIGURE1_NU, PICTURE_STEP, Y_PER_P, twist_fr
 
 #: Tolerance of the default converged p* (:func:`spectral_rod.critical_load`).
 P_STAR_TOL = 1e-12
-#: Cluster kinds (:func:`spectral_rod.figure1_forensics.explain_cluster`) in report order.
-CLUSTER_KINDS = ("imaginary-beta1 window", "double root in one scan step", "no sign change",
-                 "edited lines", "unexplained")
 
 
 def _default_p_star(twist: NDArray, nu: NDArray) -> NDArray:

@@ -29,6 +29,13 @@ from spectral_rod.figure_data import PICTURE_STEP, X_PER_TWIST, picture_y_from_p
 _P_STAR_AGREEMENT = 1e-9
 #: A fitted line with |slope| (picture units per picture unit) below this is horizontal.
 _FLAT_SLOPE = 1e-9
+#: The kinds of cluster (:func:`explain_cluster`'s 'kind'), in report order: a cluster is of
+#: the first kind whose computed cause one of its points has, else 'edited lines' if one of its
+#: LaTeX lines was inserted separately, else 'unexplained'.
+CLUSTER_KINDS = ("imaginary-beta1 window", "double root in one scan step", "no sign change",
+                 "edited lines", "unexplained")
+CLUSTER_WINDOW, CLUSTER_DOUBLE_ROOT, CLUSTER_NO_SIGN_CHANGE, CLUSTER_EDITED, CLUSTER_UNEXPLAINED = (
+    CLUSTER_KINDS)
 
 
 def _same_step(p_a: NDArray, p_b: NDArray, twist: NDArray, nu: NDArray, variable: str,
@@ -307,13 +314,15 @@ def _uncaused_sentence(rows: pd.DataFrame, causes: dict[str, NDArray[np.bool_]],
 
 
 def _cluster_kind(causes: dict[str, NDArray[np.bool_]]) -> str:
+    """The cluster's kind (:data:`CLUSTER_KINDS`) from its points' causes."""
     if causes["imaginary beta_1"].any():
-        return "imaginary-beta1 window"
+        return CLUSTER_WINDOW
     if causes["double root in one step"].any():
-        return "double root in one scan step"
+        return CLUSTER_DOUBLE_ROOT
     if causes["no sign change"].any():
-        return "no sign change"
-    return "edited lines" if causes.get("edited line", np.zeros(1, bool)).any() else "unexplained"
+        return CLUSTER_NO_SIGN_CHANGE
+    edited = causes.get("edited line", np.zeros(1, bool)).any()
+    return CLUSTER_EDITED if edited else CLUSTER_UNEXPLAINED
 
 
 def explain_cluster(rows: pd.DataFrame, left: pd.Series | None, right: pd.Series | None,
