@@ -89,6 +89,8 @@ TOL = 1e-12
 #: Acceptance thresholds of the reproduction (issue 2): per-curve rms and max |deviation|.
 RMS_LIMIT, MAX_LIMIT = 1.5e-4, 6e-4
 COLORS = {1.1: "tab:blue", 1.3: "tab:orange", 1.5: "tab:green"}
+#: Guide lines of the main panel at Omega(L) = k pi (the family crossings lie near k pi, k >= 2).
+GUIDES = (1, 2, 3)
 
 
 def comparison_table(reference: pd.DataFrame, tol: float = TOL) -> pd.DataFrame:
@@ -127,10 +129,10 @@ def deviation_summary(table: pd.DataFrame) -> pd.DataFrame:
 def draw(table: pd.DataFrame, curves: dict[float, tuple[np.ndarray, np.ndarray]]):
     fig, (ax, axr) = plt.subplots(2, 1, figsize=(7.0, 7.5), sharex=True,
                                   gridspec_kw={"height_ratios": [3, 1.2], "hspace": 0.08})
-    for k, guide in enumerate((np.pi, 2 * np.pi, 3 * np.pi), 1):
+    for k in GUIDES:
         for a in (ax, axr):
-            a.axvline(guide, color="0.75", lw=0.8, zorder=0)
-        ax.text(guide, 1.252, ["π", "2π", "3π"][k - 1], ha="center", va="bottom")
+            a.axvline(k * np.pi, color="0.75", lw=0.8, zorder=0)
+        ax.text(k * np.pi, 1.252, f"{k if k > 1 else ''}π", ha="center", va="bottom")
     for i, nu in enumerate(FIGURE1_NU, 1):
         om, p = curves[nu]
         sub = table[table["nu"] == nu]
@@ -337,13 +339,20 @@ def forensics_claim(fx: Forensics, summary: pd.DataFrame, truth: CrossCheck) -> 
     return judge(FIG1, measured, NAME)
 
 
+#: Digits as subscripts, for Ω_n in legends.
+SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
 def _mark_physics(ax, fx: Forensics, nu: float) -> None:
+    """The imaginary-β₁ window and the family crossings of one curve (closed forms)."""
     w = fx.windows[nu]
     ax.axvspan(w["omega_a"], w["omega_b"], color="tab:cyan", alpha=0.18, lw=0,
                label="β₁ imaginary (closed form)")
-    for k, c in enumerate(fx.crossings[nu]):
+    crossings = fx.crossings[nu]
+    names = ", ".join(f"Ω{str(c['n']).translate(SUBSCRIPT)}" for c in crossings)
+    for k, c in enumerate(crossings):
         ax.axvline(c["twist"], color="tab:purple", ls="--", lw=0.8,
-                   label="family crossings Ω₂, Ω₃" if k == 0 else None)
+                   label=f"family crossings {names}" if k == 0 else None)
 
 
 def _model_band(ax, fx: Forensics, nu: float) -> None:
