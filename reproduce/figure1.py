@@ -358,7 +358,7 @@ def _mark_physics(ax, fx: Forensics, nu: float) -> None:
 def _model_band(ax, fx: Forensics, nu: float) -> None:
     """The band of one scan step in which a reproduced point's deviation lies, per run."""
     s = fx.sites[(fx.sites["nu"] == nu) & ~fx.sites["off_grid"]].sort_values("twist_angle")
-    band = fx.model_band().loc[s.index]
+    band = fx.model_band.loc[s.index]
     lo, hi = band["band_low"].to_numpy(), band["band_high"].to_numpy()
     for r in fx.runs:
         mine = (s["run"] == r).to_numpy() & np.isfinite(hi)

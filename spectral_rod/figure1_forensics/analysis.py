@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 import pandas as pd
@@ -177,10 +178,12 @@ class Forensics:
                     "reported_at": RULE_WORDS.get(h.scan_rule, h.rounding)}
                 for r, h in self.runs.items()}
 
+    @cached_property
     def model_band(self) -> pd.DataFrame:
         """Per site: the band [band_low, band_high] of p - p* in which its covering run's
         procedure puts the value it reports (one scan step, :func:`report_band`);
-        NaN where that scan finds no value."""
+        NaN where that scan finds no value. Computed once: :func:`analyse_figure1` has
+        finished the sites and runs it depends on before it builds the Forensics."""
         s = self.sites
         t, nu, p = (s[c].to_numpy() for c in ("twist_angle", "nu", "p_true"))
         run, found = s["run"].to_numpy(), s["scan_found"].to_numpy(dtype=bool)
@@ -197,7 +200,7 @@ class Forensics:
         all of them if the printed values are the procedure's (the bound is checked, not
         assumed). min and max are None where no point is reproduced."""
         in_data = self.sites["in_data"].to_numpy()
-        s, band = self.sites[in_data], self.model_band()[in_data]
+        s, band = self.sites[in_data], self.model_band[in_data]
         ok = s["ok"].to_numpy(dtype=bool)
         dev = (s["p_digitised"] - s["p_true"]).to_numpy()[ok]
         rounding = 0.5 * PICTURE_STEP / Y_PER_P
