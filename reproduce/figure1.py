@@ -52,9 +52,6 @@ from spectral_rod import (
     picture_lines,
 )
 
-#: The picture's constants under short names: dot diameter and print quantum (picture units),
-#: picture units per unit of p*.
-DOT, PRINT_QUANTUM, Y_PER_P = FIGURE1_DOT, FIGURE1_PRINT_QUANTUM, FIGURE1_Y_PER_P
 #: The twist ranges of Forensics.range_sizes (its order) in words.
 RANGE_WORDS = "below / in / above"
 
@@ -162,13 +159,13 @@ def draw(table: pd.DataFrame, curves: dict[float, tuple[np.ndarray, np.ndarray]]
 CLAIM_ID = "fig1-curves"
 #: Deviation a reader of the printed figure would see: half a plotted dot, in p*.
 VISIBLE_DOTS = 0.5
-VISIBLE = VISIBLE_DOTS * DOT / Y_PER_P
+VISIBLE = VISIBLE_DOTS * FIGURE1_DOT / FIGURE1_Y_PER_P
 RULE = ("Rule F1 (point-by-point accounting): 'inconclusive' if a digitised point is neither "
         "reproduced by the best model nor in a cluster, or a cluster or missing point has "
         "neither a computed cause nor LaTeX evidence; else 'fails' if a point lies farther "
-        f"from the converged p* than half a plotted dot ({VISIBLE_DOTS * DOT:g} picture units = "
-        f"{VISIBLE:.2e} in p*); else 'holds' if there are no clusters and no missing points "
-        "(every point is the procedure applied to the correct root); else 'holds "
+        f"from the converged p* than half a plotted dot ({VISIBLE_DOTS * FIGURE1_DOT:g} picture "
+        f"units = {VISIBLE:.2e} in p*); else 'holds' if there are no clusters and no missing "
+        "points (every point is the procedure applied to the correct root); else 'holds "
         "approximately'.")
 METHODS = (Method(f"Chebyshev collocation (converged p*, tol {TOL:g})", "inst1"),
            Method("sign-change scan of the boundary determinant D_sym·D_anti (double "
@@ -250,8 +247,8 @@ def readme_sentence(fx: Forensics) -> str:
     where = (f"so digitised − p* lies in [{dev['min']:.1e}, {dev['max']:.1e}] there (within one "
              f"scan step plus the print rounding at {bound})" if n_ok else "none of them")
     s = (f"Figure 1 is explained point by point: {n_ok} of {len(p)} plotted points are exactly "
-         f"(to the {PRINT_QUANTUM:g} print quantum) what the authors' procedure gives from the "
-         f"converged p* -- {_run_phrase(fx)} -- {where}.")
+         f"(to the {FIGURE1_PRINT_QUANTUM:g} print quantum) what the authors' procedure gives "
+         f"from the converged p* -- {_run_phrase(fx)} -- {where}.")
     groups = fx.cluster_groups()
     n_bad = len(p) - n_ok
     if n_bad:
@@ -323,8 +320,8 @@ def forensics_claim(fx: Forensics, summary: pd.DataFrame, truth: CrossCheck) -> 
                  f"({sum(c['explained'] for c in fx.clusters)}/{len(fx.clusters)}, "
                  f"{sum(m['explained'] for m in fx.missing_points)}/{len(fx.missing_points)}); "
                  f"largest deviation of any point from p* {fx.max_deviation():.2e} = "
-                 f"{fx.max_deviation() * Y_PER_P:.2f} picture units (a dot is {DOT:g}). Related "
-                 f"rows: {', '.join(links)}.",
+                 f"{fx.max_deviation() * FIGURE1_Y_PER_P:.2f} picture units (a dot is "
+                 f"{FIGURE1_DOT:g}). Related rows: {', '.join(links)}.",
         numbers={**accounting(fx), "headline": readme_sentence(fx), "best": fx.best.name,
                  "reproduced": int(p["ok"].sum()), "points": len(p),
                  "clusters": [{k: c[k] for k in ("nu", "twist_from", "twist_to", "points",
@@ -401,7 +398,8 @@ def draw_forensics(fx: Forensics):
         ax.legend(loc="upper right", fontsize=6.5, ncol=2, frameon=False)
         ax.set_ylim(-3.5, 6.0)
     axes[0].set_title("Figure 1 point by point: digitised − converged p* "
-                      f"(print quantum {PRINT_QUANTUM / Y_PER_P:.1e}, dot {DOT / Y_PER_P:.1e})",
+                      f"(print quantum {FIGURE1_PRINT_QUANTUM / FIGURE1_Y_PER_P:.1e}, "
+                      f"dot {FIGURE1_DOT / FIGURE1_Y_PER_P:.1e})",
                       fontsize=10)
     axes[-1].set_xlabel("total twist angle Ω(L) [rad]")
     axes[-1].set_xlim(0, 10)
@@ -448,9 +446,9 @@ def forensics_section(fx: Forensics, claim: Claim, seconds: float) -> list[str]:
     lines = ["### Every point explained", "", "![Figure 1 forensics](figure1_forensics.png)", "",
              f"Analysis time {seconds:.1f} s (spectral_rod.figure1_forensics; output "
              "`figure1_forensics.json`). A point is *reproduced* if the model's y, printed to "
-             f"the print quantum, equals the picture's ({PRINT_QUANTUM:g} picture units = "
-             f"{PRINT_QUANTUM / Y_PER_P:.1e} in p*). Points {RANGE_WORDS} the imaginary-β₁ "
-             f"window: {' / '.join(str(v) for v in sizes.values())}.",
+             f"the print quantum, equals the picture's ({FIGURE1_PRINT_QUANTUM:g} picture units "
+             f"= {FIGURE1_PRINT_QUANTUM / FIGURE1_Y_PER_P:.1e} in p*). Points {RANGE_WORDS} the "
+             f"imaginary-β₁ window: {' / '.join(str(v) for v in sizes.values())}.",
              "", f"**Best model:** `{fx.best.name}` -- {fx.best.description}. It reproduces "
              f"**{int(p['ok'].sum())} of {len(p)}** points exactly. Where the scan yields no "
              "value it predicts a failure of the authors' procedure; a quantisation model "
@@ -530,9 +528,10 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
         f"the {len(table)} digitised points of the paper's picture; degree n from "
         f"{n_used.min()} to {n_used.max()} (median {int(n_used.median())}); largest error "
         f"estimate {table['error_estimate'].max():.1e}. Sweep time {t_sweep:.2f} s.", "",
-        f"Deviation computed − digitised (the digitisation is printed to {PRINT_QUANTUM:g} "
-        f"picture units, i.e. {PRINT_QUANTUM / Y_PER_P:.1e} in p*; the plotted dots are "
-        f"{DOT:g} unit = {DOT / Y_PER_P:.1e} wide):", "",
+        f"Deviation computed − digitised (the digitisation is printed to "
+        f"{FIGURE1_PRINT_QUANTUM:g} picture units, i.e. "
+        f"{FIGURE1_PRINT_QUANTUM / FIGURE1_Y_PER_P:.1e} in p*; the plotted dots are "
+        f"{FIGURE1_DOT:g} unit = {FIGURE1_DOT / FIGURE1_Y_PER_P:.1e} wide):", "",
         "| ν | points | rms | max abs | at Ω(L) | mean | within rms ≤ "
         f"{RMS_LIMIT:g}, max ≤ {MAX_LIMIT:g} |", "|---|---|---|---|---|---|---|"]
     for nu, r in summary.iterrows():

@@ -30,13 +30,13 @@ FIGURE1_NU = (1.1, 1.3, 1.5)
 COLUMNS = ("curve", "nu", "picture_x", "picture_y", "twist_angle", "p_star")
 #: Picture x units per radian of Omega(L), and picture y units per unit of p*: Omega(L) = x/10,
 #: p* = 1 + y/400 (the schema's ``x-figure1.axes``).
-X_PER_TWIST, Y_PER_P = 10.0, 400.0
+FIGURE1_X_PER_TWIST, FIGURE1_Y_PER_P = 10.0, 400.0
 #: Quantum of the picture's coordinates (printed with two decimals; the schema's
 #: ``picture_unit_step``): the print quantum.
-PICTURE_STEP = 0.01
+FIGURE1_PRINT_QUANTUM = 0.01
 #: Diameter of a plotted dot (``\circle*{1.0}``) in picture units: what a reader can see (the
 #: schema's ``dot_diameter``).
-DOT_DIAMETER = 1.0
+FIGURE1_DOT = 1.0
 #: One point line of the picture: ``\put(x, y){\circle*...``.
 _PUT = re.compile(r"^\\put\(\s*([-+0-9.]+)\s*,\s*([-+0-9.]+)\s*\)\s*\{\\circle\*")
 
@@ -47,7 +47,7 @@ def twist_from_picture(x: float | np.ndarray) -> float | np.ndarray:
     >>> twist_from_picture(31.25)
     3.125
     """
-    return x / X_PER_TWIST
+    return x / FIGURE1_X_PER_TWIST
 
 
 def p_star_from_picture(y: float | np.ndarray) -> float | np.ndarray:
@@ -56,7 +56,7 @@ def p_star_from_picture(y: float | np.ndarray) -> float | np.ndarray:
     >>> p_star_from_picture(10.0)
     1.025
     """
-    return 1.0 + y / Y_PER_P
+    return 1.0 + y / FIGURE1_Y_PER_P
 
 
 def picture_y_from_p_star(p: float | np.ndarray) -> float | np.ndarray:
@@ -65,7 +65,7 @@ def picture_y_from_p_star(p: float | np.ndarray) -> float | np.ndarray:
     >>> round(float(picture_y_from_p_star(p_star_from_picture(18.98))), 9)
     18.98
     """
-    return Y_PER_P * (np.asarray(p, dtype=float) - 1.0)
+    return FIGURE1_Y_PER_P * (np.asarray(p, dtype=float) - 1.0)
 
 
 def picture_environment(tex: str) -> str:
@@ -190,12 +190,12 @@ def _check_consistency(num: pd.DataFrame, path: Path) -> None:
     if not (np.allclose(num["twist_angle"], twist_from_picture(num["picture_x"]))
             and np.allclose(num["p_star"], p_star_from_picture(num["picture_y"]))):
         raise ReferenceDataError(f"{path}: twist_angle/p_star do not follow from "
-                                 f"picture_x/picture_y (Omega = x/{X_PER_TWIST:g}, p* = 1 + "
-                                f"y/{Y_PER_P:g})")
-    xy = num[["picture_x", "picture_y"]].to_numpy() / PICTURE_STEP
+                                 f"picture_x/picture_y (Omega = x/{FIGURE1_X_PER_TWIST:g}, "
+                                 f"p* = 1 + y/{FIGURE1_Y_PER_P:g})")
+    xy = num[["picture_x", "picture_y"]].to_numpy() / FIGURE1_PRINT_QUANTUM
     if not np.allclose(xy, np.round(xy), rtol=0, atol=1e-6):
         raise ReferenceDataError(f"{path}: picture coordinates are not on the "
-                                 f"{PICTURE_STEP} grid the paper prints")
+                                 f"{FIGURE1_PRINT_QUANTUM} grid the paper prints")
 
 
 def _check_curves(num: pd.DataFrame, path: Path) -> None:

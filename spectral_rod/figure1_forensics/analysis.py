@@ -38,7 +38,12 @@ from spectral_rod.figure1_forensics.picture import (
 from spectral_rod.figure1_forensics.quantisation import VARIABLES, Hypothesis
 from spectral_rod.figure1_forensics.runs import find_runs, flank_positions
 from spectral_rod.figure1_forensics.scan import RULE_WORDS, report_band, scan_model
-from spectral_rod.figure_data import FIGURE1_NU, PICTURE_STEP, Y_PER_P, twist_from_picture
+from spectral_rod.figure_data import (
+    FIGURE1_NU,
+    FIGURE1_PRINT_QUANTUM,
+    FIGURE1_Y_PER_P,
+    twist_from_picture,
+)
 
 #: Tolerance of the default converged p* (:func:`spectral_rod.critical_load`).
 P_STAR_TOL = 1e-12
@@ -203,7 +208,7 @@ class Forensics:
         s, band = self.sites[in_data], self.model_band[in_data]
         ok = s["ok"].to_numpy(dtype=bool)
         dev = (s["p_digitised"] - s["p_true"]).to_numpy()[ok]
-        rounding = 0.5 * PICTURE_STEP / Y_PER_P
+        rounding = 0.5 * FIGURE1_PRINT_QUANTUM / FIGURE1_Y_PER_P
         lo, hi = band["band_low"].to_numpy()[ok], band["band_high"].to_numpy()[ok]
         slack = 1e-12  # the rounding of p* itself
         within = (dev >= lo - rounding - slack) & (dev <= hi + rounding + slack)

@@ -23,7 +23,11 @@ from spectral_rod.figure1_forensics.quantisation import (
     reproduced,
 )
 from spectral_rod.figure1_forensics.runs import chord_values
-from spectral_rod.figure_data import PICTURE_STEP, X_PER_TWIST, picture_y_from_p_star
+from spectral_rod.figure_data import (
+    FIGURE1_PRINT_QUANTUM,
+    FIGURE1_X_PER_TWIST,
+    picture_y_from_p_star,
+)
 
 #: Two computations of p* at a site (collocation, the families' lowest roots) must agree to this.
 _P_STAR_AGREEMENT = 1e-9
@@ -112,7 +116,7 @@ def _minimax_line(x: NDArray, y: NDArray) -> tuple[float, float, float]:
 
 
 def straight_line(x: NDArray, y: NDArray, flank_x: NDArray, flank_y: NDArray,
-                  tol: float = PICTURE_STEP / 2) -> LineFit:
+                  tol: float = FIGURE1_PRINT_QUANTUM / 2) -> LineFit:
     """Is the cluster a straight line between its flanks, up to rounding?
 
     The minimax line through the cluster points and the two flanks; while its residual exceeds
@@ -235,7 +239,7 @@ def _value_sentences(rows: pd.DataFrame, rules: dict[str, NDArray[np.bool_]],
     on_line = fit is not None and fit.on_line.sum() > n / 2
     if on_line:
         shape = ("a horizontal line" if abs(fit.b) < _FLAT_SLOPE else
-                 f"a straight line (slope {fit.b * X_PER_TWIST:.3f} per rad)")
+                 f"a straight line (slope {fit.b * FIGURE1_X_PER_TWIST:.3f} per rad)")
         s = (f"{shape} through the flanking computed points (x, y) = "
              f"({left['picture_x']:.2f}, {left['picture_y']:.2f}) and "
              f"({right['picture_x']:.2f}, {right['picture_y']:.2f}) reproduces "
@@ -244,7 +248,7 @@ def _value_sentences(rows: pd.DataFrame, rules: dict[str, NDArray[np.bool_]],
         for i in np.flatnonzero(~fit.on_line):
             line_y = fit.a + fit.b * x[i]
             s += (f"; x = {x[i]:.2f} is printed {y[i]:.2f} where the line gives {line_y:.3f} "
-                  f"({(y[i] - line_y) / PICTURE_STEP:+.1f} quanta: an isolated slip)")
+                  f"({(y[i] - line_y) / FIGURE1_PRINT_QUANTUM:+.1f} quanta: an isolated slip)")
         out.append(s)
     low, flat = rules["lower end of the shared step"], rules["flank value"]
     if low.any():

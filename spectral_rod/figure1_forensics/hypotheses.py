@@ -25,7 +25,7 @@ from spectral_rod.figure1_forensics.scan import (
     scan_model,
     scan_sign_change,
 )
-from spectral_rod.figure_data import X_PER_TWIST, picture_y_from_p_star, twist_from_picture
+from spectral_rod.figure_data import FIGURE1_X_PER_TWIST, picture_y_from_p_star, twist_from_picture
 
 #: Scan variables: the load and the two coefficients of Eq. inst1, the coefficients scanned
 #: from where they vanish (v >= 0).
@@ -96,7 +96,7 @@ def variant_hypotheses(bases: list[Hypothesis], best_q: Hypothesis, p_true: NDAr
         tw = twist + twist_from_picture(dx)
         y = quantisation_model(p_star_fn(tw, nu), tw, nu, best_q.variable, best_q.step,
                                best_q.rounding)
-        at = f"(x {dx:+g})/{X_PER_TWIST:g}"
+        at = f"(x {dx:+g})/{FIGURE1_X_PER_TWIST:g}"
         out.append(Hypothesis(f"{best_q.name} at Omega = {at}", best_q.variable,
                               best_q.step, best_q.rounding, y, reproduced(y, picture_y),
                               f"{best_q.description}, computed at twist {at}"))

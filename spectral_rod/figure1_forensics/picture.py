@@ -13,10 +13,10 @@ import pandas as pd
 from numpy.typing import NDArray
 
 from spectral_rod.figure1_forensics.runs import find_runs
-from spectral_rod.figure_data import DOT_DIAMETER, picture_environment, picture_points
+from spectral_rod.figure_data import FIGURE1_DOT, picture_environment, picture_points
 
 #: The fixed-width format of the picture's point lines (Fortran-like F7.2, F8.2 fields).
-PUT_FORMAT = "\\put(%7.2f,%8.2f){\\circle*{" + f"{DOT_DIAMETER:.1f}" + "}}"
+PUT_FORMAT = "\\put(%7.2f,%8.2f){\\circle*{" + f"{FIGURE1_DOT:.1f}" + "}}"
 #: Tolerance of "x lies on the grid" in grid steps (x is printed to 0.01, the grid step 0.25).
 _ON_GRID = 1e-6
 

@@ -18,7 +18,7 @@ from numpy.typing import NDArray
 from spectral_rod.figure1_forensics.physics import RANGES
 from spectral_rod.figure_data import (
     FIGURE1_NU,
-    Y_PER_P,
+    FIGURE1_Y_PER_P,
     p_star_from_picture,
     picture_y_from_p_star,
 )
@@ -49,7 +49,7 @@ VARIABLES: dict[str, Variable] = {v.name: v for v in (
     Variable("p*", "p* itself", lambda p, t, n: p, lambda v, t, n: v, _steps(-6, -3)),
     Variable("lambda", "the load lambda = pi^2 p* = P L^2/A1", lambda p, t, n: _PI2 * p,
              lambda v, t, n: v / _PI2, _steps(-5, -2)),
-    Variable("y", f"the picture coordinate y = {Y_PER_P:g} (p* - 1)",
+    Variable("y", f"the picture coordinate y = {FIGURE1_Y_PER_P:g} (p* - 1)",
              lambda p, t, n: picture_y_from_p_star(p), lambda v, t, n: p_star_from_picture(v),
              _steps(-3, -1)),
     Variable("lambda - nu Omega^2", "the coefficient (P - A2 omega30^2) L^2/A1 of Eq. inst1",
