@@ -47,6 +47,8 @@ ring stability (the truth)          :func:`ring_critical_load`, :func:`ring_buck
                                     (:mod:`.ring_stability`, the second variation) and
                                     ``method="munder"`` (:mod:`.ring_munder`: Eqs. ``Munder``,
                                     ``constit``, ``frenet`` linearised numerically)
+"twist destabilises the ring"       :func:`twist_raises_load` (q_cr(N) vs q_cr(0), margin
+                                    ``RING_RAISE_TOL``), :func:`destabilisation_threshold`
 ==================================  ==========================================================
 
 Public names are imported lazily (``import spectral_rod`` stays light; scipy and mpmath load
@@ -101,6 +103,7 @@ _EXPORTS = {
     "RingBuckling": "ring_stability", "RING_LOADS": "ring_stability",
     "RING_METHODS": "ring_stability", "RING_KIND_TOL": "ring_stability:KIND_TOL",
     "destabilisation_threshold": "ring_stability", "munder_buckling": "ring_munder",
+    "twist_raises_load": "ring_stability", "RING_RAISE_TOL": "ring_stability:RAISE_TOL",
     "RING_E_ISOTROPIC": "ring_munder:E_ISOTROPIC",
     "RING_ISOTROPIC_POISSON": "ring_munder:ISOTROPIC_POISSON",
     "ring_formulation_agreement": "ring_munder",

@@ -70,7 +70,7 @@ from typing import TypeVar
 import numpy as np
 import scipy.linalg
 import scipy.optimize
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
 from spectral_rod._validation import (
     TOL_RANGE,
@@ -556,10 +556,49 @@ def _check_nus(nus: object) -> NDArray[np.float64]:
     return grid
 
 
+#: Relative margin of :func:`twist_raises_load`: q_cr(N) counts as raised by twist if it is at
+#: least q_cr(0) (1 - RAISE_TOL). An empirical round-off margin, not a physical one: each q_cr
+#: is converged to 1e-12 (second variation) or 1e-10 (Munder's default), the circular ring
+#: (nu = 1, where twist cannot change q_cr) gives |q_cr(N)/q_cr(0) - 1| ~ 1e-15, and the
+#: smallest genuine gap on the ring scene's scans (nu > 1) is ~6e-3; 1e-9 lies well between.
+RAISE_TOL = 1.0e-9
+
+
+def twist_raises_load(q_twisted: ArrayLike, q_untwisted: object) -> bool | NDArray[np.bool_]:
+    """Whether twist raises the ring's critical load: q_cr(N) >= q_cr(0) to round-off.
+
+    The one predicate behind "twist destabilises the ring" (its negation: twist lowers q_cr)
+    and :func:`destabilisation_threshold`: True iff ``q_twisted >= q_untwisted * (1 -
+    RAISE_TOL)``. The tolerance :data:`RAISE_TOL` (public: ``spectral_rod.RING_RAISE_TOL``) =
+    1e-9 relative is an empirical round-off margin: the converged loads are accurate to 1e-12
+    (second variation) ... 1e-10 (Munder), twist-independent loads (nu = 1) agree to ~1e-15,
+    while the changes twist makes on the ring scene's scans (nu > 1) are ~6e-3 and more. A load
+    equal to q_cr(0) to round-off therefore counts as raised (twist does not lower it).
+
+    ``q_twisted``: q_cr(N) R^3/(E1 I1), a real number or an array (then an array of bools);
+    ``q_untwisted``: q_cr(0), a positive real number (the reference of the relative margin).
+
+    >>> twist_raises_load(3.0 * (1 - 1e-12), 3.0), twist_raises_load(2.9, 3.0)
+    (True, False)
+    >>> twist_raises_load([2.9, 3.1], 3.0).tolist()
+    [False, True]
+    """
+    q = real_array(q_twisted, "q_twisted")
+    q0 = check_real(q_untwisted, "q_untwisted", 0.0, math.inf, lo_open=True)
+    raised = q >= q0 * (1.0 - RAISE_TOL)
+    return bool(raised) if raised.ndim == 0 else raised
+
+
 def _twist_gain(q: NDArray[np.float64], twists: tuple[int, ...]) -> float:
     """max over N > 0 of q(N)/q(0) - 1 for loads `q` ordered like `twists`."""
     q0 = q[twists.index(0)]
     return float(max(q[i] for i, N in enumerate(twists) if N > 0) / q0 - 1.0)
+
+
+def _twist_raises(q: NDArray[np.float64], twists: tuple[int, ...]) -> bool:
+    """Whether some N > 0 raises q (ordered like `twists`) over q(0) (:func:`twist_raises_load`)."""
+    return bool(twist_raises_load(max(q[i] for i, N in enumerate(twists) if N > 0),
+                                  q[twists.index(0)]))
 
 
 def _check_grid_loads(loads: object, shape: tuple[int, int]) -> NDArray[np.float64] | None:
@@ -577,11 +616,15 @@ def destabilisation_threshold(e_ratio: object, load: object, nus: object, *,
                               loads: object = None, method: str = "second-variation") -> float:
     """The asymmetry nu* above which some spontaneous twist raises the ring's critical load.
 
-    The twist gain g(nu) = max over N > 0 in ``twists`` of q_cr(N, nu)/q_cr(0, nu) - 1 is
-    negative while every twist lowers q_cr (twist destabilises). The grid ``nus`` (increasing,
-    nu >= 1) is scanned for the first interval where g goes from < 0 to >= 0, and nu* is refined
-    there by Brent's method to ``xtol`` in nu; ``math.nan`` if g does not so change sign on the
-    grid. ``loads``: q_cr already solved on the grid (shape (len(nus), len(twists)), e.g. a
+    Some twist raises q_cr at nu if :func:`twist_raises_load` holds for the largest q_cr(N, nu)
+    over N > 0 in ``twists`` against q_cr(0, nu) (q_cr(N) >= q_cr(0) to the round-off margin
+    :data:`RAISE_TOL`, public as ``spectral_rod.RING_RAISE_TOL``); otherwise every twist lowers
+    q_cr (twist destabilises). The grid ``nus`` (increasing, nu >= 1) is scanned for the first
+    interval from a nu where every twist lowers q_cr to one where some twist raises it, and nu*
+    is refined there by Brent's method to ``xtol`` in nu as the root of the twist gain g(nu) =
+    max over N > 0 of q_cr(N)/q_cr(0) - 1 (the interval's upper end itself if it is raised
+    within the margin only, g in [-RAISE_TOL, 0)); ``math.nan`` if there is no such interval on
+    the grid. ``loads``: q_cr already solved on the grid (shape (len(nus), len(twists)), e.g. a
     scan of the caller's), so that the scan solves nothing again; otherwise the scan solves them.
     ``method``: one of :data:`RING_METHODS` (the formulation of every solve). e = E2/E1 and the
     load model as in :func:`ring_critical_load`.
@@ -597,17 +640,19 @@ def destabilisation_threshold(e_ratio: object, load: object, nus: object, *,
     xtol = check_real(xtol, "xtol", 1e-12, 1.0)
     known = _check_grid_loads(loads, (grid.size, len(Ns)))
 
-    def gain(nu: float) -> float:
-        return _twist_gain(np.array([ring_critical_load(N, nu, e_ratio=e, load=ld, method=method)
-                                     for N in Ns]), Ns)
+    def solve(nu: float) -> NDArray[np.float64]:
+        return np.array([ring_critical_load(N, nu, e_ratio=e, load=ld, method=method)
+                         for N in Ns])
 
-    gains = [_twist_gain(known[i], Ns) if known is not None else gain(float(nu))
-             for i, nu in enumerate(grid)]
-    i = next((i for i in range(grid.size - 1) if gains[i] < 0 <= gains[i + 1]), None)
+    loads_at = [known[i] if known is not None else solve(float(nu)) for i, nu in enumerate(grid)]
+    raised = [_twist_raises(q, Ns) for q in loads_at]
+    i = next((i for i in range(grid.size - 1) if not raised[i] and raised[i + 1]), None)
     if i is None:
         return math.nan
     a, b = float(grid[i]), float(grid[i + 1])
-    ends = {a: gains[i], b: gains[i + 1]}
+    ends = {a: _twist_gain(loads_at[i], Ns), b: _twist_gain(loads_at[i + 1], Ns)}
+    if ends[b] < 0:  # raised at b within the round-off margin only: b is nu* to round-off
+        return b
     # Brent evaluates both ends first: their gains are known already
-    return float(scipy.optimize.brentq(lambda v: ends[v] if v in ends else gain(v), a, b,
-                                       xtol=xtol))
+    return float(scipy.optimize.brentq(
+        lambda v: ends[v] if v in ends else _twist_gain(solve(v), Ns), a, b, xtol=xtol))

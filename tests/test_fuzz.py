@@ -280,6 +280,16 @@ SPECS: dict[str, Spec] = {
          "method": choice("second-variation", invalid=NOT_STR)},
         lambda r, a: math.isnan(r) or min(a["nus"]) <= r <= max(a["nus"]),
         faults=(sr.RingConvergenceError,), positional=("e_ratio", "load", "nus")),
+    "twist_raises_load": Spec(
+        sr.twist_raises_load,
+        {"q_twisted": real(-1e6, 1e6), "q_untwisted": real(1e-6, 1e6, 0.0, -1.0)},
+        lambda r, a: isinstance(r, bool)
+        and r == (a["q_twisted"] >= a["q_untwisted"] * (1 - sr.RING_RAISE_TOL)),
+        positional=("q_twisted", "q_untwisted")),
+    "twist_raises_load_arrays": Spec(
+        sr.twist_raises_load, {"q_twisted": ARRAYS, "q_untwisted": real(1e-6, 1e6, 0.0)},
+        lambda r, a: r.shape == np.shape(a["q_twisted"]) and r.dtype == bool,
+        positional=("q_twisted", "q_untwisted")),
     "fd_critical_load": Spec(sr.fd_critical_load,
                              {"twist_angle": SMALL_TWIST, "nu": real(1.0, 100.0, 0.5),
                               "intervals": integer(8, 2000, 3, 1 << 22)},

@@ -7,6 +7,7 @@ import copy
 import dataclasses
 import json
 import math
+import time
 from pathlib import Path
 
 import numpy as np
@@ -270,6 +271,27 @@ def test_scene_writes_outputs(tmp_path: Path, evidence: scene.RingEvidence,
     assert th.loc[th["nu"] == 2.0, "N_integer"].iloc[0] == 3
     assert math.isinf(th.loc[th["nu"] == 1.0, "N_continuous"].iloc[0])
     assert messages
+
+
+def test_witness_re_solves_have_their_own_timings_row(evidence: scene.RingEvidence) -> None:
+    """The witnesses' re-solves (also those of verdicts_per_load, on each load model's evidence
+    alone) run while the claims are measured; their time is a row of the timings table."""
+    from reproduce.ring import report_section
+    from reproduce.ring.evidence import WITNESS_TIMING
+
+    calls: list[tuple] = []
+
+    def slow(*ring):  # the run's solver, 20 ms slower per call
+        calls.append(ring)
+        time.sleep(0.02)
+        return evidence.solve(*ring)
+
+    ev = dataclasses.replace(evidence, timings={"table": 1.0}, witnesses=set(), solve=slow)
+    claims = scene.evaluate_claims(ev)
+    assert len(ev.witnesses) >= 4 and len(calls) >= len(ev.witnesses)
+    assert ev.timings[WITNESS_TIMING] >= 0.02 * len(calls)
+    assert f"{WITNESS_TIMING} {ev.timings[WITNESS_TIMING]:.1f} s" in report_section(
+        claims, ev, 2.0, len(ev.witnesses))
 
 
 def test_scene_metadata() -> None:

@@ -27,6 +27,7 @@ from spectral_rod.ring_stability import (
     rigid_body_constraints,
     ring_buckling,
     ring_critical_load,
+    twist_raises_load,
 )
 
 
@@ -290,6 +291,30 @@ def test_destabilisation_threshold_from_known_loads_and_without_crossing():
                                      loads=loads) == solved
     # under the axis-directed load twist N = 1 lowers q_cr on the whole grid
     assert math.isnan(destabilisation_threshold(1.0, "axis", grid, twists=twists))
+
+
+def test_twist_raises_load_is_q_cr_n_against_q_cr_0_to_round_off() -> None:
+    q0 = 3.0
+    assert twist_raises_load(q0, q0) and twist_raises_load(q0 * (1 - 1e-12), q0)  # a tie
+    assert not twist_raises_load(q0 * (1 - 1e-6), q0)
+    assert twist_raises_load(np.array([2.0, q0, 4.0]), q0).tolist() == [False, True, True]
+    # the circular ring: twist cannot change q_cr, and the solves agree to round-off
+    assert twist_raises_load(ring_critical_load(3, 1.0), ring_critical_load(0, 1.0))
+    with pytest.raises(ValueError, match="q_untwisted"):
+        twist_raises_load(1.0, 0.0)
+    with pytest.raises(TypeError, match="q_twisted"):
+        twist_raises_load("1", 1.0)
+
+
+def test_destabilisation_threshold_counts_a_round_off_tie_as_raised() -> None:
+    """The scan brackets nu* with twist_raises_load (the scene's predicate): a twisted load
+    equal to q_cr(0) to round-off is raised, both at the upper end (nu* is that end) and at the
+    lower end (no interval from lowered to raised)."""
+    twists, grid, tie = (0, 1), [2.0, 4.0], 3.0 * (1 - 1e-12)
+    assert destabilisation_threshold(1.0, "hydrostatic", grid, twists=twists,
+                                     loads=[[3.0, 2.5], [3.0, tie]]) == 4.0
+    assert math.isnan(destabilisation_threshold(1.0, "hydrostatic", grid, twists=twists,
+                                                loads=[[3.0, tie], [3.0, 3.5]]))
 
 
 @pytest.mark.parametrize(("kwargs", "exc", "name"), [

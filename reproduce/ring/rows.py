@@ -41,6 +41,7 @@ from spectral_rod import (
     crit2,
     homogenised_limit,
     out_of_plane_supremum,
+    twist_raises_load,
 )
 
 SCENE = "ring"
@@ -523,13 +524,14 @@ def measure_spontaneous(ev: RingEvidence) -> Measured:
 
 
 def _destabilised(ev: RingEvidence) -> dict[str, dict[str, object]]:
-    """Per load: cases (nu > 1, N >= 1, e) of the wide scan with q(N) < q(0), and where not."""
+    """Per load: cases (nu > 1, N >= 1, e) of the wide scan where twist lowers q_cr (q(N) <
+    q(0): not :func:`spectral_rod.twist_raises_load`), and where not."""
     out = {}
     for load in RING_LOADS:
         below, total, raised = 0, 0, []
         for label in E_RATIOS:
             for nu, q in _series(ev.wide, label, load).items():
-                lower = q[1:] < q[0] * (1 - EXACT_TOL)
+                lower = ~twist_raises_load(q[1:], q[0])
                 below, total = below + int(lower.sum()), total + lower.size
                 if not lower.all():
                     raised.append({"e_label": label, "nu": float(nu)})
@@ -557,9 +559,9 @@ DESTABILISES = ClaimSpec(
 
 
 def _raising_twists(ev: RingEvidence, label: str, load: str, nu: float) -> list[int]:
-    """The twists N >= 1 of the wide scan with q_cr(N) >= q_cr(0) at (e, load, nu)."""
+    """The twists N >= 1 of the wide scan that raise q_cr over q_cr(0) at (e, load, nu)."""
     q = _series(ev.wide, label, load)[nu]
-    return [N for N in range(1, q.size) if q[N] >= q[0] * (1 - EXACT_TOL)]
+    return [N for N in range(1, q.size) if twist_raises_load(q[N], q[0])]
 
 
 def _lowering_text(ev: RingEvidence, d: dict[str, dict[str, object]]) -> str:
@@ -744,7 +746,8 @@ def measure_torsion_caveat(ev: RingEvidence) -> Measured:
         q_iso = np.array([q_at(ev, nu, N, "isotropic", load) for N in TWISTS])
         changes.append(float(np.max(np.abs(q_rect / q_iso - 1))))
         if nu > 1.0:
-            same &= bool(np.array_equal(q_rect[1:] < q_rect[0], q_iso[1:] < q_iso[0]))
+            same &= bool(np.array_equal(twist_raises_load(q_rect[1:], q_rect[0]),
+                                        twist_raises_load(q_iso[1:], q_iso[0])))
     ratios = r.groupby("nu")["torsion_ratio"].first()
     return Measured(
         numbers={"torsion_ratio": {float(k): float(v) for k, v in ratios.items()},
