@@ -38,6 +38,7 @@ from reproduce.ring.evidence import (
 from spectral_rod import (
     RING_KIND_TOL,
     RING_LOADS,
+    RING_RAISE_TOL,
     crit2,
     homogenised_limit,
     out_of_plane_supremum,
@@ -549,7 +550,8 @@ DESTABILISES = ClaimSpec(
          "inward force' and 'pressure'); the ν above which some twist raises q_cr (Brent); the "
          "N → ∞ limit (isotropic ring of harmonic-mean stiffness 2A₁A₂/(A₁+A₂)).",
     methods=(SECOND_VARIATION, CLASSICAL), shared_checks=True,
-    rule=Rule("holds if q_cr(N) < q_cr(0) in every case for both load models; holds "
+    rule=Rule(f"holds if q_cr(N) < q_cr(0) (1 − {RING_RAISE_TOL:g}, a round-off margin) in every "
+              "case for both load models; holds "
               "approximately if so for one of the two load models the paper's wording allows; "
               "fails if for neither; inconclusive if a load model has no twisted case solved",
               lambda n: "inconclusive" if n["fewest_cases"] == 0 else
