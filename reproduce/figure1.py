@@ -37,6 +37,7 @@ from reproduce.ledger import (
     update_ledger,
 )
 from spectral_rod import (
+    CAUSE_IMAGINARY_BETA1,
     CLUSTER_DOUBLE_ROOT,
     CLUSTER_WINDOW,
     FIGURE1_DOT,
@@ -202,8 +203,7 @@ def cross_links(fx: Forensics) -> list[str]:
     """Straight-rod ledger rows the clusters and missing points bear on."""
     links = set()
     for rec in [*fx.clusters, *fx.missing_points]:
-        if rec.get("kind") == CLUSTER_WINDOW or "imaginary beta_1" in rec.get(
-                "causes", []):
+        if rec.get("kind") == CLUSTER_WINDOW or CAUSE_IMAGINARY_BETA1 in rec.get("causes", []):
             links.add("rod-beta-real")
         if rec.get("crossing"):
             links.add("rod-first-maximum" if rec["crossing"]["n"] == 2 else "rod-further-maxima")

@@ -118,6 +118,7 @@ _EXPORTS = {
     "picture_lines": "figure1_forensics",
     "CLUSTER_KINDS": "figure1_forensics", "CLUSTER_WINDOW": "figure1_forensics",
     "CLUSTER_DOUBLE_ROOT": "figure1_forensics",
+    "POINT_CAUSES": "figure1_forensics", "CAUSE_IMAGINARY_BETA1": "figure1_forensics",
     "FIGURE1_DOT": "figure_data",
     "FIGURE1_PRINT_QUANTUM": "figure_data",
     "FIGURE1_Y_PER_P": "figure_data",

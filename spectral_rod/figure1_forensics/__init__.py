@@ -65,12 +65,17 @@ from __future__ import annotations
 
 from spectral_rod.figure1_forensics.analysis import Forensics, analyse_figure1
 from spectral_rod.figure1_forensics.explain import (
+    CAUSE_DOUBLE_ROOT,
+    CAUSE_EDITED,
+    CAUSE_IMAGINARY_BETA1,
+    CAUSE_NO_SIGN_CHANGE,
     CLUSTER_DOUBLE_ROOT,
     CLUSTER_EDITED,
     CLUSTER_KINDS,
     CLUSTER_NO_SIGN_CHANGE,
     CLUSTER_UNEXPLAINED,
     CLUSTER_WINDOW,
+    POINT_CAUSES,
     explain_cluster,
     explain_missing,
     site_physics,
@@ -100,6 +105,10 @@ from spectral_rod.figure1_forensics.runs import MERGE_GAP, find_runs, fit_switch
 from spectral_rod.figure1_forensics.scan import ScanResult, determinant_product, scan_sign_change
 
 __all__ = [
+    "CAUSE_DOUBLE_ROOT",
+    "CAUSE_EDITED",
+    "CAUSE_IMAGINARY_BETA1",
+    "CAUSE_NO_SIGN_CHANGE",
     "CLUSTER_DOUBLE_ROOT",
     "CLUSTER_EDITED",
     "CLUSTER_KINDS",
@@ -107,6 +116,7 @@ __all__ = [
     "CLUSTER_UNEXPLAINED",
     "CLUSTER_WINDOW",
     "MERGE_GAP",
+    "POINT_CAUSES",
     "Forensics",
     "Hypothesis",
     "ScanResult",

@@ -40,6 +40,11 @@ CLUSTER_KINDS = ("imaginary-beta1 window", "double root in one scan step", "no s
                  "edited lines", "unexplained")
 CLUSTER_WINDOW, CLUSTER_DOUBLE_ROOT, CLUSTER_NO_SIGN_CHANGE, CLUSTER_EDITED, CLUSTER_UNEXPLAINED = (
     CLUSTER_KINDS)
+#: The computed causes of a point's failure (:func:`point_causes`' keys, the missing points'
+#: 'causes'), in report order. The last, 'edited line', is LaTeX evidence, not a failure of the
+#: procedure: a cluster's physics and a missing point's causes leave it out.
+POINT_CAUSES = ("imaginary beta_1", "double root in one step", "no sign change", "edited line")
+CAUSE_IMAGINARY_BETA1, CAUSE_DOUBLE_ROOT, CAUSE_NO_SIGN_CHANGE, CAUSE_EDITED = POINT_CAUSES
 
 
 def _same_step(p_a: NDArray, p_b: NDArray, twist: NDArray, nu: NDArray, variable: str,
@@ -162,18 +167,19 @@ def value_rules(rows: pd.DataFrame, left: pd.Series | None, right: pd.Series | N
 
 
 def point_causes(rows: pd.DataFrame) -> dict[str, NDArray[np.bool_]]:
-    """Computed reasons why the covering run's procedure fails at each row.
+    """Computed reasons why the covering run's procedure fails at each row (keys
+    :data:`POINT_CAUSES`, in that order).
 
     'imaginary beta_1': X_- < 0 at p* *and* inside the closed-form window (both computations
     must agree); 'double root in one step': both family roots in one step of the run's lattice;
     'no sign change': the run's real-wavenumber scan finds none; 'edited line': the LaTeX line
     lacks the program's trailing blank (if the LaTeX lines were given).
     """
-    causes = {"imaginary beta_1": (rows["imaginary_beta1"] & rows["in_window"]).to_numpy(),
-              "double root in one step": rows["double_root"].to_numpy(dtype=bool),
-              "no sign change": ~rows["scan_found"].to_numpy(dtype=bool)}
+    causes = {CAUSE_IMAGINARY_BETA1: (rows["imaginary_beta1"] & rows["in_window"]).to_numpy(),
+              CAUSE_DOUBLE_ROOT: rows["double_root"].to_numpy(dtype=bool),
+              CAUSE_NO_SIGN_CHANGE: ~rows["scan_found"].to_numpy(dtype=bool)}
     if "edited" in rows:
-        causes["edited line"] = rows["edited"].to_numpy(dtype=bool)
+        causes[CAUSE_EDITED] = rows["edited"].to_numpy(dtype=bool)
     return causes
 
 
@@ -196,7 +202,7 @@ def _cause_sentences(rows: pd.DataFrame, causes: dict[str, NDArray[np.bool_]],
     """The computed causes of a cluster (or missing point) in words, every number from rows."""
     n, out = len(rows), []
     t0, t1 = float(rows["twist_angle"].min()), float(rows["twist_angle"].max())
-    im = causes["imaginary beta_1"]
+    im = causes[CAUSE_IMAGINARY_BETA1]
     if im.any():
         w = imaginary_beta1_window(nu)
         out.append(f"β₁ is imaginary (X₋ < 0 at p*) at {im.sum()} of {n}: the closed-form window "
@@ -208,7 +214,7 @@ def _cause_sentences(rows: pd.DataFrame, causes: dict[str, NDArray[np.bool_]],
             out.append(f"the low-twist run scans {var.name} ({var.description}) upward from 0,"
                        f" and the root lies below that start ({var.name} < 0 at p*) at "
                        f"{int(rows['low_root_below_start'].sum())} of {n}")
-    dr = causes["double root in one step"]
+    dr = causes[CAUSE_DOUBLE_ROOT]
     if dr.any():
         run = rows["run"].to_numpy()[dr][0]
         h = runs[run]
@@ -221,7 +227,7 @@ def _cause_sentences(rows: pd.DataFrame, causes: dict[str, NDArray[np.bool_]],
                    f"(the 4x4 determinant / 16Ω²) changes sign twice within one step; the family"
                    f" crossing Ω_{c['n']} = {c['twist']:.4f} (p* = {c['p_star']:.6f}, "
                    f"crossing_closed_form) is {where}")
-    ns = causes["no sign change"]
+    ns = causes[CAUSE_NO_SIGN_CHANGE]
     if ns.any():
         run = rows["run"].to_numpy()[ns][0]
         out.append(f"the {run}-twist run's simulated scan ({runs[run].variable} = k·"
@@ -298,8 +304,8 @@ def _latex_sentence(rows: pd.DataFrame, with_blank: int | None,
 def _uncaused_sentence(rows: pd.DataFrame, causes: dict[str, NDArray[np.bool_]],
                        runs: dict[str, Hypothesis]) -> str | None:
     """Points where no computed failure applies: what each run's procedure would print."""
-    none = ~(causes["imaginary beta_1"] | causes["double root in one step"]
-             | causes["no sign change"])
+    none = ~(causes[CAUSE_IMAGINARY_BETA1] | causes[CAUSE_DOUBLE_ROOT]
+             | causes[CAUSE_NO_SIGN_CHANGE])
     if not none.any():
         return None
     items = []
@@ -319,13 +325,13 @@ def _uncaused_sentence(rows: pd.DataFrame, causes: dict[str, NDArray[np.bool_]],
 
 def _cluster_kind(causes: dict[str, NDArray[np.bool_]]) -> str:
     """The cluster's kind (:data:`CLUSTER_KINDS`) from its points' causes."""
-    if causes["imaginary beta_1"].any():
+    if causes[CAUSE_IMAGINARY_BETA1].any():
         return CLUSTER_WINDOW
-    if causes["double root in one step"].any():
+    if causes[CAUSE_DOUBLE_ROOT].any():
         return CLUSTER_DOUBLE_ROOT
-    if causes["no sign change"].any():
+    if causes[CAUSE_NO_SIGN_CHANGE].any():
         return CLUSTER_NO_SIGN_CHANGE
-    edited = causes.get("edited line", np.zeros(1, bool)).any()
+    edited = causes.get(CAUSE_EDITED, np.zeros(1, bool)).any()
     return CLUSTER_EDITED if edited else CLUSTER_UNEXPLAINED
 
 
@@ -349,7 +355,7 @@ def explain_cluster(rows: pd.DataFrame, left: pd.Series | None, right: pd.Series
     rules, fit = value_rules(rows, left, right, runs)
     covered = np.logical_or.reduce(list(causes.values()))
     dev = np.abs(rows["p_digitised"] - rows["p_true"]).to_numpy()
-    physics = [v for k, v in causes.items() if k != "edited line"]
+    physics = [v for k, v in causes.items() if k != CAUSE_EDITED]
     on_line = rules.get("straight line", np.zeros(len(rows), dtype=bool))
     horizontal = fit is not None and abs(fit.b) < _FLAT_SLOPE
     parts = [f"ν = {nu}, Ω(L) = {rows['twist_angle'].min():.3f}…"
@@ -370,14 +376,14 @@ def explain_cluster(rows: pd.DataFrame, left: pd.Series | None, right: pd.Series
             "not_reproduced": int((~rows["ok"]).sum()),
             "max_abs_deviation": float(dev.max()), "kind": _cluster_kind(causes),
             "explanation": " ".join(parts), "explained": bool(covered.all()),
-            "window_points": twist_list(rows, causes["imaginary beta_1"]),
-            "double_root_points": twist_list(rows, causes["double root in one step"]),
-            "no_sign_change_points": twist_list(rows, causes["no sign change"]),
-            "edited_points": (twist_list(rows, causes["edited line"])
-                                  if "edited line" in causes else None),
+            "window_points": twist_list(rows, causes[CAUSE_IMAGINARY_BETA1]),
+            "double_root_points": twist_list(rows, causes[CAUSE_DOUBLE_ROOT]),
+            "no_sign_change_points": twist_list(rows, causes[CAUSE_NO_SIGN_CHANGE]),
+            "edited_points": (twist_list(rows, causes[CAUSE_EDITED])
+                                  if CAUSE_EDITED in causes else None),
             "crossing": (_nearest_crossing(nu, float(rows["twist_angle"].min()),
                                            float(rows["twist_angle"].max()))
-                         if causes["double root in one step"].any() else None),
+                         if causes[CAUSE_DOUBLE_ROOT].any() else None),
             "caused_points": int(np.logical_or.reduce(physics).sum()),
             "value_rules": {k: int(v.sum()) for k, v in rules.items()},
             "printed_as": {"sloped line": int(0 if horizontal else on_line.sum()),
@@ -409,7 +415,7 @@ def explain_missing(row: pd.Series, sites: pd.DataFrame, runs: dict[str, Hypothe
     text += ("Cause: " + "; ".join(parts) + ". ") if parts else "No computed cause. "
     same = sites[(np.abs(sites["twist_angle"] - t) < 1e-9) & (sites["nu"] != nu)
                  & sites["in_data"]]
-    for _, o in same.iterrows() if causes["double root in one step"].any() else ():
+    for _, o in same.iterrows() if causes[CAUSE_DOUBLE_ROOT].any() else ():
         text += (f"At ν = {o['nu']} the same twist is present and "
                  f"{'reproduced' if o['ok'] else 'not reproduced'} by the best model (its roots "
                  f"p_sym = {o['p_sym']:.7f}, p_anti = {o['p_anti']:.7f} lie "
@@ -423,7 +429,7 @@ def explain_missing(row: pd.Series, sites: pd.DataFrame, runs: dict[str, Hypothe
         text += "No line was written for it (no inserted substitute)."
     return {"nu": nu, "twist_angle": t, "picture_x": x, "grid_step": grid_step,
             "explanation": text.strip(),
-            "causes": [k for k, v in causes.items() if v.any() and k != "edited line"],
-            "crossing": (_nearest_crossing(nu, t, t) if causes["double root in one step"].any()
+            "causes": [k for k, v in causes.items() if v.any() and k != CAUSE_EDITED],
+            "crossing": (_nearest_crossing(nu, t, t) if causes[CAUSE_DOUBLE_ROOT].any()
                          else None),
-            "explained": bool(any(v.any() for k, v in causes.items() if k != "edited line"))}
+            "explained": bool(any(v.any() for k, v in causes.items() if k != CAUSE_EDITED))}
