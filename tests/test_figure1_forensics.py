@@ -42,6 +42,7 @@ from spectral_rod.figure1_forensics import (
     site_physics,
     straight_line,
 )
+from spectral_rod.figure1_forensics.scan import REPORT_RULES
 from spectral_rod.figure_data import figure1_path, load_figure1
 from spectral_rod.wavenumbers import characteristic_roots
 
@@ -203,6 +204,19 @@ def test_scan_upper_end_is_the_ceil_of_the_root_away_from_failures(reference):
         lam = np.array([PI2 * reference(t, nu) for t in om])
         assert np.allclose(sc.upper, 0.002 * np.ceil(lam / 0.002), rtol=0, atol=1e-12)
         assert (sc.lower < lam).all() and (lam <= sc.upper).all()
+
+
+def test_each_report_rule_reports_within_its_band(reference):
+    # a rule's band (report_band) and its reported value are declared together: they must agree
+    om, nu, step = np.array([0.5, 4.0, 7.3]), 1.5, 0.002
+    sc = scan_sign_change(om, np.full(3, nu), "lambda", step)
+    lam = np.array([PI2 * reference(t, nu) for t in om])
+    assert [r.name for r in REPORT_RULES] == ["upper", "lower", "midpoint", "linear"]
+    for rule in REPORT_RULES:
+        off = (sc.report(rule.name) - lam) / step
+        assert (off >= rule.band[0] - 1e-9).all() and (off <= rule.band[1] + 1e-9).all(), rule
+    with pytest.raises(ValueError, match="rule must be 'upper', 'lower', 'midpoint' or 'linear'"):
+        sc.report("nearest")
 
 
 def test_scan_fails_where_both_family_roots_share_a_step():

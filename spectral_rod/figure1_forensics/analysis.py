@@ -37,7 +37,7 @@ from spectral_rod.figure1_forensics.picture import (
 )
 from spectral_rod.figure1_forensics.quantisation import VARIABLES, Hypothesis
 from spectral_rod.figure1_forensics.runs import find_runs, flank_positions
-from spectral_rod.figure1_forensics.scan import RULE_WORDS, report_band, scan_model
+from spectral_rod.figure1_forensics.scan import RULES_BY_NAME, report_band, scan_model
 from spectral_rod.figure_data import (
     FIGURE1_NU,
     FIGURE1_PRINT_QUANTUM,
@@ -180,7 +180,8 @@ class Forensics:
         rule, in words."""
         return {r: {"variable": h.variable, "description": VARIABLES[h.variable].description,
                     "step": h.step, "rule": h.scan_rule,
-                    "reported_at": RULE_WORDS.get(h.scan_rule, h.rounding)}
+                    "reported_at": (RULES_BY_NAME[h.scan_rule].words
+                                    if h.scan_rule in RULES_BY_NAME else h.rounding)}
                 for r, h in self.runs.items()}
 
     @cached_property

@@ -20,7 +20,8 @@ from spectral_rod.figure1_forensics.quantisation import (
 )
 from spectral_rod.figure1_forensics.runs import fit_switch
 from spectral_rod.figure1_forensics.scan import (
-    RULE_WORDS,
+    REPORT_RULES,
+    RULES_BY_NAME,
     ScanResult,
     scan_model,
     scan_sign_change,
@@ -30,7 +31,6 @@ from spectral_rod.figure_data import FIGURE1_X_PER_TWIST, picture_y_from_p_star,
 #: Scan variables: the load and the two coefficients of Eq. inst1, the coefficients scanned
 #: from where they vanish (v >= 0).
 SCAN_VARIABLES = (("lambda", False), ("lambda - nu Omega^2", True), ("lambda - Omega^2", True))
-SCAN_RULES = ("upper", "lower", "midpoint", "linear")
 #: Approximations of pi tried in the normalisation p* = lambda / pi^2.
 PI_APPROXIMATIONS = (3.14, 3.1416, 3.14159)
 #: Twist offsets (in picture x units) tried for "the x coordinate is not the twist computed".
@@ -50,7 +50,7 @@ def _scan_hypothesis(scan: ScanResult, rule: str, twist: NDArray, nu: NDArray,
     return Hypothesis(f"scan{label} {rule}({scan.variable}, {scan.step:g})", scan.variable,
                       scan.step, f"bracket {rule}", y, reproduced(y, picture_y),
                       f"first sign change of D_sym D_anti on {scan.variable} = k {scan.step:g}"
-                      f", reported at {RULE_WORDS[rule]}{note}", scan=scan, scan_rule=rule)
+                      f", reported at {RULES_BY_NAME[rule].words}{note}", scan=scan, scan_rule=rule)
 
 
 def scan_hypotheses(twist: NDArray, nu: NDArray, picture_y: NDArray, steps: dict[str, float]
@@ -60,7 +60,7 @@ def scan_hypotheses(twist: NDArray, nu: NDArray, picture_y: NDArray, steps: dict
     hyps = []
     for var, start in SCAN_VARIABLES:
         scan = scan_sign_change(twist, nu, var, steps[var], start_at_zero=start)
-        hyps += [_scan_hypothesis(scan, rule, twist, nu, picture_y) for rule in SCAN_RULES]
+        hyps += [_scan_hypothesis(scan, rule.name, twist, nu, picture_y) for rule in REPORT_RULES]
     return hyps
 
 

@@ -6,7 +6,9 @@ with its variants (real wavenumbers, single precision, start at zero).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import NDArray
@@ -16,14 +18,41 @@ from spectral_rod.families import p_star_bounds
 from spectral_rod.figure1_forensics.quantisation import VARIABLES, Variable
 from spectral_rod.figure_data import picture_y_from_p_star
 
-#: How each report rule of :meth:`ScanResult.report` reads in words.
-RULE_WORDS = {"upper": "the bracket's upper end", "lower": "the bracket's lower end",
-              "midpoint": "the bracket's midpoint",
-              "linear": "the secant (linear interpolation) in the bracket"}
-#: Where each rule's reported value v lies relative to the root v*, in scan steps, when the
-#: first bracket holds the root: [v* + a step, v* + b step].
-RULE_BANDS = {"upper": (0.0, 1.0), "lower": (-1.0, 0.0), "midpoint": (-0.5, 0.5),
-              "linear": (-1.0, 1.0)}
+
+class ReportRule(NamedTuple):
+    """A rule by which a scan reports its first sign-change bracket (:meth:`ScanResult.report`).
+
+    name: the rule's key (:attr:`Hypothesis.scan_rule`); words: how it reads in the report;
+    band: where the reported value v lies relative to the root v*, in scan steps, when the first
+    bracket holds the root: [v* + band[0] step, v* + band[1] step]; value: the reported v of
+    each point of a scan.
+    """
+
+    name: str
+    words: str
+    band: tuple[float, float]
+    value: Callable[[ScanResult], NDArray[np.float64]]
+
+
+def _secant(scan: ScanResult) -> NDArray[np.float64]:
+    """The root of the line through the bracket's two determinant values (the lower end where
+    they give no finite one)."""
+    with np.errstate(invalid="ignore", divide="ignore"):
+        w = scan.d_lower / (scan.d_lower - scan.d_upper)
+    return scan.lower + (scan.upper - scan.lower) * np.where(np.isfinite(w), w, 0.0)
+
+
+#: The report rules, in the order their hypotheses are fitted (one declaration per rule).
+REPORT_RULES = (
+    ReportRule("upper", "the bracket's upper end", (0.0, 1.0), lambda scan: scan.upper),
+    ReportRule("lower", "the bracket's lower end", (-1.0, 0.0), lambda scan: scan.lower),
+    ReportRule("midpoint", "the bracket's midpoint", (-0.5, 0.5),
+               lambda scan: 0.5 * (scan.lower + scan.upper)),
+    ReportRule("linear", "the secant (linear interpolation) in the bracket", (-1.0, 1.0),
+               _secant),
+)
+#: :data:`REPORT_RULES` by name.
+RULES_BY_NAME = {r.name: r for r in REPORT_RULES}
 
 
 def determinant_product(p: NDArray[np.float64], twist: float, nu: float, *,
@@ -69,18 +98,12 @@ class ScanResult:
     dtype: type = np.float64
 
     def report(self, rule: str) -> NDArray[np.float64]:
-        """The scan variable as reported: 'upper', 'lower', 'midpoint' or 'linear' (secant)."""
-        if rule == "upper":
-            return self.upper
-        if rule == "lower":
-            return self.lower
-        if rule == "midpoint":
-            return 0.5 * (self.lower + self.upper)
-        if rule == "linear":
-            with np.errstate(invalid="ignore", divide="ignore"):
-                w = self.d_lower / (self.d_lower - self.d_upper)
-            return self.lower + (self.upper - self.lower) * np.where(np.isfinite(w), w, 0.0)
-        raise ValueError(f"rule must be 'upper', 'lower', 'midpoint' or 'linear', got {rule!r}")
+        """The scan variable as reported by `rule`, a name of :data:`REPORT_RULES`: 'upper',
+        'lower', 'midpoint' or 'linear' (secant)."""
+        if rule not in RULES_BY_NAME:
+            names = [repr(r) for r in RULES_BY_NAME]
+            raise ValueError(f"rule must be {', '.join(names[:-1])} or {names[-1]}, got {rule!r}")
+        return RULES_BY_NAME[rule].value(self)
 
     def settings(self, **changes: object) -> dict:
         """The keyword arguments of :func:`scan_sign_change` that repeat this scan (`changes`
@@ -160,12 +183,12 @@ def report_band(variable: str, step: float, rule: str, p: NDArray[np.float64],
                 twist: NDArray[np.float64], nu: NDArray[np.float64]
                 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """(low, high): where a scan of `variable` in steps `step`, reported by `rule`, puts p
-    relative to the root p (:data:`RULE_BANDS`, mapped to p): one scan step.
+    relative to the root p (the rule's :attr:`ReportRule.band`, mapped to p): one scan step.
 
     >>> lo, hi = report_band("lambda", 0.002, "upper", np.array([1.0]), 0.5, 1.5)
     >>> float(lo[0]), round(float(hi[0]) * np.pi**2, 12)
     (0.0, 0.002)
     """
-    var, (a, b) = VARIABLES[variable], RULE_BANDS[rule]
+    var, (a, b) = VARIABLES[variable], RULES_BY_NAME[rule].band
     v = var.forward(np.asarray(p, dtype=float), twist, nu)
     return (var.inverse(v + a * step, twist, nu) - p, var.inverse(v + b * step, twist, nu) - p)
