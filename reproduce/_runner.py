@@ -63,15 +63,30 @@ def load_scene(name: str) -> ModuleType:
     return importlib.import_module(f"reproduce.{name}")
 
 
-def git_commit() -> str:
+def git_commit(out: Path | None = None) -> str:
+    """HEAD of the code's checkout, with "+uncommitted changes" if a tracked file differs from
+    it. Files under `out` (the outputs this run regenerates) do not count: they are not code,
+    and a run into a cleared ``paper_figures/`` would otherwise always look uncommitted."""
     try:
-        sha = subprocess.run(["git", "rev-parse", "HEAD"], cwd=CODE_DIR, capture_output=True,
-                             text=True, timeout=10, check=True).stdout.strip()
-        dirty = subprocess.run(["git", "status", "--porcelain", "--untracked-files=no"],
-                               cwd=CODE_DIR, capture_output=True, text=True, timeout=10).stdout
+        top = _git(["rev-parse", "--show-toplevel"]).strip()
+        sha = _git(["rev-parse", "HEAD"]).strip()
+        spec = ["."]
+        if out is not None:
+            try:
+                rel = out.resolve().relative_to(Path(top).resolve())
+            except ValueError:  # the outputs lie outside the checkout
+                rel = None
+            if rel is not None and rel.parts:
+                spec.append(f":(exclude){rel.as_posix()}")
+        dirty = _git(["status", "--porcelain", "--untracked-files=no", "--", *spec], cwd=top)
         return sha + ("+uncommitted changes" if dirty.strip() else "")
     except (OSError, subprocess.SubprocessError):
         return "unknown (not a git checkout)"
+
+
+def _git(args: list[str], cwd: Path | str | None = None) -> str:
+    return subprocess.run(["git", *args], cwd=cwd or CODE_DIR, capture_output=True, text=True,
+                          timeout=10, check=True).stdout
 
 
 def versions() -> dict[str, str]:
@@ -150,7 +165,7 @@ def run_scenes(names: list[str], out: Path, log: Callable[[str], None]) -> dict[
         for stale in remove_stale_temporaries(out):
             log(f"removed {stale.name}, a temporary file of an interrupted earlier run")
         _assemble_report(out)
-        commit = git_commit()
+        commit = git_commit(out)
         write_text(out / "sections" / "_environment.json",
                    json.dumps({"versions": versions(), "commit": commit}, indent=2))
         times: dict[str, float] = {}

@@ -227,3 +227,34 @@ def test_a_ledger_row_without_its_scene_or_with_an_unknown_verdict_is_a_clean_fa
     write_text(tmp_path / "claims.json", json.dumps(odd))
     with pytest.raises(OutputFileError, match="unknown verdicts"):
         run_scenes([], tmp_path, lambda m: None)
+
+
+def test_commit_stamp_ignores_the_outputs_being_regenerated(tmp_path, monkeypatch):
+    # a run into a cleared paper_figures/ stamped every section "+uncommitted changes"
+    import shutil
+
+    import reproduce._runner as runner
+
+    if shutil.which("git") is None:
+        pytest.skip("git not installed")
+    repo = tmp_path / "repo"
+    (repo / "pkg").mkdir(parents=True)
+    (repo / "out").mkdir()
+    (repo / "pkg" / "code.py").write_text("x = 1\n")
+    (repo / "out" / "table.csv").write_text("a\n1\n")
+
+    def git(*args):
+        subprocess.run(["git", "-c", "user.name=t", "-c", "user.email=t@t", *args], cwd=repo,
+                       check=True, capture_output=True)
+
+    git("init", "-q")
+    git("add", ".")
+    git("commit", "-q", "-m", "init")
+    monkeypatch.setattr(runner, "CODE_DIR", repo / "pkg")
+    clean = runner.git_commit(repo / "out")
+    assert len(clean) == 40 and "+" not in clean
+    (repo / "out" / "table.csv").unlink()  # outputs cleared or rewritten: still this commit
+    assert runner.git_commit(repo / "out") == clean
+    assert runner.git_commit(tmp_path / "elsewhere") == clean + "+uncommitted changes"
+    (repo / "pkg" / "code.py").write_text("x = 2\n")  # the code changed: flagged
+    assert runner.git_commit(repo / "out") == clean + "+uncommitted changes"
