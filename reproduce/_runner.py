@@ -66,7 +66,8 @@ def load_scene(name: str) -> ModuleType:
 def git_commit(out: Path | None = None) -> str:
     """HEAD of the code's checkout, with "+uncommitted changes" if a tracked file differs from
     it. Files under `out` (the outputs this run regenerates) do not count: they are not code,
-    and a run into a cleared ``paper_figures/`` would otherwise always look uncommitted."""
+    and a run into a cleared ``paper_figures/`` would otherwise always look uncommitted (unless
+    `out` is the checkout's root itself: then everything counts)."""
     try:
         top = _git(["rev-parse", "--show-toplevel"]).strip()
         sha = _git(["rev-parse", "HEAD"]).strip()
@@ -77,7 +78,7 @@ def git_commit(out: Path | None = None) -> str:
             except ValueError:  # the outputs lie outside the checkout
                 rel = None
             if rel is not None and rel.parts:
-                spec.append(f":(exclude){rel.as_posix()}")
+                spec.append(f":(exclude,literal){rel.as_posix()}")  # no glob in the name
         dirty = _git(["status", "--porcelain", "--untracked-files=no", "--", *spec], cwd=top)
         return sha + ("+uncommitted changes" if dirty.strip() else "")
     except (OSError, subprocess.SubprocessError):

@@ -116,12 +116,12 @@ _EXPORTS = {
     "figure1_picture": "figure_data",
     "Forensics": "figure1_forensics", "analyse_figure1": "figure1_forensics",
     "picture_lines": "figure1_forensics",
-    "CLUSTER_KINDS": "figure1_forensics", "CLUSTER_WINDOW": "figure1_forensics",
-    "CLUSTER_DOUBLE_ROOT": "figure1_forensics",
-    "POINT_CAUSES": "figure1_forensics", "CAUSE_IMAGINARY_BETA1": "figure1_forensics",
-    "FIGURE1_DOT": "figure_data",
-    "FIGURE1_PRINT_QUANTUM": "figure_data",
-    "FIGURE1_Y_PER_P": "figure_data",
+    **{name: "figure1_forensics" for name in (
+        "CLUSTER_KINDS", "CLUSTER_WINDOW", "CLUSTER_DOUBLE_ROOT", "CLUSTER_NO_SIGN_CHANGE",
+        "CLUSTER_EDITED", "CLUSTER_UNEXPLAINED", "POINT_CAUSES", "CAUSE_IMAGINARY_BETA1",
+        "CAUSE_DOUBLE_ROOT", "CAUSE_NO_SIGN_CHANGE", "CAUSE_EDITED")},
+    **{name: "figure_data" for name in (
+        "FIGURE1_DOT", "FIGURE1_PRINT_QUANTUM", "FIGURE1_Y_PER_P", "FIGURE1_X_PER_TWIST")},
     "non_planarity": "measures", "local_maxima": "measures", "family_switches": "measures",
     "increasing_up_to": "measures", "settling_point": "measures", "observed_order": "measures",
     "ring_buckling": "ring_stability", "ring_critical_load": "ring_stability",

@@ -175,11 +175,18 @@ def determinants(p: ArrayLike, twist_angle: ArrayLike, nu: ArrayLike, *,
     >>> d_sym32, _ = determinants([1.002, 1.003], 0.5, 1.5, dtype=np.float32)
     >>> np.sign(d_sym).tolist(), d_sym32.dtype, np.sign(d_sym32).tolist()
     ([1.0, -1.0], dtype('float32'), [1.0, -1.0])
-    >>> [bool(np.isnan(determinants(1.0, 3.0, 1.5, real_wavenumbers=r)[0])) for r in (0, 1)]
+    >>> [bool(np.isnan(determinants(1.0, 3.0, 1.5, real_wavenumbers=r)[0])) for r in (False, True)]
     [False, True]
     """
-    if np.dtype(dtype) not in _DTYPES:
+    try:
+        ok = dtype is not None and np.dtype(dtype) in _DTYPES
+    except TypeError:  # not a dtype at all: named below
+        ok = False
+    if not ok:
         raise ValueError(f"dtype must be np.float64 or np.float32, got {dtype!r}")
+    if not isinstance(real_wavenumbers, (bool, np.bool_)):
+        raise TypeError(f"real_wavenumbers must be True or False, got "
+                        f"{type(real_wavenumbers).__name__}")
     t = np.dtype(dtype).type
     lam = t(np.pi**2) * np.asarray(p, dtype=dtype)
     om = np.asarray(twist_angle, dtype=dtype)

@@ -624,7 +624,9 @@ def destabilisation_threshold(e_ratio: object, load: object, nus: object, *,
     is refined there by Brent's method to ``xtol`` in nu as the root of the twist gain g(nu) =
     max over N > 0 of q_cr(N)/q_cr(0) - 1 (the interval's upper end itself if it is raised
     within the margin only, g in [-RAISE_TOL, 0)); ``math.nan`` if there is no such interval on
-    the grid. ``loads``: q_cr already solved on the grid (shape (len(nus), len(twists)), e.g. a
+    the grid. A node at nu = 1 (the circular ring, where twist changes nothing: g = 0 to
+    round-off) counts as raised and so opens no interval: start the grid above 1 (e.g. 1.01).
+    ``loads``: q_cr already solved on the grid (shape (len(nus), len(twists)), e.g. a
     scan of the caller's), so that the scan solves nothing again; otherwise the scan solves them.
     ``method``: one of :data:`RING_METHODS` (the formulation of every solve). e = E2/E1 and the
     load model as in :func:`ring_critical_load`.

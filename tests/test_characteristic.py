@@ -77,11 +77,17 @@ def test_double_determinants_follow_mpmath_in_both_precisions():
     for dtype, tol in ((np.float64, 1e-13), (np.float32, 1e-5)):
         got = np.array(determinants(p, om, nu, dtype=dtype))
         assert got.dtype == dtype and np.abs(got - ref).max() < tol * scale
+    # single precision throughout, not float64 cast at the end (that is 1e-7 * scale off at most)
+    cast = np.array(determinants(p, om, nu)).astype(np.float32)
+    assert np.abs(np.array(determinants(p, om, nu, dtype=np.float32)) - cast).max() > 1e-9 * scale
     lam = np.pi**2 * p
     imaginary = characteristic_roots(lam, lam / nu, om)[0] < -1e-9
     assert imaginary.any() and (~imaginary).any()
     real = np.array(determinants(p, om, nu, real_wavenumbers=True))
     assert (np.isnan(real).all(axis=0) == imaginary).all()
     assert (real[:, ~imaginary] == np.array(determinants(p, om, nu))[:, ~imaginary]).all()
-    with pytest.raises(ValueError, match="dtype"):
-        determinants(p, om, nu, dtype=np.float16)
+    for bad in (np.float16, None, "foo"):
+        with pytest.raises(ValueError, match="dtype"):
+            determinants(p, om, nu, dtype=bad)
+    with pytest.raises(TypeError, match="real_wavenumbers"):
+        determinants(p, om, nu, real_wavenumbers="no")

@@ -283,8 +283,11 @@ SPECS: dict[str, Spec] = {
     "twist_raises_load": Spec(
         sr.twist_raises_load,
         {"q_twisted": real(-1e6, 1e6), "q_untwisted": real(1e-6, 1e6, 0.0, -1.0)},
+        # the order it must respect, not its formula: at or above q(0) raised, clearly below
+        # (twice the margin) not; the margin itself is pinned in tests/test_ring_stability.py
         lambda r, a: isinstance(r, bool)
-        and r == (a["q_twisted"] >= a["q_untwisted"] * (1 - sr.RING_RAISE_TOL)),
+        and (r if a["q_twisted"] >= a["q_untwisted"] else
+             not r if a["q_twisted"] <= a["q_untwisted"] * (1 - 2 * sr.RING_RAISE_TOL) else True),
         positional=("q_twisted", "q_untwisted")),
     "twist_raises_load_arrays": Spec(
         sr.twist_raises_load, {"q_twisted": ARRAYS, "q_untwisted": real(1e-6, 1e6, 0.0)},

@@ -747,9 +747,9 @@ def measure_torsion_caveat(ev: RingEvidence) -> Measured:
         q_rect = g.sort_values("N")["q"].to_numpy()
         q_iso = np.array([q_at(ev, nu, N, "isotropic", load) for N in TWISTS])
         changes.append(float(np.max(np.abs(q_rect / q_iso - 1))))
-        if nu > 1.0:
-            same &= bool(np.array_equal(twist_raises_load(q_rect[1:], q_rect[0]),
-                                        twist_raises_load(q_iso[1:], q_iso[0])))
+        if nu > 1.0:  # no lowered/raised pattern without a positive q_cr(0): the rule fails
+            same &= bool(q_rect[0] > 0 and q_iso[0] > 0 and np.array_equal(
+                twist_raises_load(q_rect[1:], q_rect[0]), twist_raises_load(q_iso[1:], q_iso[0])))
     ratios = r.groupby("nu")["torsion_ratio"].first()
     return Measured(
         numbers={"torsion_ratio": {float(k): float(v) for k, v in ratios.items()},

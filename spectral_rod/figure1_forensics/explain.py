@@ -168,7 +168,8 @@ def value_rules(rows: pd.DataFrame, left: pd.Series | None, right: pd.Series | N
 
 def point_causes(rows: pd.DataFrame) -> dict[str, NDArray[np.bool_]]:
     """Computed reasons why the covering run's procedure fails at each row (keys
-    :data:`POINT_CAUSES`, in that order).
+    :data:`POINT_CAUSES`, in that order; 'edited line' only where `rows` has an ``edited``
+    column).
 
     'imaginary beta_1': X_- < 0 at p* *and* inside the closed-form window (both computations
     must agree); 'double root in one step': both family roots in one step of the run's lattice;
