@@ -132,7 +132,7 @@ def _own_run(sites: pd.DataFrame, runs: dict[str, Hypothesis], column: str) -> N
     return out
 
 
-@dataclass
+@dataclass(frozen=True)
 class Forensics:
     """Everything :func:`analyse_figure1` found; :meth:`to_json` is figure1_forensics.json.
 
@@ -189,7 +189,8 @@ class Forensics:
         """Per site: the band [band_low, band_high] of p - p* in which its covering run's
         procedure puts the value it reports (one scan step, :func:`report_band`);
         NaN where that scan finds no value. Computed once: :func:`analyse_figure1` has
-        finished the sites and runs it depends on before it builds the Forensics."""
+        finished the sites and runs it depends on before it builds the Forensics (frozen: its
+        fields are not reassigned; callers treat its frames, this one included, as read-only)."""
         s = self.sites
         t, nu, p = (s[c].to_numpy() for c in ("twist_angle", "nu", "p_true"))
         run, found = s["run"].to_numpy(), s["scan_found"].to_numpy(dtype=bool)
