@@ -187,8 +187,14 @@ def determinants(p: ArrayLike, twist_angle: ArrayLike, nu: ArrayLike, *,
     if not isinstance(real_wavenumbers, (bool, np.bool_)):
         raise TypeError(f"real_wavenumbers must be True or False, got "
                         f"{type(real_wavenumbers).__name__}")
-    t = np.dtype(dtype).type
-    lam = t(np.pi**2) * np.asarray(p, dtype=dtype)
+    return _determinants(p, twist_angle, nu, np.dtype(dtype).type, real_wavenumbers)
+
+
+def _determinants(p: ArrayLike, twist_angle: ArrayLike, nu: ArrayLike, dtype: type,
+                  real_wavenumbers: bool) -> tuple[NDArray[np.floating], NDArray[np.floating]]:
+    """:func:`determinants` without its argument checks (the double-precision root finders call
+    it once per refinement step)."""
+    lam = dtype(np.pi**2) * np.asarray(p, dtype=dtype)
     om = np.asarray(twist_angle, dtype=dtype)
     mu = lam / np.asarray(nu, dtype=dtype)
     om2 = om * om
@@ -335,14 +341,15 @@ def _double_scan(om: NDArray[np.float64], nv: NDArray[np.float64], top: NDArray[
     index, or (`family` given) the lowest root of family[j] alone at point j (index 0 where
     found, -1 where not)."""
     def values(points, grid):
-        d = np.stack(determinants(grid, om[points, None], nv[points, None]), axis=1)
+        d = np.stack(_determinants(grid, om[points, None], nv[points, None], np.float64, False),
+                     axis=1)
         return d if family is None else d[np.arange(points.size), family[points]][:, None]
 
     def refine(points, k, a, b):
         fam = k if family is None else family[points]
 
         def f(j, x):
-            d = determinants(x, om[points[j]], nv[points[j]])
+            d = _determinants(x, om[points[j]], nv[points[j]], np.float64, False)
             return np.where(fam[j] == 0, d[0], d[1])
         return bracketed_roots(f, a, b)
 

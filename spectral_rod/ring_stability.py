@@ -589,16 +589,16 @@ def twist_raises_load(q_twisted: ArrayLike, q_untwisted: object) -> bool | NDArr
     return bool(raised) if raised.ndim == 0 else raised
 
 
+def _highest_twisted(q: NDArray[np.float64], twists: tuple[int, ...]) -> tuple[float, float]:
+    """(max over N > 0 of q(N), q(0)) for loads `q` ordered like `twists`."""
+    return (float(max(q[i] for i, N in enumerate(twists) if N > 0)),
+            float(q[twists.index(0)]))
+
+
 def _twist_gain(q: NDArray[np.float64], twists: tuple[int, ...]) -> float:
     """max over N > 0 of q(N)/q(0) - 1 for loads `q` ordered like `twists`."""
-    q0 = q[twists.index(0)]
-    return float(max(q[i] for i, N in enumerate(twists) if N > 0) / q0 - 1.0)
-
-
-def _twist_raises(q: NDArray[np.float64], twists: tuple[int, ...]) -> bool:
-    """Whether some N > 0 raises q (ordered like `twists`) over q(0) (:func:`twist_raises_load`)."""
-    return bool(twist_raises_load(max(q[i] for i, N in enumerate(twists) if N > 0),
-                                  q[twists.index(0)]))
+    q_max, q0 = _highest_twisted(q, twists)
+    return q_max / q0 - 1.0
 
 
 def _check_grid_loads(loads: object, shape: tuple[int, int]) -> NDArray[np.float64] | None:
@@ -647,7 +647,7 @@ def destabilisation_threshold(e_ratio: object, load: object, nus: object, *,
                          for N in Ns])
 
     loads_at = [known[i] if known is not None else solve(float(nu)) for i, nu in enumerate(grid)]
-    raised = [_twist_raises(q, Ns) for q in loads_at]
+    raised = [bool(twist_raises_load(*_highest_twisted(q, Ns))) for q in loads_at]
     i = next((i for i in range(grid.size - 1) if not raised[i] and raised[i + 1]), None)
     if i is None:
         return math.nan

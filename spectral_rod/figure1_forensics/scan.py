@@ -70,8 +70,8 @@ def determinant_product(p: NDArray[np.float64], twist: float, nu: float, *,
     >>> np.sign(determinant_product(np.array([1.002, 1.003]), 0.5, 1.5)).tolist()
     [-1.0, 1.0]
     """
-    # a scan may step far from the roots, where cosh overflows (soonest in single precision):
-    # an infinite value never closes a bracket (_scan_one), so the warning says nothing
+    # defensive, as before the kernel was shared: cosh overflows in single precision only for
+    # -X_- > ~3e4, far outside the scans' range, and an infinite value closes no bracket
     with np.errstate(over="ignore"):
         d_sym, d_anti = determinants(p, twist, nu, dtype=dtype,
                                      real_wavenumbers=real_wavenumbers)
