@@ -38,7 +38,7 @@ from spectral_rod.results import CriticalLoad, as_output
 from spectral_rod.router import ROD_METHODS, check_route, route, route_point
 from spectral_rod.straight_rod import N_MAX, collocation_critical_load
 from spectral_rod.straight_rod.eigensolver import POWER_RTOL
-from spectral_rod.straight_rod.few_points import LEAN_MAX_DEGREE, solve_few
+from spectral_rod.straight_rod.few_points import LEAN_MAX_DEGREE, solve_one
 from spectral_rod.straight_rod.resolution import (
     error_estimate_scalar,
     initial_degree_scalar,
@@ -171,16 +171,15 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
     deg = initial_degree_scalar(om, tol)
     if error_estimate_scalar(0.0, om) >= tol:
         return None  # tol below the round-off floor: unconverged, the general path flags it
+    rtol = max(0.01 * tol, POWER_RTOL)
     while True:  # the degree loop of collocation_critical_load, for one point
         if deg > LEAN_MAX_DEGREE:
             return None
         # no BLAS thread limit here: the lean solver's matrices (m < 100) are below
         # OpenBLAS's threading thresholds, and the limit would cost 4 us of a ~60 us call
-        lam, tails, ok = solve_few(deg, np.array([om]), np.array([nv]),
-                                   max(0.01 * tol, POWER_RTOL))
-        if not ok[0]:
+        (l0, l1), (t0, t1), ok = solve_one(deg, om, nv, rtol)
+        if not ok:
             return None
-        (l0, l1), (t0, t1) = lam[:, 0].tolist(), tails[:, 0].tolist()
         best = 1 if l1 < l0 * (1.0 - 1e-14) else 0  # as pick_family
         tail = max(t0, t1) if abs(l0 - l1) <= 1e-6 * min(l0, l1) else (t0, t1)[best]
         err = error_estimate_scalar(tail, om)

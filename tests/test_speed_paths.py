@@ -59,7 +59,7 @@ def test_scalar_path_does_not_solve_below_the_round_off_floor(monkeypatch, refer
     def _must_not_run(*args, **kwargs):
         raise AssertionError("the scalar path solved a point whose tol is below the floor")
 
-    monkeypatch.setattr(critical, "solve_few", _must_not_run)
+    monkeypatch.setattr(critical, "solve_one", _must_not_run)
     with pytest.warns(ConvergenceWarning, match="tol=1e-14 not met"):
         res = critical_load(45.0, 1.5, tol=1e-14, full_output=True)
     assert not res.converged and res.error_estimate > 1e-14

@@ -30,6 +30,7 @@ the same Rayleigh quotient (measured: see :func:`spectral_rod.critical_load`).
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -46,7 +47,8 @@ from spectral_rod.straight_rod.eigensolver import (
 )
 from spectral_rod.straight_rod.resolution import tails_of
 
-__all__ = ["LEAN_MAX_DEGREE", "SQUARING_MAX", "DensePencils", "dense_pencils", "solve_few"]
+__all__ = ["LEAN_MAX_DEGREE", "SQUARING_MAX", "DensePencils", "dense_pencils", "solve_few",
+           "solve_one"]
 
 #: Up to this size m the powers of M are taken by squaring (a few matrix products), above it by
 #: products with the vectors: a squaring costs ~m^3, a step ~m^2 but ~1 us of call overhead;
@@ -96,21 +98,96 @@ def _inverses(f_t: NDArray[np.float64]) -> NDArray[np.float64] | None:
     """F^{-1} for each matrix of a stack given as F^T in C order (LU and inverse by LAPACK,
     overwriting the input), or None if any F is singular (the caller then falls back)."""
     flat = f_t.reshape(-1, *f_t.shape[-2:])
-    out = []
+    out = np.empty_like(flat)
     for j in range(flat.shape[0]):
         lu, piv, info = dgetrf(flat[j].T, overwrite_a=1)
         if info != 0:
             return None
-        inv, info = dgetri(lu, piv, overwrite_lu=1)
+        out[j], info = dgetri(lu, piv, overwrite_lu=1)
         if info != 0:
             return None
-        out.append(inv)
-    return np.array(out).reshape(f_t.shape)
+    return out.reshape(f_t.shape)
 
 
 def _dot(a: NDArray[np.float64], b: NDArray[np.float64]) -> NDArray[np.float64]:
     """Dot products over the last axis (as a batched matmul: the fastest for short vectors)."""
     return (a[..., None, :] @ b[..., :, None])[..., 0, 0]
+
+
+def _steps(rtol: float) -> int:
+    """Power steps k: 8 (3 squarings) where rtol >= 1e-8, else 16 (4)."""
+    return 8 if rtol >= 1e-8 else 16
+
+
+def _power_iterates(mat: NDArray[np.float64], start: NDArray[np.float64], steps: int
+                    ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """x = M^k x0 and u^T = x0^T M^k (k = steps) for a stack of M (module docstring, step 2)."""
+    if mat.shape[-1] <= SQUARING_MAX:  # log2(steps) products of matrices
+        power = mat
+        for _ in range(steps.bit_length() - 1):
+            power = power @ power
+        return power @ start, start @ power
+    x = u = np.broadcast_to(start, mat.shape[:-1])  # steps products with vectors
+    for _ in range(steps):
+        x, u = (mat @ x[..., None])[..., 0], (u[..., None, :] @ mat)[..., 0, :]
+    return x, u
+
+
+def _quotients(mats: NDArray[np.float64], f_inv: NDArray[np.float64],
+               mat: NDArray[np.float64], x: NDArray[np.float64], u: NDArray[np.float64],
+               start: NDArray[np.float64]) -> tuple[NDArray[np.float64], ...]:
+    """x1 = M x, the pencil's left vector y, its quotient y^T A x1 / y^T B x1 in double
+    precision, and the power estimates theta_k, theta_2k (module docstring, steps 3-4), for
+    stacks (..., family) of the pencils [F^T, A^T, B^T] (`mats`), F^{-1}, M and the iterates."""
+    x1 = (mat @ x[..., None])[..., 0]
+    y = ((u[..., None, :] @ mat) @ f_inv)[..., 0, :]  # left eigenvector of the pencil
+    ab_x = (x1[..., None, None, :] @ mats[..., 1:, :, :])[..., 0, :]  # (A x1, B x1)
+    theta_k = (x1 @ start) / (x @ start)  # x0^T M^(k+1) x0 / x0^T M^k x0
+    theta_2k = _dot(u, x1) / _dot(u, x)
+    num_den = (ab_x @ y[..., None])[..., 0]  # (y^T A x1, y^T B x1)
+    lam = num_den[..., 0] / num_den[..., 1]
+    return x1, y, lam, theta_k, theta_2k
+
+
+def _extended_quotient(n: int, family: int, twist: NDArray[np.float64],
+                       nu: NDArray[np.float64], y: NDArray[np.float64], x1: NDArray[np.float64]
+                       ) -> NDArray[np.float64]:
+    """The pencil's quotient of one family in extended precision, as the batched engine's
+    (:func:`.eigensolver.pencil_rayleigh_quotient`), for |Omega| > LONG_TWIST."""
+    return pencil_rayleigh_quotient(family_operator(n, FAMILIES[family]), twist, nu, y, x1)
+
+
+def solve_one(n: int, twist: float, nu: float, rtol: float
+              ) -> tuple[list[float], list[float], bool]:
+    """:func:`solve_few` for one point given as Python floats, without its array bookkeeping
+    (a scalar call's cost is mostly numpy's per-call overhead): lambda = pi^2 p and the tail
+    of both families (lists [symmetric, antisymmetric]) and whether both converged.
+
+    >>> lam, tails, ok = solve_one(22, 3.0, 1.5, 1e-14)
+    >>> ok, round(min(lam) / 9.869604401089358, 9)
+    (True, 1.078092611)
+    """
+    dp = dense_pencils(n)
+    m = dp.mass.shape[1]
+    coef = np.array([*(t.coefficient(twist, nu) for t in INST1), 1.0])
+    mats = (coef @ dp.pieces).reshape(2, 3, m, m)
+    f_inv = _inverses(mats[:, 0])  # overwrites F^T (not needed after)
+    if f_inv is None:
+        return [math.nan, math.nan], [math.inf, math.inf], False
+    with np.errstate(all="ignore"):  # overflow (a spurious eigenvalue at SHIFT): rejected below
+        mat = f_inv @ dp.mass
+        x, u = _power_iterates(mat, dp.start, _steps(rtol))
+        x1, y, lam, theta_k, theta_2k = _quotients(mats, f_inv, mat, x, u, dp.start)
+        if abs(twist) > LONG_TWIST:
+            for f in range(2):
+                lam[f] = _extended_quotient(n, f, np.array([twist]), np.array([nu]),
+                                            y[f:f + 1], x1[f:f + 1])[0]
+        delta = np.abs(theta_2k - theta_k) / np.abs(theta_2k)
+        tails = tails_of((dp.tail_rows @ x1[..., None])[..., 0])
+    lam_, tails_ = lam.tolist(), tails.tolist()
+    ok = all(d * d <= rtol and t > 0 and v >= SHIFT and math.isfinite(tl) for d, t, v, tl
+             in zip(delta.tolist(), theta_2k.tolist(), lam_, tails_, strict=True))
+    return lam_, tails_, ok
 
 
 def solve_few(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol: float
@@ -119,43 +196,28 @@ def solve_few(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol:
     whether both families converged, at flat arrays of points at degree n (module docstring).
 
     ``rtol`` is the accepted relative error of lambda (as ``POWER_RTOL`` of the batched
-    engine); 3 squarings (8 steps) where rtol >= 1e-8, else 4 (16 steps).
+    engine); 3 squarings (8 steps) where rtol >= 1e-8, else 4 (16 steps). One point is
+    :func:`solve_one`'s (so a one-point array and a scalar call agree bit for bit).
     """
+    if twist.size == 1:
+        lam1, tails1, ok1 = solve_one(n, float(twist[0]), float(nu[0]), rtol)
+        return np.array(lam1)[:, None], np.array(tails1)[:, None], np.array([ok1])
     dp = dense_pencils(n)
     pts, m = twist.size, dp.mass.shape[1]
-    if pts == 1:  # Python floats: a third of the array version's cost
-        a, b = float(twist[0]), float(nu[0])
-        coef = np.array([[*(t.coefficient(a, b) for t in INST1), 1.0]])
-    else:
-        coef = np.hstack([term_coefficients(twist, nu), np.ones((pts, 1))])
+    coef = np.hstack([term_coefficients(twist, nu), np.ones((pts, 1))])
     mats = (coef @ dp.pieces).reshape(pts, 2, 3, m, m)
     f_inv = _inverses(mats[:, :, 0])  # overwrites F^T (not needed after)
     if f_inv is None:
         return np.full((2, pts), np.nan), np.full((2, pts), np.inf), np.zeros(pts, bool)
     with np.errstate(all="ignore"):  # overflow (a spurious eigenvalue at SHIFT): rejected below
         mat = f_inv @ dp.mass
-        steps = 8 if rtol >= 1e-8 else 16
-        if m <= SQUARING_MAX:  # log2(steps) products of matrices
-            power = mat
-            for _ in range(steps.bit_length() - 1):
-                power = power @ power
-            x = power @ dp.start  # M^k x0
-            u = dp.start @ power  # x0^T M^k
-        else:  # steps products with vectors
-            x = u = np.broadcast_to(dp.start, (pts, 2, m))
-            for _ in range(steps):
-                x, u = (mat @ x[..., None])[..., 0], (u[..., None, :] @ mat)[..., 0, :]
-        x1 = (mat @ x[..., None])[..., 0]
-        y = ((u[..., None, :] @ mat) @ f_inv)[..., 0, :]  # left eigenvector of the pencil
-        ab_x = (x1[:, :, None, None, :] @ mats[:, :, 1:])[..., 0, :]  # (A x1, B x1)
-        theta_k = (x1 @ dp.start) / (x @ dp.start)  # x0^T M^(k+1) x0 / x0^T M^k x0
-        theta_2k = _dot(u, x1) / _dot(u, x)
-        lam = _dot(y, ab_x[:, :, 0]) / _dot(y, ab_x[:, :, 1])
+        x, u = _power_iterates(mat, dp.start, _steps(rtol))
+        x1, y, lam, theta_k, theta_2k = _quotients(mats, f_inv, mat, x, u, dp.start)
         big = np.flatnonzero(np.abs(twist) > LONG_TWIST)
-        for f, family in enumerate(FAMILIES):  # as the batched engine: extended precision
+        for f in range(2):  # as the batched engine: extended precision
             if big.size:
-                lam[big, f] = pencil_rayleigh_quotient(family_operator(n, family), twist[big],
-                                                        nu[big], y[big, f], x1[big, f])
+                lam[big, f] = _extended_quotient(n, f, twist[big], nu[big], y[big, f],
+                                                 x1[big, f])
         delta = np.abs(theta_2k - theta_k) / np.abs(theta_2k)
         tails = tails_of((dp.tail_rows @ x1[..., None])[..., 0])
     ok = (delta * delta <= rtol) & (theta_2k > 0) & (lam >= SHIFT) & np.isfinite(tails)
