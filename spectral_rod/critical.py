@@ -154,8 +154,10 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
     or numpy floats, or None wherever the general path must answer (any other input, a
     non-collocation route, a forced degree, a point the lean solver does not accept or whose
     estimate misses tol). The computation is the general path's for one point, without its
-    array bookkeeping (measured 2026-12-01 at Omega = 3, nu = 1.5: 63 us a scalar call, 213 us a
-    one-point array call; `python -m pytest -m bench` measures the scalar loop)."""
+    array bookkeeping: it calls :func:`spectral_rod.straight_rod.few_points.solve_one` with
+    Python floats (measured 2026-12-02 at Omega = 3, nu = 1.5: 58-59 us a scalar call, 67 us
+    before solve_one, 210 us a one-point array call; `python -m pytest -m bench` measures the
+    scalar loop)."""
     if not (isinstance(twist_angle, (float, int)) and isinstance(nu, (float, int))
             and isinstance(tol, float) and n is None and method in ("auto", "collocation")
             and isinstance(full_output, (bool, np.bool_))) or isinstance(twist_angle, bool) \

@@ -20,7 +20,7 @@ from spectral_rod.characteristic import characteristic_double_batch
 from spectral_rod.router import NEAR_DEGENERATE, TWIST_ROUTE, route, route_point
 from spectral_rod.sign_scan import bracketed_roots, lowest_root, lowest_roots
 from spectral_rod.straight_rod.eigensolver import solve_family
-from spectral_rod.straight_rod.few_points import solve_few
+from spectral_rod.straight_rod.few_points import solve_few, solve_one
 
 TWISTS = (0.0, 1e-3, 0.7, 3.0, 6.3, 9.9, 20.0, 45.0)
 NUS = (1.0 + 1e-6, 1.001, 1.1, 1.5, 4.0, 100.0)
@@ -88,6 +88,27 @@ def test_lean_solver_matches_the_batched_engine():
         for f, fam in enumerate(("symmetric", "antisymmetric")):
             ref, _, _ = solve_family(n, fam, om, nu, rtol=1e-14)
             assert np.max(np.abs(lam[f] / ref - 1)) <= 2e-14
+
+
+def test_one_point_solver_matches_the_batched_engine_and_the_batch_path():
+    # solve_one (Python floats, (family, m, m) stacks) against the batched engine and against
+    # solve_few's several-point path, at degrees with squaring (24) and with vector steps (40),
+    # with and without the extended-precision quotient (|Omega| > 20)
+    om = np.array([0.3, 6.0, 15.0, 45.0])
+    nu = np.array([1.1, 1.3, 10.0, 1.5])
+    for n in (24, 40):
+        few, few_tails, few_ok = solve_few(n, om, nu, 1e-14)
+        for j in range(om.size):
+            bound = np.finfo(float).eps * (32 + 0.3 * om[j] ** 2)  # critical_load's docstring
+            lam, tails, ok = solve_one(n, float(om[j]), float(nu[j]), 1e-14)
+            assert ok == bool(few_ok[j])
+            assert np.max(np.abs(np.array(lam) / few[:, j] - 1)) <= bound
+            assert np.allclose(tails, few_tails[:, j], rtol=1e-6, atol=1e-14)  # round-off: 1e-16
+            if not ok:
+                continue
+            for f, fam in enumerate(("symmetric", "antisymmetric")):
+                ref, _, _ = solve_family(n, fam, om[j:j + 1], nu[j:j + 1], rtol=1e-14)
+                assert abs(lam[f] / ref[0] - 1) <= bound
 
 
 def test_lean_solver_declines_what_it_cannot_certify():
