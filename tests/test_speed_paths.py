@@ -12,6 +12,8 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from threadpoolctl import threadpool_info, threadpool_limits
 
 from spectral_rod import ConvergenceWarning, critical_load
@@ -109,6 +111,47 @@ def test_one_point_solver_matches_the_batched_engine_and_the_batch_path():
             for f, fam in enumerate(("symmetric", "antisymmetric")):
                 ref, _, _ = solve_family(n, fam, om[j:j + 1], nu[j:j + 1], rtol=1e-14)
                 assert abs(lam[f] / ref[0] - 1) <= bound
+
+
+def test_small_degree_groups_are_pooled_at_the_next_degree():
+    from spectral_rod.straight_rod.collocation import MIN_GROUP, PROMOTE_MAX, solve_degrees
+
+    small = MIN_GROUP // 4
+    n = np.repeat([16, 18, 20], [small, small, MIN_GROUP])
+    assert solve_degrees(n).tolist() == [20] * n.size  # pooled up to MIN_GROUP points
+    n = np.repeat([16, 16 + PROMOTE_MAX + 2], [small, small])
+    assert solve_degrees(n).tolist() == n.tolist()  # too far apart: each at its own
+    n = np.repeat([16, 18, 20], [MIN_GROUP, small, MIN_GROUP])
+    assert solve_degrees(n).tolist() == [16] * MIN_GROUP + [20] * (small + MIN_GROUP)
+    n = np.array([16, 18, 18, 20])  # a pool for the lean solver: no promotion
+    assert solve_degrees(n).tolist() == n.tolist()
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.integers(4, 40).map(lambda k: 2 * k), min_size=1, max_size=600))
+def test_pooled_degrees_are_never_lower_nor_far_higher(degrees):
+    from spectral_rod.straight_rod.collocation import PROMOTE_MAX, solve_degrees
+
+    n = np.array(degrees)
+    out = solve_degrees(n)
+    assert np.all(out >= n) and np.all(out - n <= PROMOTE_MAX)
+    assert set(out.tolist()) <= set(n.tolist())  # solved at degrees the call has
+
+
+def test_a_pooled_call_meets_tol_and_agrees_with_scalar_calls(reference):
+    # one curve of 80 points spans degrees 16-26: its small groups are solved at higher degrees
+    from spectral_rod.straight_rod.collocation import solve_degrees
+    from spectral_rod.straight_rod.resolution import initial_degree
+
+    tw = np.linspace(0.1, 12.0, 80)
+    assert np.any(solve_degrees(initial_degree(tw, 1e-12)) > initial_degree(tw, 1e-12))
+    res = critical_load(tw, 1.3, full_output=True)
+    assert res.converged.all() and np.any(res.n > initial_degree(tw, 1e-12))
+    single = [critical_load(float(a), 1.3, full_output=True) for a in tw]
+    for r, p, e in zip(single, res.p_star, res.error_estimate, strict=True):
+        assert abs(p / r.p_star - 1) <= max(e, r.error_estimate)  # critical_load's docstring
+    for i in (0, 40, 79):
+        assert abs(res.p_star[i] / reference(float(tw[i]), 1.3) - 1) <= res.error_estimate[i]
 
 
 def test_lean_solver_declines_what_it_cannot_certify():
