@@ -125,6 +125,8 @@ def test_small_degree_groups_are_pooled_at_the_next_degree():
     assert solve_degrees(n).tolist() == [16] * MIN_GROUP + [20] * (small + MIN_GROUP)
     n = np.array([16, 18, 18, 20])  # a pool for the lean solver: no promotion
     assert solve_degrees(n).tolist() == n.tolist()
+    n = np.repeat([60, 64, 66, 70], small)  # not across nor above LEAN_MAX_DEGREE = 64
+    assert solve_degrees(n).tolist() == [64] * (2 * small) + [66] * small + [70] * small
 
 
 @settings(max_examples=200, deadline=None)

@@ -66,7 +66,8 @@ def few_points_limit(n: int) -> int:
 #: degree, at most PROMOTE_MAX above a point's own (a higher degree is at least as accurate):
 #: one batched solve costs ~0.35 ms per family whatever its size, a point ~5-10 us in it.
 #: A pool small enough for the lean solver is solved at its points' own degrees instead (the
-#: lean solver has no such fixed cost, and its cost per point grows with the degree).
+#: lean solver has no such fixed cost, and its cost per point grows with the degree). Above
+#: LEAN_MAX_DEGREE a point's own cost (~k^3) outweighs the fixed cost: no pooling there.
 MIN_GROUP, PROMOTE_MAX = 200, 12
 
 
@@ -82,8 +83,9 @@ def solve_degrees(n: NDArray[np.int_]) -> NDArray[np.int_]:
     for i in range(degs.size):
         last = i + 1 == degs.size
         pooled = int(counts[start:i + 1].sum())
-        if last or pooled >= MIN_GROUP or degs[i + 1] - degs[start] > PROMOTE_MAX:
-            if pooled > few_points_limit(int(degs[i])):
+        if last or pooled >= MIN_GROUP or degs[i + 1] - degs[start] > PROMOTE_MAX \
+                or degs[i + 1] > LEAN_MAX_DEGREE:
+            if pooled > few_points_limit(int(degs[i])) and degs[i] <= LEAN_MAX_DEGREE:
                 target[start:i + 1] = degs[i]
             start = i + 1
     return target[np.searchsorted(degs, n)]
