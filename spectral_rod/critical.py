@@ -37,7 +37,7 @@ from spectral_rod.families import FAMILIES
 from spectral_rod.results import CriticalLoad, as_output
 from spectral_rod.router import ROD_METHODS, check_route, route, route_point
 from spectral_rod.straight_rod import N_MAX, collocation_critical_load
-from spectral_rod.straight_rod.eigensolver import POWER_RTOL
+from spectral_rod.straight_rod.eigensolver import iteration_rtol
 from spectral_rod.straight_rod.few_points import LEAN_MAX_DEGREE, solve_one
 from spectral_rod.straight_rod.resolution import (
     error_estimate_scalar,
@@ -173,7 +173,7 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
     deg = initial_degree_scalar(om, tol)
     if error_estimate_scalar(0.0, om) >= tol:
         return None  # tol below the round-off floor: unconverged, the general path flags it
-    rtol = max(0.01 * tol, POWER_RTOL)
+    rtol = iteration_rtol(tol)
     while True:  # the degree loop of collocation_critical_load, for one point
         if deg > LEAN_MAX_DEGREE:
             return None
@@ -222,9 +222,10 @@ def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None
     Scalar and array calls: a collocation point is solved by the lean solver
     (:mod:`spectral_rod.straight_rod.few_points`) in a scalar call and whenever at most
     ``few_points_limit(n)`` (24 up to n = 30, fewer above) points of a call share its degree,
-    by the batched engine otherwise; an array call pools its small degree groups at a higher
-    degree (:func:`spectral_rod.straight_rod.collocation.solve_degrees`: one batched solve has a
-    fixed cost of ~0.35 ms per family). A scalar call and a one-point array call give identical
+    by the batched engine otherwise; an array call pools degree groups at a higher degree where
+    a measured cost model says that is cheaper
+    (:func:`spectral_rod.straight_rod.collocation.solve_degrees`; per chunk of
+    :data:`CHUNK` points). A scalar call and a one-point array call give identical
     results. A point in a larger call differs from its scalar call by at most the larger of the
     two error estimates, and by at most the round-off part eps (32 + 0.3 Omega^2) where both use
     the same degree (the two engines round the same Rayleigh quotient differently). Measured

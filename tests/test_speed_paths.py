@@ -73,9 +73,11 @@ def test_scalar_and_large_batch_agree_to_the_stated_bound(reference):
     # a batch of more than FEW_POINTS points of one degree takes the batched engine
     tw = np.linspace(4.0, 4.6, 60)
     nv = np.full(tw.size, 1.3)
-    batch = critical_load(tw, nv)
+    res = critical_load(tw, nv, full_output=True)
+    batch = res.p_star
     single = np.array([critical_load(float(a), 1.3) for a in tw])
-    bound = np.finfo(float).eps * (32 + 0.3 * tw**2)  # critical_load's docstring
+    assert np.all(res.n == critical_load(4.3, 1.3, full_output=True).n)  # one degree: no pooling
+    bound = np.finfo(float).eps * (32 + 0.3 * tw**2)  # critical_load's docstring, equal degree
     assert np.all(np.abs(single / batch - 1) <= bound)
     for i in (0, 30, 59):
         assert abs(single[i] / reference(float(tw[i]), 1.3) - 1) <= 1e-13
@@ -113,46 +115,52 @@ def test_one_point_solver_matches_the_batched_engine_and_the_batch_path():
                 assert abs(lam[f] / ref[0] - 1) <= bound
 
 
-def test_small_degree_groups_are_pooled_at_the_next_degree():
-    from spectral_rod.straight_rod.collocation import MIN_GROUP, PROMOTE_MAX, solve_degrees
+def test_degree_groups_are_pooled_where_the_cost_model_says_it_is_cheaper():
+    from spectral_rod.straight_rod.collocation import solve_degrees
 
-    small = MIN_GROUP // 4
-    n = np.repeat([16, 18, 20], [small, small, MIN_GROUP])
-    assert solve_degrees(n).tolist() == [20] * n.size  # pooled up to MIN_GROUP points
-    n = np.repeat([16, 16 + PROMOTE_MAX + 2], [small, small])
-    assert solve_degrees(n).tolist() == n.tolist()  # too far apart: each at its own
-    n = np.repeat([16, 18, 20], [MIN_GROUP, small, MIN_GROUP])
-    assert solve_degrees(n).tolist() == [16] * MIN_GROUP + [20] * (small + MIN_GROUP)
-    n = np.array([16, 18, 18, 20])  # a pool for the lean solver: no promotion
+    n = np.repeat([16, 18, 20], [50, 50, 300])
+    assert solve_degrees(n).tolist() == [20] * n.size  # two small groups join a large one
+    n = np.repeat([16, 28], [150, 1])  # one stray point does not lift 150 points by 12
     assert solve_degrees(n).tolist() == n.tolist()
-    n = np.repeat([60, 64, 66, 70], small)  # not across nor above LEAN_MAX_DEGREE = 64
-    assert solve_degrees(n).tolist() == [64] * (2 * small) + [66] * small + [70] * small
+    n = np.array([16, 18, 18, 20])  # the lean solver's: no fixed cost to save
+    assert solve_degrees(n).tolist() == n.tolist()
+    n = np.repeat([60, 64, 66, 70], 50)  # not across nor above LEAN_MAX_DEGREE = 64
+    assert solve_degrees(n)[100:].tolist() == n[100:].tolist()
+
+
+def _plan_cost(n, solved_at):
+    from spectral_rod.straight_rod.collocation import solve_cost
+
+    degs, counts = np.unique(solved_at, return_counts=True)
+    return sum(solve_cost(int(c), int(d)) for d, c in zip(degs, counts, strict=True))
 
 
 @settings(max_examples=200, deadline=None)
 @given(st.lists(st.integers(4, 40).map(lambda k: 2 * k), min_size=1, max_size=600))
-def test_pooled_degrees_are_never_lower_nor_far_higher(degrees):
-    from spectral_rod.straight_rod.collocation import PROMOTE_MAX, solve_degrees
+def test_pooled_degrees_never_lower_and_never_costlier(degrees):
+    from spectral_rod.straight_rod.collocation import solve_degrees
+    from spectral_rod.straight_rod.few_points import LEAN_MAX_DEGREE
 
     n = np.array(degrees)
     out = solve_degrees(n)
-    assert np.all(out >= n) and np.all(out - n <= PROMOTE_MAX)
-    assert set(out.tolist()) <= set(n.tolist())  # solved at degrees the call has
+    assert np.all(out >= n) and set(out.tolist()) <= set(n.tolist())
+    assert np.all(out[n > LEAN_MAX_DEGREE] == n[n > LEAN_MAX_DEGREE])
+    assert _plan_cost(n, out) <= _plan_cost(n, n) * (1 + 1e-12)  # by the model it pools on
 
 
 def test_a_pooled_call_meets_tol_and_agrees_with_scalar_calls(reference):
-    # one curve of 80 points spans degrees 16-26: its small groups are solved at higher degrees
+    # one curve of 300 points spans degrees 16-28: its groups are pooled at higher degrees
     from spectral_rod.straight_rod.collocation import solve_degrees
     from spectral_rod.straight_rod.resolution import initial_degree
 
-    tw = np.linspace(0.1, 12.0, 80)
+    tw = np.linspace(0.1, 12.0, 300)
     assert np.any(solve_degrees(initial_degree(tw, 1e-12)) > initial_degree(tw, 1e-12))
     res = critical_load(tw, 1.3, full_output=True)
     assert res.converged.all() and np.any(res.n > initial_degree(tw, 1e-12))
     single = [critical_load(float(a), 1.3, full_output=True) for a in tw]
     for r, p, e in zip(single, res.p_star, res.error_estimate, strict=True):
         assert abs(p / r.p_star - 1) <= max(e, r.error_estimate)  # critical_load's docstring
-    for i in (0, 40, 79):
+    for i in (0, 150, 299):
         assert abs(res.p_star[i] / reference(float(tw[i]), 1.3) - 1) <= res.error_estimate[i]
 
 

@@ -1,7 +1,7 @@
 r"""p* of Eq. ``inst1`` by Chebyshev collocation for arrays of points, with automatic resolution.
 
-For each point: an a priori degree from the mode's wavenumber (in an array call, degree groups
-of fewer than :data:`MIN_GROUP` points are pooled at a higher degree of the call,
+For each point: an a priori degree from the mode's wavenumber (in an array call, small degree
+groups may be pooled at a higher degree of the call where that is cheaper,
 :func:`solve_degrees`), the lowest eigenvalue of both mode families at that degree
 (:mod:`.eigensolver`, or :mod:`.few_points` for a few points), the error estimate from the
 computed mode's Chebyshev coefficients (:mod:`.resolution`); where it misses the tolerance the
@@ -22,7 +22,7 @@ from spectral_rod._blas_threads import one_blas_thread
 from spectral_rod._validation import check_resolution, scalar_nu, scalar_twist
 from spectral_rod.families import FAMILIES, check_family
 from spectral_rod.straight_rod.discretisation import family_operator
-from spectral_rod.straight_rod.eigensolver import POWER_RTOL, physical_eig, solve_family
+from spectral_rod.straight_rod.eigensolver import iteration_rtol, physical_eig, solve_family
 from spectral_rod.straight_rod.few_points import LEAN_MAX_DEGREE, solve_few
 from spectral_rod.straight_rod.resolution import (
     N_MAX,
@@ -34,7 +34,8 @@ from spectral_rod.straight_rod.resolution import (
 )
 
 __all__ = ["FEW_POINTS", "N_MAX", "N_MIN", "CollocationResult", "collocation_critical_load",
-           "collocation_family_load", "collocation_mode_coefficients"]
+           "collocation_family_load", "collocation_mode_coefficients", "solve_cost",
+           "solve_degrees"]
 
 
 class CollocationResult(NamedTuple):
@@ -62,32 +63,47 @@ def few_points_limit(n: int) -> int:
     return FEW_POINTS if n <= 30 else max(4, int(FEW_POINTS * (30 / n) ** 3))
 
 
-#: Degree groups of a call are pooled up to MIN_GROUP points and solved at the pool's highest
-#: degree, at most PROMOTE_MAX above a point's own (a higher degree is at least as accurate):
-#: one batched solve costs ~0.35 ms per family whatever its size, a point ~5-10 us in it.
-#: A pool small enough for the lean solver is solved at its points' own degrees instead (the
-#: lean solver has no such fixed cost, and its cost per point grows with the degree). Above
-#: LEAN_MAX_DEGREE a point's own cost (~k^3) outweighs the fixed cost: no pooling there.
-MIN_GROUP, PROMOTE_MAX = 200, 12
+#: The cost model of degree pooling (:func:`solve_degrees`), measured 2026-12-02 with
+#: ``_solve_points`` at 30 and 300 points of one degree (Omega up to 1.8 (n - 16), nu in
+#: [1.1, 10]): a batched solve of both families costs FIXED_COST whatever its size (1.2-1.7 ms
+#: at n = 16..64) plus POINT_COST (n/22)^2 a point (14.0-15.3 us (n/22)^2 at n = 16..64); the
+#: lean solver has no fixed cost and costs about twice as much a point (1.7-2.1 times, measured
+#: at n = 16..26). Empirical constants: only their ratios decide.
+FIXED_COST, POINT_COST, LEAN_FACTOR = 1.4e-3, 15e-6, 2.0
+
+
+def solve_cost(points: int, degree: int) -> float:
+    """Modelled seconds to solve `points` points of one degree (see FIXED_COST)."""
+    per_point = POINT_COST * (degree / 22.0) ** 2
+    if points <= few_points_limit(degree):
+        return LEAN_FACTOR * points * per_point
+    return FIXED_COST + points * per_point
 
 
 def solve_degrees(n: NDArray[np.int_]) -> NDArray[np.int_]:
-    """The degree each point is solved at (>= its own n; see MIN_GROUP).
+    """The degree each point of an array call is solved at (>= its own n, a degree the call has).
 
-    >>> solve_degrees(np.array([16, 18, 18, 30])).tolist()  # 4 points: the lean solver's
-    [16, 18, 18, 30]
+    The call's degree groups, in ascending order, are pooled with the next group and solved at
+    its degree while :func:`solve_cost` says that is cheaper than two solves (a higher degree is
+    at least as accurate; its error estimate is the one reported), up to
+    :data:`~spectral_rod.straight_rod.few_points.LEAN_MAX_DEGREE`.
+
+    >>> solve_degrees(np.repeat([16, 18, 20], [50, 50, 300])).tolist() == [20] * 400
+    True
+    >>> solve_degrees(np.repeat([16, 28], [150, 1])).tolist() == [16] * 150 + [28]
+    True
     """
     degs, counts = np.unique(n, return_counts=True)
     target = degs.copy()
-    start = 0  # the pool: degrees start..i
+    start = 0  # the pool: degree groups start..i
     for i in range(degs.size):
-        last = i + 1 == degs.size
         pooled = int(counts[start:i + 1].sum())
-        if last or pooled >= MIN_GROUP or degs[i + 1] - degs[start] > PROMOTE_MAX \
-                or degs[i + 1] > LEAN_MAX_DEGREE:
-            if pooled > few_points_limit(int(degs[i])) and degs[i] <= LEAN_MAX_DEGREE:
-                target[start:i + 1] = degs[i]
-            start = i + 1
+        if i + 1 < degs.size and degs[i + 1] <= LEAN_MAX_DEGREE:
+            d, k = int(degs[i + 1]), int(counts[i + 1])
+            if solve_cost(pooled + k, d) < solve_cost(pooled, int(degs[i])) + solve_cost(k, d):
+                continue  # the pool joins the next group
+        target[start:i + 1] = degs[i]
+        start = i + 1
     return target[np.searchsorted(degs, n)]
 
 
@@ -103,7 +119,7 @@ def _solve_points(twist: NDArray[np.float64], nu: NDArray[np.float64], n: NDArra
     p = np.empty(twist.size)
     fam = np.empty(twist.size, dtype=int)
     tails = np.empty(twist.size)
-    rtol = max(0.01 * tol, POWER_RTOL)
+    rtol = iteration_rtol(tol)
     for deg in np.unique(n):
         sel = np.flatnonzero(n == deg)
         if sel.size <= few_points_limit(int(deg)):

@@ -40,8 +40,8 @@ from spectral_rod.straight_rod.discretisation import (
 )
 from spectral_rod.straight_rod.resolution import mode_tails
 
-__all__ = ["ModalFamily", "lowest_eigenpair", "modal_family", "pencil_rayleigh_quotient",
-           "physical_eig", "solve_family"]
+__all__ = ["ModalFamily", "iteration_rtol", "lowest_eigenpair", "modal_family",
+           "pencil_rayleigh_quotient", "physical_eig", "solve_family"]
 
 #: Eigenvalues with |Im| above this fraction of |lambda| are complex, i.e. not physical.
 IMAG_REL = 1.0e-8
@@ -61,6 +61,12 @@ LONG_TWIST = 20.0
 #: Up to this many points per degree and family, and degree, the full eig is cheaper than the
 #: iteration (measured: 0.13 vs 0.37 ms for one point at n = 20, about equal at n = 40-45).
 SMALL_BATCH, SMALL_DEGREE = 4, 40
+
+
+def iteration_rtol(tol: float) -> float:
+    """The accepted relative error of the eigenvalue iteration for a requested `tol`: 1 % of it
+    (negligible beside the discretisation error the estimate covers), at least POWER_RTOL."""
+    return max(0.01 * tol, POWER_RTOL)
 
 
 def _modal_terms() -> tuple[tuple[int, int, int], tuple[int, int, int]]:

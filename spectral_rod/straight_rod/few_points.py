@@ -7,9 +7,9 @@ families the same size, so they are stacked), and:
 
 1. F = A - SHIFT B is factorised and inverted once by LAPACK (``dgetrf``/``dgetri`` called
    directly: 5 us for m = 21, where ``numpy.linalg.inv`` takes 20 us);
-2. M = F^{-1} B, the shift-and-invert matrix, is squared 3 or 4 times: M^8 or M^16 x0 and
-   x0^T M^16 are the right and left power iterates of 8 or 16 steps, for a handful of batched
-   matrix products instead of 32 solves (above m = SQUARING_MAX the steps are taken one by one
+2. M = F^{-1} B, the shift-and-invert matrix, is squared 3 or 4 times: M^k x0 and x0^T M^k
+   (k = 8 or 16) are the right and left power iterates of k steps, for a handful of batched
+   matrix products instead of 2k solves (above m = SQUARING_MAX the steps are taken one by one
    with the vectors, cheaper there);
 3. the eigenvalue is the two-sided Rayleigh quotient of the pencil itself, y^T A x / y^T B x
    (x = M x_k, y^T = x0^T M^{k+1} F^{-1}: its error is the product of the vectors' errors),
@@ -36,6 +36,7 @@ Figure 1's points, measured 2026-12-02).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -162,11 +163,32 @@ def _extended_quotient(n: int, family: int, twist: NDArray[np.float64],
     return pencil_rayleigh_quotient(family_operator(n, FAMILIES[family]), twist, nu, y, x1)
 
 
+def _solve_pencils(dp: DensePencils, mats: NDArray[np.float64], rtol: float,
+                   extend: Callable[..., None]
+                   ) -> tuple[NDArray[np.float64], ...] | None:
+    """Steps 1-4 of the module docstring for stacks (..., family) of the pencils [F^T, A^T, B^T]
+    (`mats`): lambda, the tails and whether each was accepted; None if some F is singular.
+    ``extend(lam, y, x1)`` puts the extended-precision quotient into lam where |Omega| is large.
+    """
+    f_inv = _inverses(mats[..., 0, :, :])  # overwrites F^T (not needed after)
+    if f_inv is None:
+        return None
+    with np.errstate(all="ignore"):  # overflow (a spurious eigenvalue at SHIFT): rejected below
+        mat = f_inv @ dp.mass
+        x, u = _power_iterates(mat, dp.start, _steps(rtol))
+        x1, y, lam, theta_k, theta_2k = _quotients(mats, f_inv, mat, x, u, dp.start)
+        extend(lam, y, x1)
+        delta = np.abs(theta_2k - theta_k) / np.abs(theta_2k)
+        tails = tails_of((dp.tail_rows @ x1[..., None])[..., 0])
+        ok = (delta * delta <= rtol) & (theta_2k > 0) & (lam >= SHIFT) & np.isfinite(tails)
+    return lam, tails, ok
+
+
 def solve_one(n: int, twist: float, nu: float, rtol: float
               ) -> tuple[list[float], list[float], bool]:
-    """:func:`solve_few` for one point given as Python floats, without its array bookkeeping
-    (a scalar call's cost is mostly numpy's per-call overhead): lambda = pi^2 p and the tail
-    of both families (lists [symmetric, antisymmetric]) and whether both converged.
+    """The lean solver for one point given as Python floats: lambda = pi^2 p and the tail of
+    both families (lists [symmetric, antisymmetric]) and whether both were accepted. It skips
+    a batch's per-point arrays (a scalar call's cost is mostly numpy's per-call overhead).
 
     >>> lam, tails, ok = solve_one(22, 3.0, 1.5, 1e-14)
     >>> ok, round(min(lam) / 9.869604401089358, 9)
@@ -175,24 +197,18 @@ def solve_one(n: int, twist: float, nu: float, rtol: float
     dp = dense_pencils(n)
     m = dp.mass.shape[1]
     coef = np.array([*(t.coefficient(twist, nu) for t in INST1), 1.0])
-    mats = (coef @ dp.pieces).reshape(2, 3, m, m)
-    f_inv = _inverses(mats[:, 0])  # overwrites F^T (not needed after)
-    if f_inv is None:
-        return [math.nan, math.nan], [math.inf, math.inf], False
-    with np.errstate(all="ignore"):  # overflow (a spurious eigenvalue at SHIFT): rejected below
-        mat = f_inv @ dp.mass
-        x, u = _power_iterates(mat, dp.start, _steps(rtol))
-        x1, y, lam, theta_k, theta_2k = _quotients(mats, f_inv, mat, x, u, dp.start)
+
+    def extend(lam, y, x1):
         if abs(twist) > LONG_TWIST:
             for f in range(2):
                 lam[f] = _extended_quotient(n, f, np.array([twist]), np.array([nu]),
                                             y[f:f + 1], x1[f:f + 1])[0]
-        delta = np.abs(theta_2k - theta_k) / np.abs(theta_2k)
-        tails = tails_of((dp.tail_rows @ x1[..., None])[..., 0])
-    lam_, tails_ = lam.tolist(), tails.tolist()
-    ok = all(d * d <= rtol and t > 0 and v >= SHIFT and math.isfinite(tl) for d, t, v, tl
-             in zip(delta.tolist(), theta_2k.tolist(), lam_, tails_, strict=True))
-    return lam_, tails_, ok
+
+    out = _solve_pencils(dp, (coef @ dp.pieces).reshape(2, 3, m, m), rtol, extend)
+    if out is None:
+        return [math.nan, math.nan], [math.inf, math.inf], False
+    lam, tails, ok = out
+    return lam.tolist(), tails.tolist(), bool(ok.all())
 
 
 def solve_few(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol: float
@@ -210,20 +226,14 @@ def solve_few(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol:
     dp = dense_pencils(n)
     pts, m = twist.size, dp.mass.shape[1]
     coef = np.hstack([term_coefficients(twist, nu), np.ones((pts, 1))])
-    mats = (coef @ dp.pieces).reshape(pts, 2, 3, m, m)
-    f_inv = _inverses(mats[:, :, 0])  # overwrites F^T (not needed after)
-    if f_inv is None:
+    big = np.flatnonzero(np.abs(twist) > LONG_TWIST)
+
+    def extend(lam, y, x1):
+        for f in range(2 if big.size else 0):  # as the batched engine: extended precision
+            lam[big, f] = _extended_quotient(n, f, twist[big], nu[big], y[big, f], x1[big, f])
+
+    out = _solve_pencils(dp, (coef @ dp.pieces).reshape(pts, 2, 3, m, m), rtol, extend)
+    if out is None:
         return np.full((2, pts), np.nan), np.full((2, pts), np.inf), np.zeros(pts, bool)
-    with np.errstate(all="ignore"):  # overflow (a spurious eigenvalue at SHIFT): rejected below
-        mat = f_inv @ dp.mass
-        x, u = _power_iterates(mat, dp.start, _steps(rtol))
-        x1, y, lam, theta_k, theta_2k = _quotients(mats, f_inv, mat, x, u, dp.start)
-        big = np.flatnonzero(np.abs(twist) > LONG_TWIST)
-        for f in range(2):  # as the batched engine: extended precision
-            if big.size:
-                lam[big, f] = _extended_quotient(n, f, twist[big], nu[big], y[big, f],
-                                                 x1[big, f])
-        delta = np.abs(theta_2k - theta_k) / np.abs(theta_2k)
-        tails = tails_of((dp.tail_rows @ x1[..., None])[..., 0])
-    ok = (delta * delta <= rtol) & (theta_2k > 0) & (lam >= SHIFT) & np.isfinite(tails)
+    lam, tails, ok = out
     return lam.T, tails.T, ok.all(axis=1)
