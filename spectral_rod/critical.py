@@ -229,9 +229,9 @@ def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None
     results. A point in a larger call differs from its scalar call by at most the larger of the
     two error estimates, and by at most the round-off part eps (32 + 0.3 Omega^2) where both use
     the same degree (the two engines round the same Rayleigh quotient differently). Measured
-    2026-12-02: on Figure 1's 1,201 points in one call (147 pooled) <= 7.1e-15, 0.54 of the
-    round-off part; on 3,000 random points with |Omega(L)| < 50, nu <= 100 (1,593 pooled)
-    <= 1.8e-13, 0.74 of the larger estimate, and 0.84 of the round-off part at equal degree.
+    2026-12-02: on Figure 1's 1,201 points in one call (601 pooled) <= 7.1e-15, 0.54 of the
+    round-off part; on 3,000 random points with |Omega(L)| < 50, nu <= 100 (1,585 pooled)
+    <= 8.8e-14, 0.61 of the larger estimate, and 0.76 of the round-off part at equal degree.
 
     >>> round(critical_load(6.283185307179586, 1.5), 9)
     1.195993681
