@@ -48,6 +48,7 @@ from spectral_rod.families import FAMILIES, SHIFT
 from spectral_rod.straight_rod.discretisation import INST1, family_operator, term_coefficients
 from spectral_rod.straight_rod.eigensolver import (
     LONG_TWIST,
+    LOOSE_RTOL,
     _start_vector,
     pencil_rayleigh_quotient,
 )
@@ -121,8 +122,8 @@ def _dot(a: NDArray[np.float64], b: NDArray[np.float64]) -> NDArray[np.float64]:
 
 
 def _steps(rtol: float) -> int:
-    """Power steps k: 8 (3 squarings) where rtol >= 1e-8, else 16 (4)."""
-    return 8 if rtol >= 1e-8 else 16
+    """Power steps k: 8 (3 squarings) from the batched engine's LOOSE_RTOL on, else 16 (4)."""
+    return 8 if rtol >= LOOSE_RTOL else 16
 
 
 def _power_iterates(mat: NDArray[np.float64], start: NDArray[np.float64], steps: int
@@ -217,7 +218,7 @@ def solve_few(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol:
     whether both families converged, at flat arrays of points at degree n (module docstring).
 
     ``rtol`` is the accepted relative error of lambda (as ``POWER_RTOL`` of the batched
-    engine); 3 squarings (8 steps) where rtol >= 1e-8, else 4 (16 steps). One point is
+    engine); 3 squarings (8 steps) where rtol >= LOOSE_RTOL = 1e-8, else 4 (16). One point is
     :func:`solve_one`'s (so a one-point array and a scalar call agree bit for bit).
     """
     if twist.size == 1:
@@ -229,8 +230,10 @@ def solve_few(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol:
     big = np.flatnonzero(np.abs(twist) > LONG_TWIST)
 
     def extend(lam, y, x1):
-        for f in range(2 if big.size else 0):  # as the batched engine: extended precision
-            lam[big, f] = _extended_quotient(n, f, twist[big], nu[big], y[big, f], x1[big, f])
+        if big.size:  # as the batched engine: extended precision
+            for f in range(2):
+                lam[big, f] = _extended_quotient(n, f, twist[big], nu[big], y[big, f],
+                                                 x1[big, f])
 
     out = _solve_pencils(dp, (coef @ dp.pieces).reshape(pts, 2, 3, m, m), rtol, extend)
     if out is None:

@@ -23,7 +23,7 @@ def bench_registry(request) -> dict:
 def pytest_terminal_summary(terminalreporter, exitstatus, config) -> None:
     reg = config.stash.get(RATIO_KEY, {})
     rows = [(name, e) for name, e in reg.items() if "ratio" in e]
-    if not rows and "import" not in reg:
+    if not rows and not {"import", "tol trade", "pooling"} & set(reg):
         return
     tr = terminalreporter
     tr.write_sep("=", "issue 14: same-run ratios, yardstick / new (minimum over rounds)")
@@ -32,6 +32,17 @@ def pytest_terminal_summary(terminalreporter, exitstatus, config) -> None:
     for name, e in rows:
         tr.write_line(f"{name:<22}{e['yardstick_name']:<28}{_us(e['yardstick'][0]):>14}"
                       f"{_us(e['new'][0]):>12}{e['ratio']:>8.1f}{e['floor']:>7.1f}")
+    if "tol trade" in reg:
+        tt = reg["tol trade"]
+        tr.write_line(f"tol trade, Figure 1 batch (interleaved minima): tol 1e-4 costs "
+                      f"{tt['1e-4']:.2f} and tol 1e-2 {tt['1e-2']:.2f} of tol 1e-12 (target"
+                      " <= 0.5)")
+    if "pooling" in reg:
+        pm = reg["pooling"]
+        got = ", ".join(f"n={n}: {f * 1e3:.2f} ms + {c * 1e6:.1f} us (n/22)^2"
+                        for n, (f, c) in pm["measured"].items())
+        tr.write_line(f"pooling cost model {pm['model'][0] * 1e3:.2f} ms + "
+                      f"{pm['model'][1] * 1e6:.1f} us (n/22)^2; measured {got}")
     if "import" in reg:
         imp = reg["import"]
         tr.write_line(f"import spectral_rod: {imp['import_s'] * 1e3:.1f} ms; first call "

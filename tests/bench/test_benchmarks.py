@@ -25,6 +25,7 @@ from __future__ import annotations
 import json
 import subprocess
 import sys
+import time
 
 import numpy as np
 import pytest
@@ -367,3 +368,61 @@ def test_import_and_cold_call(benchmark, bench_registry):
                                 first_call_imports_mpmath=runs[-1]["mpmath"],
                                 modules_after_first_call=runs[-1]["modules"])
     assert best_import < 0.5
+
+
+# --- the tol knob and the pooling cost model (numbers the docs quote) -----------------------
+
+def _interleaved_min(fns, rounds=7, repeats=5):
+    """Minimum wall time of each function, its rounds interleaved with the others' (so that a
+    change of machine load hits all of them alike)."""
+    best = [np.inf] * len(fns)
+    for _ in range(rounds):
+        for i, fn in enumerate(fns):
+            for _ in range(repeats):
+                t = time.perf_counter()
+                fn()
+                best[i] = min(best[i], time.perf_counter() - t)
+    return best
+
+
+@pytest.mark.benchmark(group="tol trade")
+def test_tol_trade(benchmark, fig1, reference, bench_registry):
+    # issue 14: the Figure 1 batch at tol 1e-4 costs at most half of tol 1e-12 (README)
+    tw, nv = fig1
+    res = critical_load(tw, nv, tol=1e-4, full_output=True)
+    err = _max_error(res.p_star, tw, nv, reference)
+    assert res.converged.all() and err <= 1e-4
+    t12, t4, t2 = _interleaved_min([lambda: critical_load(tw, nv, tol=1e-12),
+                                    lambda: critical_load(tw, nv, tol=1e-4),
+                                    lambda: critical_load(tw, nv, tol=1e-2)])
+    bench_registry["tol trade"] = {"1e-4": t4 / t12, "1e-2": t2 / t12}
+    benchmark.extra_info.update(cost_ratio_1e4=t4 / t12, cost_ratio_1e2=t2 / t12,
+                                max_rel_error_sampled=err)
+    benchmark.pedantic(lambda: critical_load(tw, nv, tol=1e-4), rounds=5, iterations=1)
+
+
+@pytest.mark.benchmark(group="pooling cost model")
+def test_pooling_cost_model(benchmark, bench_registry):
+    # collocation.FIXED_COST and POINT_COST: a batched solve of 30 and of 300 points of one
+    # degree gives the fixed cost and the cost a point; the model is used through their ratio
+    from spectral_rod.straight_rod.collocation import FIXED_COST, POINT_COST, _solve_points
+
+    rng = np.random.default_rng(2)
+    measured = {}
+    for n in (16, 22, 36):
+        pts = {}
+        for size in (30, 300):
+            tw = rng.uniform(0, max(1.0, 1.8 * (n - 16)), size)
+            nv = rng.uniform(1.1, 10.0, size)
+            deg = np.full(size, n)
+            pts[size] = _interleaved_min([lambda tw=tw, nv=nv, deg=deg:
+                                          _solve_points(tw, nv, deg)], rounds=3)[0]
+        slope = (pts[300] - pts[30]) / 270
+        measured[n] = (pts[30] - 30 * slope, slope / (n / 22.0) ** 2)
+    ratios = [fixed / point for fixed, point in measured.values()]
+    bench_registry["pooling"] = {"measured": measured, "model": (FIXED_COST, POINT_COST)}
+    benchmark.extra_info.update({f"n{n}_fixed_s": f for n, (f, _) in measured.items()})
+    benchmark.extra_info.update({f"n{n}_point_s": p for n, (_, p) in measured.items()})
+    benchmark.pedantic(lambda: None, rounds=1, iterations=1)
+    # the decisions depend on FIXED_COST / POINT_COST: within a factor 3 of the measured one
+    assert all(FIXED_COST / POINT_COST / 3 <= r <= 3 * FIXED_COST / POINT_COST for r in ratios)
