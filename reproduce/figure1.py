@@ -86,7 +86,7 @@ CHECK = {
 TOL = 1e-12
 #: Acceptance thresholds of the reproduction (issue 2): per-curve rms and max |deviation|.
 RMS_LIMIT, MAX_LIMIT = 1.5e-4, 6e-4
-COLORS = {1.1: "tab:blue", 1.3: "tab:orange", 1.5: "tab:green"}
+COLORS = dict(zip(FIGURE1_NU, ("tab:blue", "tab:orange", "tab:green"), strict=True))
 #: Guide lines of the main panel at Omega(L) = k pi (the family crossings lie near k pi, k >= 2).
 GUIDES = (1, 2, 3)
 
@@ -293,8 +293,8 @@ def truth_check(table: pd.DataFrame) -> CrossCheck:
 
 FIG1 = ClaimSpec(
     id=CLAIM_ID, section="Figure 1 (Sec. 'Stability of a rectilinear rod')",
-    claim="Figure 1 shows p*(Ω(L)) for ν = 1.1, 1.3, 1.5: the numerical solution of the "
-          "characteristic equation of Eq. inst1 (hinged ends).",
+    claim=f"Figure 1 shows p*(Ω(L)) for ν = {', '.join(f'{v:g}' for v in FIGURE1_NU)}: the "
+          "numerical solution of the characteristic equation of Eq. inst1 (hinged ends).",
     test="Every one of the figure's printed points against the converged p*: fitted models of "
          "how the authors produced and printed each value (quantisation of p*, λ, y, λ − νΩ², "
          "λ − Ω² on fixed step grids; simulated sign-change scans of the boundary "

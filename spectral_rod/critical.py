@@ -231,7 +231,7 @@ def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None
     the same degree (the two engines round the same Rayleigh quotient differently). Measured
     2026-12-02: on Figure 1's 1,201 points in one call (601 pooled) <= 7.1e-15, 0.54 of the
     round-off part; on 3,000 random points with |Omega(L)| < 50, nu <= 100 (1,585 pooled)
-    <= 8.8e-14, 0.61 of the larger estimate, and 0.76 of the round-off part at equal degree
+    <= 8.8e-14, 0.61 of the larger estimate, and 0.77 of the round-off part at equal degree
     (``tests/test_safety.py`` computes and prints these).
 
     >>> round(critical_load(6.283185307179586, 1.5), 9)

