@@ -37,6 +37,7 @@ from spectral_rod.families import FAMILIES
 from spectral_rod.results import CriticalLoad, as_output
 from spectral_rod.router import ROD_METHODS, check_route, route, route_point
 from spectral_rod.straight_rod import N_MAX, collocation_critical_load
+from spectral_rod.straight_rod.collocation import pick_family_scalar
 from spectral_rod.straight_rod.eigensolver import iteration_rtol
 from spectral_rod.straight_rod.few_points import LEAN_MAX_DEGREE, solve_one
 from spectral_rod.straight_rod.resolution import (
@@ -179,11 +180,10 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
             return None
         # no BLAS thread limit here: the lean solver's matrices (m < 100) are below
         # OpenBLAS's threading thresholds, and the limit would cost 4 us of a ~60 us call
-        (l0, l1), (t0, t1), ok = solve_one(deg, om, nv, rtol)
+        lam, tails, ok = solve_one(deg, om, nv, rtol)
         if not ok:
             return None
-        best = 1 if l1 < l0 * (1.0 - 1e-14) else 0  # as pick_family
-        tail = max(t0, t1) if abs(l0 - l1) <= 1e-6 * min(l0, l1) else (t0, t1)[best]
+        best, tail = pick_family_scalar(lam, tails)
         err = error_estimate_scalar(tail, om)
         if err <= tol:
             break
@@ -191,7 +191,7 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
             return None  # unconverged: the general path warns and flags it
         deg = int(raised_degree(deg))
     hi = (1.0 + nv) / 2.0
-    p = min(max((l0, l1)[best] / math.pi**2, 1.0), hi)
+    p = min(max(lam[best] / math.pi**2, 1.0), hi)
     if not full_output:
         return p
     return CriticalLoad(p, "collocation", deg, min(err, hi - 1.0), FAMILIES[best],

@@ -21,6 +21,7 @@ from spectral_rod._blas_threads import one_blas_thread
 from spectral_rod.characteristic import characteristic_double_batch
 from spectral_rod.router import NEAR_DEGENERATE, TWIST_ROUTE, route, route_point
 from spectral_rod.sign_scan import bracketed_roots, lowest_root, lowest_roots
+from spectral_rod.straight_rod.collocation import pick_family, pick_family_scalar
 from spectral_rod.straight_rod.eigensolver import solve_family
 from spectral_rod.straight_rod.few_points import solve_few, solve_one
 
@@ -238,3 +239,21 @@ def test_batched_characteristic_route_against_the_reference(reference):
     for t, v, pv in zip(tw, nv, p, strict=True):
         assert abs(pv / reference(float(t), float(v)) - 1) <= 1e-13
     assert set(fam.tolist()) <= {0, 1}
+
+
+# --- the family rule: one rule in two forms (arrays for batches, floats for the scalar path) --
+
+_near = st.sampled_from([0.0, 1e-16, 5e-15, 2e-14, 5e-7, 1e-6, 2e-6, 1e-3, -1e-16, -5e-15,
+                         -2e-14, -5e-7, -2e-6, -1e-3])
+
+
+@settings(max_examples=300, deadline=None)
+@given(l0=st.floats(9.0, 1e4), rel=_near, t0=st.floats(1e-16, 1e-2), t1=st.floats(1e-16, 1e-2))
+def test_scalar_family_rule_is_the_array_rule(l0, rel, t0, t1):
+    """pick_family_scalar (the scalar path's) and pick_family (the array path's) choose the same
+    family and tail on ties (rel = 0), near-ties around TIE_REL and pairs around CLOSE_REL."""
+    l1 = l0 * (1.0 + rel)
+    p, fam, tail = pick_family(np.array([[l0], [l1]]), np.array([[t0], [t1]]))
+    best, tail_scalar = pick_family_scalar([l0, l1], [t0, t1])
+    assert (best, tail_scalar) == (int(fam[0]), float(tail[0]))
+    assert float(p[0]) == [l0, l1][best] / np.pi**2

@@ -33,9 +33,9 @@ from spectral_rod.straight_rod.resolution import (
     roundoff_floor,
 )
 
-__all__ = ["FEW_POINTS", "N_MAX", "N_MIN", "CollocationResult", "collocation_critical_load",
-           "collocation_family_load", "collocation_mode_coefficients", "solve_cost",
-           "solve_degrees"]
+__all__ = ["CLOSE_REL", "FEW_POINTS", "N_MAX", "N_MIN", "TIE_REL", "CollocationResult",
+           "collocation_critical_load", "collocation_family_load", "collocation_mode_coefficients",
+           "pick_family", "pick_family_scalar", "solve_cost", "solve_degrees"]
 
 
 class CollocationResult(NamedTuple):
@@ -113,7 +113,7 @@ def _solve_points(twist: NDArray[np.float64], nu: NDArray[np.float64], n: NDArra
 
     Per degree: up to :func:`few_points_limit` points by the lean solver (both families, dense LU
     and matrix powers), more by the batched engine: the symmetric family first, the
-    antisymmetric one then only resolved where it is not clearly above (1 + 1e-6 times) the
+    antisymmetric one then only resolved where it is not clearly above (1 + CLOSE_REL times) the
     symmetric eigenvalue. Points the lean solver does not accept go to the batched engine.
 
     The two families are iterated one after the other. Iterating both in one stacked pass (half
@@ -138,9 +138,17 @@ def _solve_points(twist: NDArray[np.float64], nu: NDArray[np.float64], n: NDArra
         tl = np.empty((2, sel.size))
         lam[0], tl[0], _ = solve_family(int(deg), FAMILIES[0], twist[sel], nu[sel], rtol=rtol)
         lam[1], tl[1], _ = solve_family(int(deg), FAMILIES[1], twist[sel], nu[sel], rtol=rtol,
-                                        ceiling=lam[0] * (1 + 1e-6))
+                                        ceiling=lam[0] * (1 + CLOSE_REL))
         p[sel], fam[sel], tails[sel] = pick_family(lam, tl)
     return p, fam, tails
+
+
+#: The family rule's relative margins (:func:`pick_family`): the antisymmetric family is the
+#: lowest only if it is below the symmetric one by more than TIE_REL (a tie to round-off goes
+#: to the symmetric family); within CLOSE_REL of each other either could be the lowest, so both
+#: must be resolved (and the batched engine stops the antisymmetric iteration early only where
+#: it is above 1 + CLOSE_REL times the symmetric eigenvalue).
+TIE_REL, CLOSE_REL = 1e-14, 1e-6
 
 
 def pick_family(lam: NDArray[np.float64], tails: NDArray[np.float64]
@@ -150,13 +158,29 @@ def pick_family(lam: NDArray[np.float64], tails: NDArray[np.float64]
 
     A tie to round-off (e.g. nu = 1 at zero twist: the Euler mode in either plane) goes to the
     symmetric family, whose mode is the planar one in the (u0) plane. If the two families are
-    within 1e-6 of each other either could be lowest, and both must be resolved.
+    within CLOSE_REL of each other either could be lowest, and both must be resolved.
+    :func:`pick_family_scalar` is the same rule for one point in Python floats.
     """
-    best = (lam[1] < lam[0] * (1.0 - 1e-14)).astype(int)
+    best = (lam[1] < lam[0] * (1.0 - TIE_REL)).astype(int)
     cols = np.arange(lam.shape[1])
-    close = np.abs(lam[0] - lam[1]) <= 1e-6 * lam.min(axis=0)
+    close = np.abs(lam[0] - lam[1]) <= CLOSE_REL * lam.min(axis=0)
     return (lam[best, cols] / np.pi**2, best,
             np.where(close, tails.max(axis=0), tails[best, cols]))
+
+
+def pick_family_scalar(lam: list[float], tails: list[float]) -> tuple[int, float]:
+    """:func:`pick_family` for one point (the scalar path's): the family index and the tail
+    that judges it, from both families' lambda and tails (``tests/test_speed_paths.py`` checks
+    that the two agree, ties and near-ties included).
+
+    >>> pick_family_scalar([10.0, 10.0], [1e-9, 2e-9])  # a tie: symmetric, the larger tail
+    (0, 2e-09)
+    >>> pick_family_scalar([10.0, 9.0], [1e-9, 3e-9])
+    (1, 3e-09)
+    """
+    (l0, l1), (t0, t1) = lam, tails
+    best = 1 if l1 < l0 * (1.0 - TIE_REL) else 0
+    return best, max(t0, t1) if abs(l0 - l1) <= CLOSE_REL * min(l0, l1) else (t0, t1)[best]
 
 
 def collocation_critical_load(twist: NDArray[np.float64], nu: NDArray[np.float64], *,
