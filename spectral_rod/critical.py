@@ -227,11 +227,16 @@ def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None
     (:func:`spectral_rod.straight_rod.collocation.solve_degrees`; per chunk of
     :data:`CHUNK` points). A scalar call and a one-point array call give identical
     results. A point in a larger call differs from its scalar call by at most the larger of the
-    two error estimates, and by at most the round-off part eps (32 + 0.3 Omega^2) where both use
-    the same degree (the two engines round the same Rayleigh quotient differently). Measured
-    2026-12-02: on Figure 1's 1,201 points in one call (601 pooled) <= 7.1e-15, 0.54 of the
-    round-off part; on 3,000 random points with |Omega(L)| < 50, nu <= 100 (1,585 pooled)
-    <= 8.8e-14, 0.61 of the larger estimate, and 0.77 of the round-off part at equal degree
+    two error estimates; where both use the same degree, by at most the round-off part
+    eps (32 + 0.3 Omega^2) at the default tol (the two engines round the same Rayleigh quotient
+    differently), and at a looser tol by at most that plus the eigenvalue iteration's tolerance
+    ``iteration_rtol(tol)`` = max(0.01 tol, 1e-15) (the engines stop their iterations
+    differently: from tol = 1e-8 on the round-off part alone is exceeded, 4.6 times at 1e-8 and
+    7.5e5 times at 1e-4 on Figure 1's points). Measured 2026-12-02: on Figure 1's 1,201 points
+    in one call (601 pooled) <= 7.1e-15, 0.54 of the round-off part; on 3,000 random points with
+    |Omega(L)| < 50, nu <= 100 (1,585 pooled) <= 8.8e-14, 0.61 of the larger estimate, and 0.77
+    of the round-off part at equal degree; at tol 1e-8 and 1e-4 on both sets, <= 0.74 of the
+    larger estimate and, at equal degree, <= 0.015 of round-off plus iteration tolerance
     (``tests/test_safety.py`` computes and prints these).
 
     >>> round(critical_load(6.283185307179586, 1.5), 9)
