@@ -23,9 +23,11 @@ families the same size, so they are stacked), and:
    spurious eigenvalue nearest the shift) goes back to the batched engine, which decides with
    its own iteration or the full ``eig``.
 
-Both families are solved (no "ceiling" shortcut: the second family costs one LAPACK pair). The
-result differs from the batched engine's only by the rounding of two different computations of
-the same Rayleigh quotient (measured: see :func:`spectral_rod.critical_load`).
+Both families are solved (no "ceiling" shortcut: the second family costs one LAPACK pair). At
+the default tol the result differs from the batched engine's only by the rounding of two
+different computations of the same Rayleigh quotient; at a looser tol also by the two
+iterations' different stopping, up to the iteration tolerance (measured: see
+:func:`spectral_rod.critical_load`).
 
 One point (a scalar call, or an array of one point) is :func:`solve_one`'s: the same steps on
 Python floats and (family, m, m) stacks, without the per-point index arrays of a batch (a scalar
