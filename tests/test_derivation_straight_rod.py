@@ -14,6 +14,7 @@ import sympy as sp
 import spectral_rod.derivations.straight_rod as straight_rod
 from reproduce.figure1 import MAX_LIMIT, RMS_LIMIT
 from spectral_rod.derivations._sympy import DerivationError
+from spectral_rod.figure_data import FIGURE1_NU
 
 WRONG = ("factor_one", "sign_flipped", "A_exchanged")
 CHANGES_P = ("factor_one", "sign_flipped")
@@ -170,7 +171,7 @@ def test_bad_input_is_named(mod: ModuleType) -> None:
 # ---------------------------------------------------------------- variants against Figure 1
 
 def test_printed_inst1_matches_every_digitised_point(mod: ModuleType) -> None:
-    for nu in mod.FIGURE1_NUS:
+    for nu in FIGURE1_NU:
         dev = mod.figure1_deviation("printed", nu, every=1)
         assert dev["max"] <= MAX_LIMIT and dev["rms"] <= RMS_LIMIT, (nu, dev)
 

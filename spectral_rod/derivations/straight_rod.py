@@ -414,8 +414,6 @@ def derive() -> dict[str, object]:
 
 # ------------------------------------------------------------------------- variants: numerics
 
-#: Figure 1's cross-section ratios (paper caption; the one definition is the data module's).
-FIGURE1_NUS = FIGURE1_NU
 VARIANTS = tuple(SYMBOLIC_VARIANTS)
 #: An eigenvalue with |Im| above this fraction of |lambda| counts as complex.
 IMAG_REL = 1.0e-8
@@ -599,7 +597,7 @@ def _digitised() -> pd.DataFrame:
 
 
 def variant_table(twist_angles: Sequence[float] | None = None,
-                  nus: Sequence[float] = FIGURE1_NUS, digitised: pd.DataFrame | None = None,
+                  nus: Sequence[float] = FIGURE1_NU, digitised: pd.DataFrame | None = None,
                   every: int = 3) -> list[dict[str, object]]:
     """One row per (variant, nu): what the variant does to p* on Figure 1's range.
 
