@@ -115,7 +115,11 @@ def _inverses(f_t: NDArray[np.float64]) -> NDArray[np.float64] | None:
     for j in range(flat.shape[0]):
         # flat[j].T is F in Fortran order, which f2py hands to LAPACK without a copy: the LU
         # and then the inverse overwrite it, so flat[j] ends as F^{-T} (no output array; 2-3 %
-        # of a scalar call, measured 2026-12-02 in 30 paired in-process runs of 200 points)
+        # of a scalar call, measured 2026-12-02 in 30 paired in-process runs of 200 points).
+        # M = F^{-1} B by dgesv instead (LU and a solve with B's m columns, no inverse and no
+        # product, the left vector through a stored B^{-1}) was slower: 22.7 vs 19.6 us for
+        # both families at n = 22, 59.9 vs 56.3 at n = 40 (OpenBLAS's solve with m columns
+        # costs more than the inverse; 2026-12-02, a later session)
         lu, piv, info = dgetrf(flat[j].T, overwrite_a=1)
         if info != 0:
             return None
