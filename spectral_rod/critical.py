@@ -38,7 +38,7 @@ from spectral_rod.results import CriticalLoad, as_output
 from spectral_rod.router import ROD_METHODS, check_route, route, route_point
 from spectral_rod.straight_rod import N_MAX, collocation_critical_load
 from spectral_rod.straight_rod.collocation import pick_family_scalar
-from spectral_rod.straight_rod.eigensolver import iteration_rtol
+from spectral_rod.straight_rod.eigensolver import iteration_allowance, iteration_rtol
 from spectral_rod.straight_rod.few_points import LEAN_MAX_DEGREE, solve_one
 from spectral_rod.straight_rod.resolution import (
     error_estimate_scalar,
@@ -174,7 +174,7 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
     deg = initial_degree_scalar(om, tol)
     if error_estimate_scalar(0.0, om) >= tol:
         return None  # tol below the round-off floor: unconverged, the general path flags it
-    rtol = iteration_rtol(tol)
+    rtol, allowance = iteration_rtol(tol), iteration_allowance(tol)
     while True:  # the degree loop of collocation_critical_load, for one point
         if deg > LEAN_MAX_DEGREE:
             return None
@@ -184,7 +184,7 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
         if not ok:
             return None
         best, tail = pick_family_scalar(lam, tails)
-        err = error_estimate_scalar(tail, om)
+        err = error_estimate_scalar(tail, om) + allowance
         if err <= tol:
             break
         if deg >= N_MAX:

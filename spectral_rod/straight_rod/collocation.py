@@ -4,9 +4,10 @@ For each point: an a priori degree from the mode's wavenumber (in an array call,
 groups may be pooled at a higher degree of the call where that is cheaper,
 :func:`solve_degrees`), the lowest eigenvalue of both mode families at that degree
 (:mod:`.eigensolver`, or :mod:`.few_points` for a few points), the error estimate from the
-computed mode's Chebyshev coefficients (:mod:`.resolution`); where it misses the tolerance the
-degree is raised by ~12 % until it is met or n = :data:`N_MAX` (no raise where the round-off
-floor alone exceeds the tolerance). Inputs are validated by the caller
+computed mode's Chebyshev coefficients (:mod:`.resolution`), plus, above the default tol, the
+eigenvalue iteration's allowance (:func:`.eigensolver.iteration_allowance`); where it misses the
+tolerance the degree is raised by ~12 % until it is met or n = :data:`N_MAX` (no raise where the
+round-off floor alone exceeds the tolerance). Inputs are validated by the caller
 (:func:`spectral_rod.critical_load`).
 """
 
@@ -22,7 +23,12 @@ from spectral_rod._blas_threads import one_blas_thread
 from spectral_rod._validation import check_resolution, scalar_nu, scalar_twist
 from spectral_rod.families import FAMILIES, check_family
 from spectral_rod.straight_rod.discretisation import family_operator
-from spectral_rod.straight_rod.eigensolver import iteration_rtol, physical_eig, solve_family
+from spectral_rod.straight_rod.eigensolver import (
+    iteration_allowance,
+    iteration_rtol,
+    physical_eig,
+    solve_family,
+)
 from spectral_rod.straight_rod.few_points import LEAN_MAX_DEGREE, solve_few
 from spectral_rod.straight_rod.resolution import (
     N_MAX,
@@ -194,19 +200,20 @@ def collocation_critical_load(twist: NDArray[np.float64], nu: NDArray[np.float64
 
 def _collocation_critical_load(tw: NDArray[np.float64], nu: NDArray[np.float64],
                                n: int | None, tol: float) -> CollocationResult:
+    allowance = iteration_allowance(tol)  # the eigenvalue iteration's share beyond the model
     if n is not None:
         deg = np.full(tw.size, int(n))
         p, fam, tails = _solve_points(tw, nu, deg, tol)
-        return CollocationResult(p, deg, error_estimate(tails, tw), fam)
+        return CollocationResult(p, deg, error_estimate(tails, tw) + allowance, fam)
     deg = solve_degrees(initial_degree(tw, tol))
     p, fam, tails = _solve_points(tw, nu, deg, tol)
-    err = error_estimate(tails, tw)
+    err = error_estimate(tails, tw) + allowance
     # raise the degree where the estimate misses tol, unless round-off alone does
     todo = np.flatnonzero((err > tol) & (deg < N_MAX) & (roundoff_floor(tw) < tol))
     while todo.size:
         deg[todo] = raised_degree(deg[todo])
         p[todo], fam[todo], tails[todo] = _solve_points(tw[todo], nu[todo], deg[todo], tol)
-        err[todo] = error_estimate(tails[todo], tw[todo])
+        err[todo] = error_estimate(tails[todo], tw[todo]) + allowance
         todo = todo[(err[todo] > tol) & (deg[todo] < N_MAX)]
     return CollocationResult(p, deg, err, fam)
 
