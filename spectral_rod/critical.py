@@ -217,7 +217,11 @@ def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None
 
     Returns p* as a float for scalar input, otherwise an ndarray of the broadcast shape. A
     point whose error estimate exceeds ``tol`` gives a :class:`spectral_rod.ConvergenceWarning`
-    and ``converged=False``; it is never returned silently.
+    and ``converged=False``; it is never returned silently. A collocation estimate is the
+    calibrated model of the mode's Chebyshev tail and round-off
+    (:func:`spectral_rod.straight_rod.resolution.error_estimate`) plus, for tol > 1e-12, what
+    the looser eigenvalue iteration may add, 0.01 tol - 1e-14
+    (:func:`spectral_rod.straight_rod.eigensolver.iteration_allowance`).
 
     Scalar and array calls: a collocation point is solved by the lean solver
     (:mod:`spectral_rod.straight_rod.few_points`) in a scalar call and whenever at most
