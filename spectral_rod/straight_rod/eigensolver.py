@@ -76,6 +76,7 @@ def iteration_rtol(tol: float) -> float:
 #: default of :func:`spectral_rod.critical_load`): the iteration error at its iteration_rtol
 #: (1e-14) is inside the model's measured round-off part.
 CALIBRATED_TOL = 1e-12
+_CALIBRATED_RTOL = iteration_rtol(CALIBRATED_TOL)
 
 
 def iteration_allowance(tol: float) -> float:
@@ -93,7 +94,7 @@ def iteration_allowance(tol: float) -> float:
     >>> iteration_allowance(1e-12), round(iteration_allowance(1e-4), 12)
     (0.0, 1e-06)
     """
-    return max(0.0, iteration_rtol(tol) - iteration_rtol(CALIBRATED_TOL))
+    return max(0.0, iteration_rtol(tol) - _CALIBRATED_RTOL)
 
 
 def _modal_terms() -> tuple[tuple[int, int, int], tuple[int, int, int]]:
@@ -163,6 +164,16 @@ class ModalFamily:
     g21: NDArray[np.float64]  # (k2, k1)
     schur: int  # the block (1 or 2) that carries the Schur complement; the other is eliminated
     outer: NDArray[np.float64]  # (k_e, k_s^2): G_se[:, j] (x) G_es[j, :], e eliminated, s Schur
+
+    def right_vectors(self, z: NDArray[np.float64]) -> NDArray[np.float64]:
+        """The pencil's right vectors (coefficients c, rows) from modal ones z: c_i = U_i z_i."""
+        k1 = self.lam1.size
+        return np.hstack([z[:, :k1] @ self.u1.T, z[:, k1:] @ self.u2.T])
+
+    def left_vectors(self, w: NDArray[np.float64]) -> NDArray[np.float64]:
+        """The pencil's left vectors (rows) from modal ones w: y_i^T = w_i^T U_i^{-1} V_i^{-1}."""
+        k1 = self.lam1.size
+        return np.hstack([w[:, :k1] @ self.left1, w[:, k1:] @ self.left2])
 
 
 @lru_cache(maxsize=64)
@@ -414,15 +425,13 @@ def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np
         lam, z, w, ok, above = lowest_eigenpair(mf, twist, nu, rtol=rtol, ceiling=ceiling)
     except np.linalg.LinAlgError:  # SHIFT an eigenvalue of some point (spurious): the rule
         return _solve_family_eig(n, family, twist, nu)
-    k1 = mf.lam1.size
-    vec = np.hstack([z[:, :k1] @ mf.u1.T, z[:, k1:] @ mf.u2.T])
+    vec = mf.right_vectors(z)
     # the eigenvalue from the O(1) pencil itself: the two-sided Rayleigh quotient (its error is
     # the product of the vectors' errors; K carries round-off ~ eps n^4 in its diagonal)
     loose = rtol >= LOOSE_RTOL and n <= LOOSE_DEGREE
     good = np.flatnonzero(ok) if not loose else np.zeros(0, dtype=int)
-    w = w[good]
-    left = np.hstack([w[:, :k1] @ mf.left1, w[:, k1:] @ mf.left2])
-    lam[good] = pencil_rayleigh_quotient(op, twist[good], nu[good], left, vec[good])
+    lam[good] = pencil_rayleigh_quotient(op, twist[good], nu[good], mf.left_vectors(w[good]),
+                                         vec[good])
     bad = np.flatnonzero(~(ok | above))
     tails = np.full(twist.size, np.inf)
     resolved = np.flatnonzero(~above & np.isfinite(lam) & (ok | above))
