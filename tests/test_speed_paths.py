@@ -259,6 +259,33 @@ def test_scalar_family_rule_is_the_array_rule(l0, rel, t0, t1):
     assert float(p[0]) == [l0, l1][best] / np.pi**2
 
 
+_iterate = st.one_of(st.sampled_from([0.0, -0.0, 1e-300, -1.0, math.inf, -math.inf, math.nan]),
+                     st.floats(-1e3, 1e3, allow_nan=False))
+_part = st.one_of(st.sampled_from([0.0, math.inf, math.nan]), st.floats(0.0, 1e3))
+
+
+@settings(max_examples=400, deadline=None)
+@given(sums=st.lists(_iterate, min_size=4, max_size=4), tail=st.lists(_part, min_size=2,
+       max_size=2), quotient=st.one_of(st.none(), st.floats(0.0, 30.0)),
+       jitter=st.sampled_from([0.0, 1e-9, 1e-7, 1e-5, 0.3]),
+       rtol=st.sampled_from([1e-14, 1e-8, 1e-4]))
+def test_scalar_acceptance_rule_is_the_array_rule(sums, tail, quotient, jitter, rtol):
+    """_judge_one (the scalar path's, Python floats) accepts exactly what _judge (the batch
+    path's, arrays) accepts, with the same lambda and tail, on zero, infinite and nan iterates
+    and modes and on power estimates around the acceptance threshold (jitter: theta_2k about
+    theta_k (1 + jitter), delta^2 near rtol)."""
+    from spectral_rod.straight_rod.few_points import _Iterates, _judge, _judge_one
+
+    if all(math.isfinite(v) for v in sums[:2]) and sums[0] != 0.0:
+        sums[3] = sums[2] * (sums[1] / sums[0]) * (1.0 + jitter)
+    lam, tails, ok = _judge(_Iterates(np.array([sums]), np.array([tail]),
+                                      None if quotient is None else np.array([quotient])), rtol)
+    lam1, tail1, ok1 = _judge_one(sums, tail, quotient, rtol)
+    assert ok1 == bool(ok[0])
+    if ok1:
+        assert (lam1, tail1) == (float(lam[0]), float(tails[0]))
+
+
 def test_lean_loose_eigenvalue_is_the_discrete_eigenvalue_within_the_iteration_tolerance(capsys):
     """few_points' docstring (step 3): from rtol = LOOSE_RTOL on, lambda = SHIFT + 1/theta_2k
     instead of the pencil's quotient; where accepted it stays far inside rtol of the discrete

@@ -37,7 +37,11 @@ iterations' different stopping, up to the iteration tolerance (measured: see
 One point (a scalar call, or an array of one point) is :func:`solve_one`'s: the same steps on
 Python floats and (family, m, m) stacks, without the per-point index arrays of a batch (a scalar
 call's cost is mostly numpy's per-call overhead: 78-85 -> 66-68 us a call in a loop over
-Figure 1's points, measured 2026-12-02).
+Figure 1's points, measured 2026-12-02). Steps 1-3 leave only the few scalars step 4 needs
+(:class:`_Iterates`: four dot products and two tail maxima per family), so that for one point
+step 4 runs in Python floats (:func:`_judge_one`, the rule of :func:`_judge`): on a slower
+machine, the same loop took 175-199 -> 119-143 us a call (three interleaved pairs of processes,
+2026-12-02, a later session).
 """
 
 from __future__ import annotations
@@ -46,6 +50,7 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import lru_cache
+from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import NDArray
@@ -59,7 +64,7 @@ from spectral_rod.straight_rod.eigensolver import (
     _start_vector,
     pencil_rayleigh_quotient,
 )
-from spectral_rod.straight_rod.resolution import tails_of
+from spectral_rod.straight_rod.resolution import tail_parts
 
 __all__ = ["LEAN_MAX_DEGREE", "SQUARING_MAX", "DensePencils", "dense_pencils", "solve_few",
            "solve_one"]
@@ -129,11 +134,6 @@ def _inverses(f_t: NDArray[np.float64]) -> NDArray[np.float64] | None:
     return np.swapaxes(flat, -1, -2).reshape(f_t.shape)
 
 
-def _dot(a: NDArray[np.float64], b: NDArray[np.float64]) -> NDArray[np.float64]:
-    """Dot products over the last axis (as a batched matmul: the fastest for short vectors)."""
-    return (a[..., None, :] @ b[..., :, None])[..., 0, 0]
-
-
 def _steps(rtol: float) -> int:
     """Power steps k: 8 (3 squarings) from the batched engine's LOOSE_RTOL on, else 16 (4)."""
     return 8 if rtol >= LOOSE_RTOL else 16
@@ -141,26 +141,17 @@ def _steps(rtol: float) -> int:
 
 def _power_iterates(mat: NDArray[np.float64], start: NDArray[np.float64], steps: int
                     ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """x = M^k x0 and u^T = x0^T M^k (k = steps) for a stack of M (module docstring, step 2)."""
+    """x = M^k x0 (a column, (..., m, 1)) and u^T = x0^T M^k (k = steps) for a stack of M
+    (module docstring, step 2)."""
     if mat.shape[-1] <= SQUARING_MAX:  # log2(steps) products of matrices
         power = mat
         for _ in range(steps.bit_length() - 1):
             power = power @ power
-        return power @ start, start @ power
+        return power @ start[:, None], start @ power
     x = u = np.broadcast_to(start, mat.shape[:-1])  # steps products with vectors
     for _ in range(steps):
         x, u = (mat @ x[..., None])[..., 0], (u[..., None, :] @ mat)[..., 0, :]
-    return x, u
-
-
-def _power_estimates(mat: NDArray[np.float64], x: NDArray[np.float64], u: NDArray[np.float64],
-                     start: NDArray[np.float64]) -> tuple[NDArray[np.float64], ...]:
-    """x1 = M x and the power estimates theta_k, theta_2k of 1/(lambda - SHIFT) (module
-    docstring, step 4) for stacks (..., family) of M and the iterates."""
-    x1 = (mat @ x[..., None])[..., 0]
-    theta_k = (x1 @ start) / (x @ start)  # x0^T M^(k+1) x0 / x0^T M^k x0
-    theta_2k = _dot(u, x1) / _dot(u, x)
-    return x1, theta_k, theta_2k
+    return x[..., None], u
 
 
 def _pencil_quotient(mats: NDArray[np.float64], f_inv: NDArray[np.float64],
@@ -183,29 +174,72 @@ def _extended_quotient(n: int, family: int, twist: NDArray[np.float64],
     return pencil_rayleigh_quotient(family_operator(n, FAMILIES[family]), twist, nu, y, x1)
 
 
+class _Iterates(NamedTuple):
+    """What steps 1-3 of the module docstring leave for the judgement of step 4, per (...,
+    family): ``sums`` (..., 4) = (x0.x, x0.x1, u.x, u.x1) with x = M^k x0, x1 = M x, u^T =
+    x0^T M^k (so theta_k = sums[1] / sums[0], theta_2k = sums[3] / sums[2]); ``tails`` (..., 2)
+    = :func:`.resolution.tail_parts` of x1's mode; ``quotient`` the pencil's Rayleigh quotient
+    (None from rtol = LOOSE_RTOL on, where lambda = SHIFT + 1/theta_2k)."""
+
+    sums: NDArray[np.float64]
+    tails: NDArray[np.float64]
+    quotient: NDArray[np.float64] | None
+
+
 def _solve_pencils(dp: DensePencils, mats: NDArray[np.float64], rtol: float,
-                   extend: Callable[..., None]
-                   ) -> tuple[NDArray[np.float64], ...] | None:
-    """Steps 1-4 of the module docstring for stacks (..., family) of the pencils [F^T, A^T, B^T]
-    (`mats`): lambda, the tails and whether each was accepted; None if some F is singular.
-    ``extend(lam, y, x1)`` puts the extended-precision quotient into lam where |Omega| is large.
+                   extend: Callable[..., None]) -> _Iterates | None:
+    """Steps 1-3 of the module docstring for stacks (..., family) of the pencils [F^T, A^T, B^T]
+    (`mats`); None if some F is singular. ``extend(quotient, y, x1)`` puts the
+    extended-precision quotient into ``quotient`` where |Omega| is large.
     """
     f_inv = _inverses(mats[..., 0, :, :])  # overwrites F^T (not needed after)
     if f_inv is None:
         return None
-    with np.errstate(all="ignore"):  # overflow (a spurious eigenvalue at SHIFT): rejected below
+    with np.errstate(all="ignore"):  # overflow (a spurious eigenvalue at SHIFT): rejected later
         mat = f_inv @ dp.mass
         x, u = _power_iterates(mat, dp.start, _steps(rtol))
-        x1, theta_k, theta_2k = _power_estimates(mat, x, u, dp.start)
-        if rtol >= LOOSE_RTOL:  # the power estimate is accurate enough (docstring, step 3)
-            lam = SHIFT + 1.0 / theta_2k
-        else:
-            y, lam = _pencil_quotient(mats, f_inv, mat, x1, u)
-            extend(lam, y, x1)
+        x1 = mat @ x
+        both = np.concatenate((x, x1), axis=-1)  # (..., m, 2)
+        sums = np.concatenate((dp.start @ both, (u[..., None, :] @ both)[..., 0, :]), axis=-1)
+        tails = tail_parts((dp.tail_rows @ x1)[..., 0])
+        quotient = None
+        if rtol < LOOSE_RTOL:  # else the power estimate is accurate enough (docstring, step 3)
+            y, quotient = _pencil_quotient(mats, f_inv, mat, x1[..., 0], u)
+            extend(quotient, y, x1[..., 0])
+    return _Iterates(sums, tails, quotient)
+
+
+def _judge(it: _Iterates, rtol: float
+           ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.bool_]]:
+    """Step 4 of the module docstring on arrays: lambda, the tails and whether each (point,
+    family) was accepted (:func:`_judge_one` is the same rule in Python floats)."""
+    with np.errstate(all="ignore"):
+        s = it.sums
+        theta_k, theta_2k = s[..., 1] / s[..., 0], s[..., 3] / s[..., 2]
+        lam = SHIFT + 1.0 / theta_2k if it.quotient is None else it.quotient
         delta = np.abs(theta_2k - theta_k) / np.abs(theta_2k)
-        tails = tails_of((dp.tail_rows @ x1[..., None])[..., 0])
-        ok = (delta * delta <= rtol) & (theta_2k > 0) & (lam >= SHIFT) & np.isfinite(tails)
+        last, scale = it.tails[..., 0], np.maximum.reduce(it.tails, axis=-1)
+        tails = np.where(scale > 0, last / scale, np.inf)
+        ok = ((delta * delta <= rtol) & (theta_2k > 0) & (lam >= SHIFT) & np.isfinite(tails)
+              & np.isfinite(scale))  # an infinite coefficient is no resolved mode
     return lam, tails, ok
+
+
+def _judge_one(sums: list[float], tail: list[float], quotient: float | None, rtol: float
+               ) -> tuple[float, float, bool]:
+    """:func:`_judge` for one family in Python floats (the scalar path's): lambda, the tail and
+    whether it was accepted (``tests/test_speed_paths.py`` checks the two agree)."""
+    last, other = tail
+    try:
+        theta_k, theta_2k = sums[1] / sums[0], sums[3] / sums[2]
+        lam = SHIFT + 1.0 / theta_2k if quotient is None else quotient
+        delta = abs(theta_2k - theta_k) / abs(theta_2k)
+        t = last / max(last, other)
+    except ZeroDivisionError:  # a zero iterate or mode: not accepted
+        return math.nan, math.inf, False
+    ok = (delta * delta <= rtol and theta_2k > 0 and lam >= SHIFT and math.isfinite(t)
+          and math.isfinite(other))  # max() passes over a nan `other`; inf: as _judge
+    return lam, t, ok
 
 
 def solve_one(n: int, twist: float, nu: float, rtol: float
@@ -228,11 +262,13 @@ def solve_one(n: int, twist: float, nu: float, rtol: float
                 lam[f] = _extended_quotient(n, f, np.array([twist]), np.array([nu]),
                                             y[f:f + 1], x1[f:f + 1])[0]
 
-    out = _solve_pencils(dp, (coef @ dp.pieces).reshape(2, 3, m, m), rtol, extend)
-    if out is None:
+    it = _solve_pencils(dp, (coef @ dp.pieces).reshape(2, 3, m, m), rtol, extend)
+    if it is None:
         return [math.nan, math.nan], [math.inf, math.inf], False
-    lam, tails, ok = out
-    return lam.tolist(), tails.tolist(), bool(ok.all())
+    quot = [None, None] if it.quotient is None else it.quotient.tolist()
+    out = [_judge_one(s, t, q, rtol) for s, t, q in zip(it.sums.tolist(), it.tails.tolist(),
+                                                         quot, strict=True)]
+    return [o[0] for o in out], [o[1] for o in out], out[0][2] and out[1][2]
 
 
 def solve_few(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol: float
@@ -258,8 +294,8 @@ def solve_few(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol:
                 lam[big, f] = _extended_quotient(n, f, twist[big], nu[big], y[big, f],
                                                  x1[big, f])
 
-    out = _solve_pencils(dp, (coef @ dp.pieces).reshape(pts, 2, 3, m, m), rtol, extend)
-    if out is None:
+    it = _solve_pencils(dp, (coef @ dp.pieces).reshape(pts, 2, 3, m, m), rtol, extend)
+    if it is None:
         return np.full((2, pts), np.nan), np.full((2, pts), np.inf), np.zeros(pts, bool)
-    lam, tails, ok = out
+    lam, tails, ok = _judge(it, rtol)
     return lam.T, tails.T, ok.all(axis=1)

@@ -17,7 +17,7 @@ from spectral_rod.straight_rod.discretisation import FamilyOperator
 
 __all__ = ["ERR_LINEAR", "ERR_QUADRATIC", "N_MAX", "N_MIN", "ROUNDOFF_TWIST", "error_estimate",
            "error_estimate_scalar", "initial_degree", "initial_degree_scalar", "mode_tails",
-           "raised_degree", "roundoff_floor", "tail_for_tolerance", "tails_of"]
+           "raised_degree", "roundoff_floor", "tail_for_tolerance", "tail_parts", "tails_of"]
 
 N_MIN, N_MAX = 8, 512
 EPS = float(np.finfo(float).eps)
@@ -109,13 +109,24 @@ def roundoff_floor(twist_angle: ArrayLike) -> NDArray[np.float64]:
     return EPS * (ROUNDOFF_BASE + ROUNDOFF_TWIST * (om * om))
 
 
+#: tail_parts' split of the last axis: the four tail coefficients first, then the others.
+_TAIL_SPLIT = np.array([0, 4])
+
+
+def tail_parts(coefficients: NDArray[np.float64]) -> NDArray[np.float64]:
+    """The largest |coefficient| of the four tail ones and of the others (a new last axis of
+    2), from coefficients laid out as ``FamilyOperator.tail_rows`` gives them (last axis): the
+    parts of :func:`tails_of`, for a caller that finishes in Python floats."""
+    return np.maximum.reduceat(np.abs(coefficients), _TAIL_SPLIT, axis=-1)
+
+
 def tails_of(coefficients: NDArray[np.float64]) -> NDArray[np.float64]:
     """The coefficient tail from coefficients laid out as ``FamilyOperator.tail_rows`` gives
     them (last axis): the largest of the four tail coefficients relative to the largest of all;
     inf where the mode is zero."""
-    a = np.abs(coefficients)
-    scale, last = np.maximum.reduce(a, axis=-1), np.maximum.reduce(a[..., :4], axis=-1)
-    if scale.all():  # no zero mode: skip the guarded division (half the cost of a scalar call's)
+    parts = tail_parts(coefficients)
+    last, scale = parts[..., 0], np.maximum.reduce(parts, axis=-1)
+    if scale.all():  # no zero mode: skip the guarded division
         return last / scale
     with np.errstate(invalid="ignore", divide="ignore"):
         return np.where(scale > 0, last / scale, np.inf)
