@@ -10,9 +10,10 @@ name or a dotted JSON key path (``fnmatch`` wildcards; the first matching patter
 - ``"text"``: prose with numbers in it: the words identical, each number within the rule's
   defaults or one and a half units of its last printed digit (rounding may flip that digit);
 - a float ``r``: relative tolerance, ``|new - old| <= r |old|``;
-- a dict with any of ``rel``, ``abs`` and ``floor`` (the name of a column holding the solver's
-  own relative error estimate for that row): ``|new - old| <= max(rel |old|, abs,
-  max(est_old, est_new) |old|)``.
+- a dict with any of ``rel``, ``abs``, ``floor`` (the name of a column holding the solver's
+  own relative error estimate for that row) and ``per_row`` (a pair (name, factor): an absolute
+  slack of factor times the committed row's value of column, or sibling JSON key, `name`):
+  ``|new - old| <= max(rel |old|, abs, max(est_old, est_new) |old|, factor row[name])``.
 
 A spec may also hold ``"_owner": KEY`` (for a JSON list of rows with an ``id``, like
 ``claims.json``, which several scenes share): only the rows whose ``KEY`` equals the scene's
@@ -113,8 +114,14 @@ def _text_allows(old: str, new: str) -> bool:
     return True
 
 
-def rule_allows(rule: Any, old: Any, new: Any, est: tuple[float, float] = (0.0, 0.0)) -> bool:
-    """Whether `new` may replace `old` under `rule` (`est`: the row's error estimates)."""
+def rule_allows(rule: Any, old: Any, new: Any, est: tuple[float, float] = (0.0, 0.0),
+                row_slack: float = 0.0) -> bool:
+    """Whether `new` may replace `old` under `rule` (`est`: the row's error estimates;
+    `row_slack`: its ``per_row`` slack).
+
+    >>> rule_allows({"rel": 1e-3, "per_row": ("tol", 0.01)}, 8.1e-11, 8.2e-11, row_slack=1e-8)
+    True
+    """
     if rule == "ignore":
         return True
     if rule == "text" and isinstance(old, str) and isinstance(new, str):
@@ -126,7 +133,7 @@ def rule_allows(rule: Any, old: Any, new: Any, est: tuple[float, float] = (0.0, 
     if rule in ("exact", "text"):
         return old == new
     scale = max(rule.get("rel", 0.0), *(e for e in est if math.isfinite(e))) * abs(old)
-    return abs(new - old) <= max(scale, rule.get("abs", 0.0))
+    return abs(new - old) <= max(scale, rule.get("abs", 0.0), row_slack)
 
 
 def _describe(rule: Any) -> str:
@@ -162,14 +169,16 @@ def compare_csv(name: str, old_path: Path, new_path: Path, spec: dict[str, Any]
             out.ignored += len(old)
             continue
         floor = rule.get("floor") if isinstance(rule, dict) else None
+        per_row = rule.get("per_row") if isinstance(rule, dict) else None
         for i, (a, b) in enumerate(zip(old[col], new[col], strict=True)):
             a, b = _cell(a), _cell(b)
             est = (float(old[floor].iloc[i]), float(new[floor].iloc[i])) if floor else (0, 0)
+            slack = per_row[1] * float(old[per_row[0]].iloc[i]) if per_row else 0.0
             out.compared += 1
             if a != b and not _both_nan(a, b):
                 out.differences.append(Difference(name, f"row {i + 2}, {col}", a, b,
                                                   _describe(rule),
-                                                  not rule_allows(rule, a, b, est)))
+                                                  not rule_allows(rule, a, b, est, slack)))
     return out
 
 
@@ -214,8 +223,19 @@ def compare_json(name: str, old_path: Path, new_path: Path, spec: dict[str, Any]
                                               new.get(key, "(missing)"), "present", True))
         elif old[key] != new[key] and not _both_nan(old[key], new[key]):
             out.differences.append(Difference(name, key, old[key], new[key], _describe(rule),
-                                              not rule_allows(rule, old[key], new[key])))
+                                              not rule_allows(rule, old[key], new[key],
+                                                              row_slack=_json_slack(rule, key,
+                                                                                    old))))
     return out
+
+
+def _json_slack(rule: Any, key: str, flat: dict[str, Any]) -> float:
+    """The ``per_row`` slack of `key` from its sibling key in the committed JSON (0 if none)."""
+    per_row = rule.get("per_row") if isinstance(rule, dict) else None
+    if not per_row:
+        return 0.0
+    sibling = flat.get(f"{key.rpartition('.')[0]}.{per_row[0]}")
+    return per_row[1] * float(sibling) if _is_number(sibling) else 0.0
 
 
 def compare_file(name: str, committed_dir: Path, fresh_dir: Path, spec: dict[str, Any] | str,

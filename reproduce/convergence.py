@@ -48,6 +48,7 @@ from spectral_rod import (
 NAME = "convergence"
 SUMMARY = ("straight rod, Eq. inst1: error vs resolution and vs time for collocation, finite "
            "differences and the mpmath reference -> convergence_*.png, convergence*.csv")
+_LOOSE_TOL_ERROR = {"rel": 1e-3, "abs": 1e-13, "per_row": ("tol", 0.01)}
 #: `python -m reproduce check`: per output file and column (or JSON key), how a regenerated
 #: value may differ from the committed one (rules in reproduce/compare.py).
 CHECK = {
@@ -57,14 +58,21 @@ CHECK = {
     "convergence_cost.csv": {"seconds": "ignore", "rel_error": {"rel": 1e-5, "abs": 1e-12},
                              "*": "exact"},
     # the tol trade: timings and their ratios are machine-dependent; errors at tol = 1e-12 are
-    # round-off (BLAS-dependent digits), so an absolute floor; degrees are exact
+    # round-off (BLAS-dependent digits), so an absolute floor; at a looser tol the achieved
+    # error also depends on the step at which the eigenvalue iteration stops, which the
+    # rounding of another machine's BLAS kernels can move: up to the iteration's tolerance,
+    # 0.01 tol (measured on two machine instances with the same packages, 2026-12-02: 8.10e-11
+    # and 8.17e-11 at tol 1e-6, 2.04974e-7 and 2.04972e-7 at 1e-4); degrees are exact
     "convergence_tol_trade.csv": {"*seconds": "ignore", "*cost_ratio": "ignore",
-                                  "*error*": {"rel": 1e-3, "abs": 1e-13}, "*": "exact"},
+                                  "*error*": _LOOSE_TOL_ERROR, "*": "exact"},
     "sections/convergence.json": {"*seconds": "ignore", "details.figure1_speed.*": "ignore",
                                   "details.tol_trade.*cost_ratio": "ignore",
-                                  "details.tol_trade.*error*": {"rel": 1e-3, "abs": 1e-13},
-                                  "details.cost.*.rel_error": {"rel": 1e-6, "abs": 1e-12},
-                                  "details.fd_slopes.*": 1e-9, "*": "exact"},
+                                  "details.tol_trade.*error*": _LOOSE_TOL_ERROR,
+                                  "details.cost.*.rel_error": {"rel": 1e-6, "abs": 1e-12,
+                                                               "per_row": ("target", 0.01)},
+                                  # the slopes' finest points have errors ~1e-7, whose round-off
+                                  # (~1e-15 in p*) moves them by ~1e-8 (two machines: 4e-9)
+                                  "details.fd_slopes.*": 1e-7, "*": "exact"},
 }
 CASES = ((2.0, 1.5), (10.0, 1.1), (30.0, 2.0), (100.0, 1.5))
 TARGETS = (1e-4, 1e-8, 1e-12)

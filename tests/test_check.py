@@ -56,6 +56,30 @@ def test_json_rows_by_owner_and_verdicts(tmp_path):
         "c1.numbers.p"]
 
 
+def test_per_row_slack_in_csv_and_json(tmp_path):
+    # an achieved error at a loose tol may move by 0.01 tol (the iteration's tolerance), and
+    # only by that: the slack comes from the committed row's own tol, in CSV and JSON alike
+    from reproduce.compare import compare_csv
+
+    rule = {"rel": 1e-3, "abs": 1e-13, "per_row": ("tol", 0.01)}
+    spec = {"err": rule, "*": "exact"}
+    old, near, far = (tmp_path / f"{k}.csv" for k in ("old", "near", "far"))
+    pd.DataFrame({"tol": [1e-12, 1e-6], "err": [1e-14, 8.1e-11]}).to_csv(old, index=False)
+    pd.DataFrame({"tol": [1e-12, 1e-6], "err": [1e-14, 9.0e-9]}).to_csv(near, index=False)
+    pd.DataFrame({"tol": [1e-12, 1e-6], "err": [5e-13, 8.1e-11]}).to_csv(far, index=False)
+    assert compare_csv("t", old, near, spec).regressions == []
+    assert [d.where for d in compare_csv("t", old, far, spec).regressions] == ["row 2, err"]
+    rows = {"rows": [{"tol": 1e-12, "err": 1e-14}, {"tol": 1e-6, "err": 8.1e-11}]}
+    jspec = {"rows.*.err": rule, "*": "exact"}
+    (tmp_path / "old.json").write_text(json.dumps(rows), encoding="utf-8")
+    for i, err, bad in ((1, 9.0e-9, []), (1, 2e-8, ["rows.1.err"]), (0, 5e-13, ["rows.0.err"])):
+        moved = json.loads(json.dumps(rows))
+        moved["rows"][i]["err"] = err
+        (tmp_path / "new.json").write_text(json.dumps(moved), encoding="utf-8")
+        got = compare_json("j", tmp_path / "old.json", tmp_path / "new.json", jspec, "s")
+        assert [d.where for d in got.regressions] == bad
+
+
 def test_a_corrupt_json_is_a_clean_fault(tmp_path):
     from reproduce.io import OutputFileError
 
