@@ -64,7 +64,7 @@ from spectral_rod.straight_rod.eigensolver import (
     _start_vector,
     pencil_rayleigh_quotient,
 )
-from spectral_rod.straight_rod.resolution import tail_parts
+from spectral_rod.straight_rod.resolution import tail_from_parts, tail_parts
 
 __all__ = ["LEAN_MAX_DEGREE", "SQUARING_MAX", "DensePencils", "dense_pencils", "solve_few",
            "solve_one"]
@@ -218,10 +218,9 @@ def _judge(it: _Iterates, rtol: float
         theta_k, theta_2k = s[..., 1] / s[..., 0], s[..., 3] / s[..., 2]
         lam = SHIFT + 1.0 / theta_2k if it.quotient is None else it.quotient
         delta = np.abs(theta_2k - theta_k) / np.abs(theta_2k)
-        last, scale = it.tails[..., 0], np.maximum.reduce(it.tails, axis=-1)
-        tails = np.where(scale > 0, last / scale, np.inf)
+        tails = tail_from_parts(it.tails)
         ok = ((delta * delta <= rtol) & (theta_2k > 0) & (lam >= SHIFT) & np.isfinite(tails)
-              & np.isfinite(scale))  # an infinite coefficient is no resolved mode
+              & np.isfinite(it.tails).all(axis=-1))  # an infinite coefficient: no mode
     return lam, tails, ok
 
 
@@ -237,8 +236,8 @@ def _judge_one(sums: list[float], tail: list[float], quotient: float | None, rto
         t = last / max(last, other)
     except ZeroDivisionError:  # a zero iterate or mode: not accepted
         return math.nan, math.inf, False
-    ok = (delta * delta <= rtol and theta_2k > 0 and lam >= SHIFT and math.isfinite(t)
-          and math.isfinite(other))  # max() passes over a nan `other`; inf: as _judge
+    ok = (delta * delta <= rtol and theta_2k > 0 and lam >= SHIFT and math.isfinite(last)
+          and math.isfinite(other))  # both parts: max() would pass over a nan `other`
     return lam, t, ok
 
 

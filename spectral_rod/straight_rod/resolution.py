@@ -17,7 +17,8 @@ from spectral_rod.straight_rod.discretisation import FamilyOperator
 
 __all__ = ["ERR_LINEAR", "ERR_QUADRATIC", "N_MAX", "N_MIN", "ROUNDOFF_TWIST", "error_estimate",
            "error_estimate_scalar", "initial_degree", "initial_degree_scalar", "mode_tails",
-           "raised_degree", "roundoff_floor", "tail_for_tolerance", "tail_parts", "tails_of"]
+           "raised_degree", "roundoff_floor", "tail_for_tolerance", "tail_from_parts", "tail_parts",
+           "tails_of"]
 
 N_MIN, N_MAX = 8, 512
 EPS = float(np.finfo(float).eps)
@@ -120,16 +121,21 @@ def tail_parts(coefficients: NDArray[np.float64]) -> NDArray[np.float64]:
     return np.maximum.reduceat(np.abs(coefficients), _TAIL_SPLIT, axis=-1)
 
 
-def tails_of(coefficients: NDArray[np.float64]) -> NDArray[np.float64]:
-    """The coefficient tail from coefficients laid out as ``FamilyOperator.tail_rows`` gives
-    them (last axis): the largest of the four tail coefficients relative to the largest of all;
-    inf where the mode is zero."""
-    parts = tail_parts(coefficients)
+def tail_from_parts(parts: NDArray[np.float64]) -> NDArray[np.float64]:
+    """:func:`tails_of` from its :func:`tail_parts`: the tail part over the larger part; inf
+    where the mode is zero."""
     last, scale = parts[..., 0], np.maximum.reduce(parts, axis=-1)
     if scale.all():  # no zero mode: skip the guarded division
         return last / scale
     with np.errstate(invalid="ignore", divide="ignore"):
         return np.where(scale > 0, last / scale, np.inf)
+
+
+def tails_of(coefficients: NDArray[np.float64]) -> NDArray[np.float64]:
+    """The coefficient tail from coefficients laid out as ``FamilyOperator.tail_rows`` gives
+    them (last axis): the largest of the four tail coefficients relative to the largest of all;
+    inf where the mode is zero."""
+    return tail_from_parts(tail_parts(coefficients))
 
 
 def mode_tails(op: FamilyOperator, vectors: NDArray[np.float64]) -> NDArray[np.float64]:
