@@ -34,8 +34,13 @@ def _dead_pid() -> int:
     return proc.pid
 
 
-@pytest.mark.parametrize(("sig", "delay"), [(signal.SIGINT, 0.15), (signal.SIGINT, 0.6),
-                                            (signal.SIGINT, 1.2), (signal.SIGTERM, 0.15),
+_SLOW = pytest.mark.slow  # ~9 s each on a slow machine: two moments stay in the default run
+
+
+@pytest.mark.parametrize(("sig", "delay"), [(signal.SIGINT, 0.15),
+                                            pytest.param(signal.SIGINT, 0.6, marks=_SLOW),
+                                            pytest.param(signal.SIGINT, 1.2, marks=_SLOW),
+                                            pytest.param(signal.SIGTERM, 0.15, marks=_SLOW),
                                             (signal.SIGTERM, 0.9)])
 def test_signal_at_any_moment_gives_one_line(tmp_path, sig, delay):
     # 0.15 s lands in the imports of numpy/pandas/matplotlib, later ones in the scene's work
