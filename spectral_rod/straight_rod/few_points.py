@@ -24,7 +24,8 @@ families the same size, so they are stacked), and:
 4. convergence is judged from the power estimates theta_k = x0^T M^{k+1} x0 / x0^T M^k x0 of
    1/(lambda - SHIFT) at k and 2k: their relative difference delta measures the vectors' error
    after k steps (~ the contraction^k), so the quotient's error is ~ delta^2; a point is
-   accepted when delta^2 <= rtol and lambda >= SHIFT. Anything else (a slow contraction, a
+   accepted when delta^2 <= rtol, lambda >= SHIFT and its mode's tail parts are finite (and
+   not both zero). Anything else (a slow contraction, a
    spurious eigenvalue nearest the shift) goes back to the batched engine, which decides with
    its own iteration or the full ``eig``.
 
