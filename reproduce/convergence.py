@@ -48,6 +48,8 @@ from spectral_rod import (
 NAME = "convergence"
 SUMMARY = ("straight rod, Eq. inst1: error vs resolution and vs time for collocation, finite "
            "differences and the mpmath reference -> convergence_*.png, convergence*.csv")
+#: An achieved error of the tol trade: round-off digits, and at a loose tol the eigenvalue
+#: iteration's tolerance, 0.01 tol (the library's iteration_rtol; tests/test_check.py ties the two)
 _LOOSE_TOL_ERROR = {"rel": 1e-3, "abs": 1e-13, "per_row": ("tol", 0.01)}
 #: `python -m reproduce check`: per output file and column (or JSON key), how a regenerated
 #: value may differ from the committed one (rules in reproduce/compare.py).

@@ -80,6 +80,19 @@ def test_per_row_slack_in_csv_and_json(tmp_path):
         assert [d.where for d in got.regressions] == bad
 
 
+def test_the_loose_tol_slack_is_the_libraries_iteration_tolerance():
+    # the convergence scene's check slack restates iteration_rtol's factor (scenes see only the
+    # public API): a change of either must show here
+    from reproduce import convergence
+    from spectral_rod.straight_rod.eigensolver import iteration_rtol
+
+    for rule in (convergence._LOOSE_TOL_ERROR,
+                 convergence.CHECK["sections/convergence.json"]["details.cost.*.rel_error"]):
+        factor = rule["per_row"][1]
+        for tol in (*convergence.TRADE_TOLS, *convergence.TARGETS):
+            assert max(factor * tol, rule["abs"]) == max(iteration_rtol(tol), rule["abs"])
+
+
 def test_a_corrupt_json_is_a_clean_fault(tmp_path):
     from reproduce.io import OutputFileError
 

@@ -205,8 +205,9 @@ def _solve_pencils(dp: DensePencils, mats: NDArray[np.float64], rtol: float,
         tails = tail_parts((dp.tail_rows @ x1)[..., 0])
         quotient = None
         if rtol < LOOSE_RTOL:  # else the power estimate is accurate enough (docstring, step 3)
-            y, quotient = _pencil_quotient(mats, f_inv, mat, x1[..., 0], u)
-            extend(quotient, y, x1[..., 0])
+            x1 = x1[..., 0]
+            y, quotient = _pencil_quotient(mats, f_inv, mat, x1, u)
+            extend(quotient, y, x1)
     return _Iterates(sums, tails, quotient)
 
 

@@ -117,7 +117,7 @@ _TAIL_SPLIT = np.array([0, 4])
 def tail_parts(coefficients: NDArray[np.float64]) -> NDArray[np.float64]:
     """The largest |coefficient| of the four tail ones and of the others (a new last axis of
     2), from coefficients laid out as ``FamilyOperator.tail_rows`` gives them (last axis): the
-    parts of :func:`tails_of`, for a caller that finishes in Python floats."""
+    parts of :func:`tails_of` (the lean solver's one-point path finishes them in floats)."""
     return np.maximum.reduceat(np.abs(coefficients), _TAIL_SPLIT, axis=-1)
 
 
