@@ -56,3 +56,26 @@ def test_scene_runs_and_writes_its_outputs(tmp_path):
     assert out.report.startswith("## Convergence")
     assert "| Ω(L), ν | method |" in out.report
     assert out.details["figure1_speed"]["max_rel_diff"] < 1e-10
+
+
+def test_interleaved_best_times_alternates_and_keeps_each_minimum(monkeypatch):
+    # a fake clock: each call of function i advances it by the durations listed for i, so the
+    # minima and the order of the calls are known exactly
+    clock, calls = [0.0], []
+    durations = {0: iter([9.0, 3.0, 5.0]), 1: iter([9.0, 1.0, 0.5])}
+
+    def make(i):
+        def fn():
+            calls.append(i)
+            clock[0] += next(durations[i])
+            return f"result {i} after {len(calls)} calls"
+        return fn
+
+    monkeypatch.setattr(scene.time, "perf_counter", lambda: clock[0])
+    (best0, out0), (best1, out1) = scene.interleaved_best_times([make(0), make(1)],
+                                                                 min_total=1.5)
+    # one untimed call each, then rounds of both until *each* has run min_total (function 0
+    # alone reaches it after one round)
+    assert calls == [0, 1, 0, 1, 0, 1]
+    assert (best0, best1) == (3.0, 0.5)  # the timed repeats only (not the untimed 9.0)
+    assert (out0, out1) == ("result 0 after 5 calls", "result 1 after 6 calls")
