@@ -43,12 +43,15 @@ PATTERNS = {
 #: The tol trade (issue 14: the Figure 1 batch at tol 1e-4 costs at most half of tol 1e-12).
 TRADE = ("figure1 batch tol 1e-4", "critical_load(tw, nv, tol=1e-4)", "tw.size")
 
-_CHILD = """
+#: The child's names: what the statements of PATTERNS and TRADE may use.
+SETUP = """
 import os, numpy as np
 from scipy.optimize import brentq
 from spectral_rod import baseline_critical_load, critical_load, load_figure1
 d = load_figure1()
 tw, nv = d["twist_angle"].to_numpy(), d["nu"].to_numpy()
+"""
+_CHILD = SETUP + """
 run = lambda: {stmt}
 run()
 os.system(f"callgrind_control -i on {{os.getpid()}} > /dev/null")

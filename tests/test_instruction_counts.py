@@ -1,0 +1,45 @@
+"""The instruction-count tool of the benchmarks (``tests/bench/instruction_counts.py``): its
+statements run against the current API and its reading of callgrind's output is right, checked
+without valgrind (the counts themselves need it and are not part of the default run)."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+from types import SimpleNamespace
+
+import pytest
+
+sys.path.insert(0, str(Path(__file__).parent / "bench"))
+import instruction_counts as ic
+
+
+def test_every_pattern_runs_and_counts_its_points() -> None:
+    ns: dict[str, object] = {}
+    exec(ic.SETUP, ns)  # the tool's own preamble
+    expected = {"baseline": 40, "batches of 10": 600, "brentq search": 9, "scalar loop": 201}
+    for name, stmt, points in [*((k, *v) for k, v in ic.PATTERNS.items()), ic.TRADE]:
+        eval(stmt, ns)  # raises if the API the tool calls has changed
+        n = eval(points, ns)
+        assert n == expected.get(name, 1201), name
+
+
+def test_count_divides_the_collected_instructions_by_the_points(monkeypatch) -> None:
+    seen = {}
+
+    def fake_run(cmd, **kwargs):
+        seen["cmd"] = cmd
+        return SimpleNamespace(stdout="POINTS 1201\n",
+                               stderr="==7== Events    : Ir\n==7== Collected : 170178998\n")
+
+    monkeypatch.setattr(subprocess, "run", fake_run)
+    assert ic.count("figure1 batch") == pytest.approx(170178998 / 1201)
+    assert seen["cmd"][:3] == ["valgrind", "--tool=callgrind", "--instr-atstart=no"]
+    assert "critical_load(tw, nv)" in seen["cmd"][-1]  # the pattern's statement, counted
+
+
+def test_unknown_pattern_is_refused(monkeypatch) -> None:
+    monkeypatch.setattr(ic.shutil, "which", lambda name: f"/usr/bin/{name}")
+    with pytest.raises(SystemExit, match="unknown pattern"):
+        ic.main(["figure 1"])
