@@ -88,16 +88,7 @@ def best_time(fn: Callable[[], object], min_total: float = 0.02, max_repeats: in
     One untimed call first: operators are assembled once per degree and cached (a one-time
     cost per session, not part of the per-point cost compared here).
     """
-    out = fn()
-    best, total = np.inf, 0.0
-    for _ in range(max_repeats):
-        t0 = time.perf_counter()
-        out = fn()
-        dt = time.perf_counter() - t0
-        best, total = min(best, dt), total + dt
-        if total >= min_total:
-            break
-    return best, out
+    return interleaved_best_times([fn], min_total, max_repeats)[0]
 
 
 def interleaved_best_times(fns: list[Callable[[], object]], min_total: float,

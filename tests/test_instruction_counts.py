@@ -43,3 +43,12 @@ def test_unknown_pattern_is_refused(monkeypatch) -> None:
     monkeypatch.setattr(ic.shutil, "which", lambda name: f"/usr/bin/{name}")
     with pytest.raises(SystemExit, match="unknown pattern"):
         ic.main(["figure 1"])
+
+
+def test_each_pattern_is_counted_once(monkeypatch, capsys) -> None:
+    calls = []
+    monkeypatch.setattr(ic.shutil, "which", lambda name: f"/usr/bin/{name}")
+    monkeypatch.setattr(ic, "count", lambda name: calls.append(name) or 1000.0 * len(calls))
+    ic.main(["figure1 batch", ic.TRADE[0]])
+    assert calls == ["baseline", "figure1 batch", ic.TRADE[0]]  # the batch serves the trade too
+    assert "1.500 of tol 1e-12" in capsys.readouterr().out  # 3000 / 2000
