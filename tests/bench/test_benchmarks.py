@@ -416,7 +416,7 @@ def test_pooling_cost_model(benchmark, bench_registry):
             nv = rng.uniform(1.1, 10.0, size)
             deg = np.full(size, n)
             pts[size] = _interleaved_min([lambda tw=tw, nv=nv, deg=deg:
-                                          _solve_points(tw, nv, deg)], rounds=3)[0]
+                                          _solve_points(tw, nv, deg)])[0]
         slope = (pts[300] - pts[30]) / 270
         measured[n] = (pts[30] - 30 * slope, slope / (n / 22.0) ** 2)
     ratios = [fixed / point for fixed, point in measured.values()]
@@ -425,4 +425,6 @@ def test_pooling_cost_model(benchmark, bench_registry):
     benchmark.extra_info.update({f"n{n}_point_s": p for n, (_, p) in measured.items()})
     benchmark.pedantic(lambda: None, rounds=1, iterations=1)
     # the decisions depend on FIXED_COST / POINT_COST: within a factor 3 of the measured one
+    # (measured 113-115, 173-174, 173-229 at n = 16, 22, 36 in two runs, the model's 93; with
+    # 3 rounds instead of the default 7 a loaded run once measured 302 at n = 36)
     assert all(FIXED_COST / POINT_COST / 3 <= r <= 3 * FIXED_COST / POINT_COST for r in ratios)
