@@ -75,11 +75,11 @@ def few_points_limit(n: int) -> int:
 #: at n = 16..64) plus POINT_COST (n/22)^2 a point (14.0-15.3 us (n/22)^2 at n = 16..64); the
 #: lean solver has no fixed cost and costs about twice as much a point (1.7-2.1 times, measured
 #: at n = 16..26). Empirical constants: only their ratios decide. Re-measured 2026-12-02 (a
-#: later session, same method): 2.1-2.7 ms fixed and 9.7, 13.8, 31 us a point at n = 16, 22, 36
-#: (closer to n^1.5 than n^2); the constants were kept because they decide best: with FIXED_COST
-#: 0.7, 1.4 or 2.3 ms (15 interleaved rounds, in one process) the Figure 1 batch took 20.2, 20.4,
-#: 21.4 ms at tol 1e-12 and 10.4, 9.9, 12.6 ms at 1e-4, one call per curve 24.9, 21.3, 21.5 ms,
-#: batches of 100 36.1, 36.9, 36.6 ms.
+#: later session, same method, two runs): 2.1-2.7 ms fixed and 9.5-9.7, 13.5-13.8, 31-37 us a
+#: point at n = 16, 22, 36 (closer to n^1.5 than n^2). The constants were kept because they
+#: decide best: with FIXED_COST 0.7, 1.4 or 2.3 ms (15 interleaved rounds, in one process) the
+#: Figure 1 batch took 20.2, 20.4, 21.4 ms at tol 1e-12 and 10.4, 9.9, 12.6 ms at 1e-4, one call
+#: per curve 24.9, 21.3, 21.5 ms, batches of 100 36.1, 36.9, 36.6 ms.
 FIXED_COST, POINT_COST, LEAN_FACTOR = 1.4e-3, 15e-6, 2.0
 
 

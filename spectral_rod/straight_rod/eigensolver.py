@@ -215,11 +215,11 @@ class _ShiftedModal:
     2 c1_2 (-4 Omega) in front of G21.
     Vectors are rows of one array (points x (k1 + k2)), omega1 block first.
 
-    The per-point inverse (``numpy.linalg.inv``, LAPACK per matrix) is 34-39 % of the Figure 1
-    batch's instructions. Measured against it on 800 matrices of k = 6..32 (2026-12-02): a
-    Gauss-Jordan inversion with partial pivoting vectorised over the points took 1.5-3 times as
-    long (points-last layout; 2.3-5.5 times points-first), ``scipy.linalg.inv`` on the stack 1.7-2.4
-    times; numpy has no batched factorisation that is faster.
+    The per-point inverse (``numpy.linalg.inv``, LAPACK per matrix) is 34 % (tol 1e-4) and 39 %
+    (tol 1e-12) of the Figure 1 batch's instructions (callgrind, 2026-12-02). Against it on 800
+    matrices of k = 6..32: a Gauss-Jordan inversion with partial pivoting vectorised over the
+    points took 1.5-3 times as long (points-last layout; 2.3-5.5 times points-first), and
+    ``scipy.linalg.inv`` on the stack 1.7-2.4 times; no faster batched alternative was found.
     """
 
     elim: slice  # columns of the eliminated block
