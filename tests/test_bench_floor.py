@@ -39,6 +39,7 @@ def test_the_ratio_floor_decides(new_seconds, passes):
     if passes:  # ratio 100 >= floor
         call()
         assert bench.extra_info["ratio_min"] == pytest.approx(100.0)
+        assert bench.extra_info["ratio_interleaved"] > 0  # timed for real, of no-ops
     else:  # ratio 1 < floor
         with pytest.raises(AssertionError, match="below floor"):
             call()

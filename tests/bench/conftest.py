@@ -16,7 +16,8 @@ RATIO_KEY = pytest.StashKey[dict]()
 
 @pytest.fixture(scope="session")
 def bench_registry(request) -> dict:
-    """Per pattern: per-point (min, median) seconds of the yardstick and the new code, ratio."""
+    """Per pattern: per-point (min, median) seconds of the yardstick and the new code, the
+    ratio, and the interleaved check of the ratio."""
     return request.config.stash.setdefault(RATIO_KEY, {})
 
 
@@ -28,10 +29,11 @@ def pytest_terminal_summary(terminalreporter, exitstatus, config) -> None:
     tr = terminalreporter
     tr.write_sep("=", "issue 14: same-run ratios, yardstick / new (minimum over rounds)")
     tr.write_line(f"{'pattern':<22}{'yardstick':<28}{'yardstick/pt':>14}{'new/pt':>12}"
-                  f"{'ratio':>8}{'floor':>7}")
+                  f"{'ratio':>8}{'floor':>7}{'interleaved':>13}")
     for name, e in rows:
         tr.write_line(f"{name:<22}{e['yardstick_name']:<28}{_us(e['yardstick'][0]):>14}"
-                      f"{_us(e['new'][0]):>12}{e['ratio']:>8.1f}{e['floor']:>7.1f}")
+                      f"{_us(e['new'][0]):>12}{e['ratio']:>8.1f}{e['floor']:>7.1f}"
+                      f"{e['interleaved']:>13.1f}")
     if "tol trade" in reg:
         tt = reg["tol trade"]
         tr.write_line(f"tol trade, Figure 1 batch (interleaved minima): tol 1e-4 costs "

@@ -10,7 +10,9 @@ large twist and near-degenerate points, where the baseline is not a meaningful c
 does not resolve Omega(L) >= 50, and it returns p* - 1 with no significant digits at
 nu - 1 = 1e-8). Where the yardstick is slow it runs on a sample of the points and the ratio is
 per point (named in ``extra_info``). The ratio is yardstick/new from the minimum over rounds of
-wall-clock time (on a shared machine the minimum is the round least disturbed by other jobs).
+wall-clock time (on a shared machine the minimum is the round least disturbed by other jobs);
+the table's "interleaved" column checks it with as many rounds of each, alternating, so that
+both see the same load (:func:`_interleaved_ratio`). The floors judge the first.
 
 Each new-code test records the resolution and the achieved accuracy (against the mpmath
 characteristic equation on a sample) in ``extra_info`` and asserts it, so that a fast wrong answer
@@ -78,8 +80,23 @@ def _yardstick(benchmark, registry, pattern, fn, points, rounds=5):
     """Time a yardstick; store its per-point minimum for the pattern's ratio."""
     benchmark.pedantic(fn, rounds=rounds, iterations=1, warmup_rounds=0)
     st = benchmark.stats.stats
-    registry.setdefault(pattern, {})["yardstick"] = (st.min / points, st.median / points)
+    registry.setdefault(pattern, {}).update(yardstick=(st.min / points, st.median / points),
+                                            yardstick_call=(fn, points, rounds))
     benchmark.extra_info.update(points=points, role="yardstick")
+
+
+def _interleaved_ratio(yardstick, yardstick_points, pairs, new, points) -> float:
+    """yardstick/new per point from the minima over `pairs` alternating rounds of each: a check
+    of the ratio above, whose two timings run one after the other (minutes apart, 3-5 rounds
+    against 15), so that a change of load between them moves it (measured 2026-12-03: the
+    scalar loop's yardstick took 804 us a point in one run, 475-530 in others)."""
+    times: tuple[list[float], list[float]] = ([], [])
+    for _ in range(pairs):
+        for fn, out in zip((yardstick, new), times, strict=True):
+            t0 = time.perf_counter()
+            fn()
+            out.append(time.perf_counter() - t0)
+    return (min(times[0]) / yardstick_points) / (min(times[1]) / points)
 
 
 def _new(benchmark, registry, pattern, fn, points, info, yardstick_name):
@@ -91,7 +108,9 @@ def _new(benchmark, registry, pattern, fn, points, info, yardstick_name):
     entry.update(floor=FLOORS[pattern], yardstick_name=yardstick_name)
     ratio = entry["yardstick"][0] / entry["new"][0]
     entry["ratio"] = ratio
+    entry["interleaved"] = _interleaved_ratio(*entry["yardstick_call"], fn, points)
     benchmark.extra_info.update(points=points, ratio_min=ratio, floor=FLOORS[pattern],
+                                ratio_interleaved=entry["interleaved"],
                                 yardstick=yardstick_name, **info)
     assert ratio >= FLOORS[pattern], f"{pattern}: ratio {ratio:.1f} below floor"
 
@@ -230,8 +249,7 @@ def test_map_baseline(benchmark, grid_map, bench_registry):
     sample = np.arange(0, tw.size, 97)  # the baseline's cost does not depend on the point
     _yardstick(benchmark, bench_registry, "map all points",
                lambda: baseline_sweep(tw[sample], nv[sample]), sample.size, rounds=3)
-    bench_registry["map collocation part"] = {"yardstick":
-                                              bench_registry["map all points"]["yardstick"]}
+    bench_registry["map collocation part"] = dict(bench_registry["map all points"])
     benchmark.extra_info.update(sample="every 97th point of the map, per-point time")
 
 
