@@ -27,7 +27,13 @@ def main(argv: list[str] | None = None) -> int:
 
 def entry_point(argv: list[str] | None = None) -> int:
     """Install the signal handlers, then run the CLI; an interrupt anywhere gives one line."""
-    from reproduce.signals import ignore_signals, install_handlers, interrupted_exit
+    from reproduce.signals import (
+        Interrupted,
+        ignore_signals,
+        install_handlers,
+        interrupted_exit,
+        received,
+    )
 
     install_handlers()
     try:
@@ -35,6 +41,16 @@ def entry_point(argv: list[str] | None = None) -> int:
         ignore_signals()  # done: a late signal must not turn a finished run into a traceback
     except KeyboardInterrupt as exc:
         return interrupted_exit(exc)
+    except Exception:
+        if received() is None:
+            raise
+        # The interrupt was raised inside a C extension's initialisation, which turned it into
+        # another exception (seen in CI, 2026-12-03: SIGINT in matplotlib's ft2font import gave
+        # "ImportError: initialization failed"), and the half-built module then crashed the
+        # interpreter's finalisation. The outputs are whole (the finally clauses ran): skip it.
+        status = interrupted_exit(Interrupted(received()))
+        sys.stdout.flush()
+        os._exit(status)
     return status
 
 

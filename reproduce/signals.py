@@ -27,8 +27,18 @@ class Interrupted(KeyboardInterrupt):
         self.signum = int(signum)
 
 
+#: The signals received so far (the handler records each before raising).
+_RECEIVED: list[int] = []
+
+
 def _raise_interrupted(signum: int, frame: FrameType | None) -> None:
+    _RECEIVED.append(int(signum))
     raise Interrupted(signum)
+
+
+def received() -> int | None:
+    """The first SIGINT or SIGTERM this process's handlers received, or None."""
+    return _RECEIVED[0] if _RECEIVED else None
 
 
 def install_handlers() -> None:

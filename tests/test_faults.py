@@ -57,6 +57,33 @@ def test_signal_at_any_moment_gives_one_line(tmp_path, sig, delay):
     assert _hidden(out) == []
 
 
+_IMPORT_FAILS = """
+import sys
+import reproduce.__main__ as m
+from reproduce import signals
+if {signalled}:
+    signals._RECEIVED.append(2)  # as the handler does, before its exception is turned into
+def main(argv=None):            # another one inside a C extension's initialisation
+    raise ImportError("initialization failed")
+m.main = main
+sys.exit(m.entry_point([]))
+"""
+
+
+@pytest.mark.parametrize("signalled", [True, False])
+def test_an_interrupt_turned_into_another_exception_still_gives_one_line(signalled):
+    # CI, 2026-12-03: SIGINT in matplotlib's ft2font import gave "ImportError: initialization
+    # failed", a traceback and a crash in finalisation; without a signal the error is a bug
+    proc = subprocess.run([sys.executable, "-c", _IMPORT_FAILS.format(signalled=signalled)],
+                          capture_output=True, text=True, timeout=60)
+    if signalled:
+        assert proc.returncode == 130 and "Traceback" not in proc.stderr, proc.stderr
+        assert proc.stderr.strip() == "python -m reproduce: interrupted; earlier outputs are " \
+            "whole, no partial file left"
+    else:
+        assert proc.returncode == 1 and "ImportError: initialization failed" in proc.stderr
+
+
 def test_killed_run_leaves_temporaries_that_the_next_run_removes(tmp_path):
     out = tmp_path / "out"
     assert subprocess.run([*RUN, str(out), "-q"], cwd=tmp_path, timeout=120).returncode == 0
