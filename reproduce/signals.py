@@ -45,7 +45,10 @@ def install_handlers() -> None:
     """Turn SIGINT and SIGTERM into :class:`Interrupted` (call first thing in a CLI process).
 
     A signal the process inherited as ignored stays ignored (``nohup``, ``cmd &`` in a script).
+    The record of :func:`received` starts empty (a second run in one process is not interrupted
+    by the first one's signal).
     """
+    _RECEIVED.clear()
     for sig in (signal.SIGINT, signal.SIGTERM):
         if signal.getsignal(sig) is not signal.SIG_IGN:
             signal.signal(sig, _raise_interrupted)

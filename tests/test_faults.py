@@ -61,9 +61,9 @@ _IMPORT_FAILS = """
 import sys
 import reproduce.__main__ as m
 from reproduce import signals
-if {signalled}:
-    signals._RECEIVED.append(2)  # as the handler does, before its exception is turned into
-def main(argv=None):            # another one inside a C extension's initialisation
+def main(argv=None):
+    if {signalled}:  # SIGINT recorded by the handler, whose exception a C extension's
+        signals._RECEIVED.append(2)  # initialisation then turned into another one
     raise ImportError("initialization failed")
 m.main = main
 sys.exit(m.entry_point([]))
