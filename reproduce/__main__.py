@@ -42,13 +42,14 @@ def entry_point(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt as exc:
         return interrupted_exit(exc)
     except Exception:
-        if received() is None:
+        signum = received()
+        if signum is None:
             raise
         # The interrupt was raised inside a C extension's initialisation, which turned it into
         # another exception (seen in CI, 2026-12-03: SIGINT in matplotlib's ft2font import gave
         # "ImportError: initialization failed"), and the half-built module then crashed the
         # interpreter's finalisation. The outputs are whole (the finally clauses ran): skip it.
-        status = interrupted_exit(Interrupted(received()))
+        status = interrupted_exit(Interrupted(signum))
         sys.stdout.flush()
         os._exit(status)
     return status

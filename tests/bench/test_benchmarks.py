@@ -85,18 +85,26 @@ def _yardstick(benchmark, registry, pattern, fn, points, rounds=5):
     benchmark.extra_info.update(points=points, role="yardstick")
 
 
+def _interleaved_min(fns, rounds=7, repeats=5):
+    """Minimum wall time of each function, its rounds interleaved with the others' (so that a
+    change of machine load hits all of them alike)."""
+    best = [np.inf] * len(fns)
+    for _ in range(rounds):
+        for i, fn in enumerate(fns):
+            for _ in range(repeats):
+                t = time.perf_counter()
+                fn()
+                best[i] = min(best[i], time.perf_counter() - t)
+    return best
+
+
 def _interleaved_ratio(yardstick, yardstick_points, pairs, new, points) -> float:
     """yardstick/new per point from the minima over `pairs` alternating rounds of each: a check
     of the ratio above, whose two timings run one after the other (minutes apart, 3-5 rounds
     against 15), so that a change of load between them moves it (measured 2026-12-03: the
-    scalar loop's yardstick took 804 us a point in one run, 475-530 in others)."""
-    times: tuple[list[float], list[float]] = ([], [])
-    for _ in range(pairs):
-        for fn, out in zip((yardstick, new), times, strict=True):
-            t0 = time.perf_counter()
-            fn()
-            out.append(time.perf_counter() - t0)
-    return (min(times[0]) / yardstick_points) / (min(times[1]) / points)
+    scalar loop's yardstick took 804 us a point in one run, 475-554 in three others)."""
+    t_yardstick, t_new = _interleaved_min([yardstick, new], rounds=pairs, repeats=1)
+    return (t_yardstick / yardstick_points) / (t_new / points)
 
 
 def _new(benchmark, registry, pattern, fn, points, info, yardstick_name):
@@ -392,19 +400,6 @@ def test_import_and_cold_call(benchmark, bench_registry):
 
 
 # --- the tol knob and the pooling cost model (numbers the docs quote) -----------------------
-
-def _interleaved_min(fns, rounds=7, repeats=5):
-    """Minimum wall time of each function, its rounds interleaved with the others' (so that a
-    change of machine load hits all of them alike)."""
-    best = [np.inf] * len(fns)
-    for _ in range(rounds):
-        for i, fn in enumerate(fns):
-            for _ in range(repeats):
-                t = time.perf_counter()
-                fn()
-                best[i] = min(best[i], time.perf_counter() - t)
-    return best
-
 
 @pytest.mark.benchmark(group="tol trade")
 def test_tol_trade(benchmark, fig1, reference, bench_registry):
