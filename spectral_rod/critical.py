@@ -198,6 +198,35 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
                         converged=True, tol=tol)
 
 
+def _one_element(twist_angle: object, nu: object, n: object, tol: object, method: object,
+                 full_output: object):
+    """One point given as arrays of one element (e.g. the (1,) vectors that
+    ``scipy.optimize.least_squares`` and ``fsolve`` pass): :func:`_one_point`'s answer, shaped
+    and typed as the general path returns it (``tests/test_speed_paths.py`` compares the two),
+    or None wherever the general path must answer. A one-point array call took 480 us by the
+    general path against 110 us for a scalar call (measured 2026-12-03)."""
+    if not (isinstance(twist_angle, np.ndarray) or isinstance(nu, np.ndarray)):
+        return None
+    point = []
+    for value in (twist_angle, nu):
+        if isinstance(value, np.ndarray):
+            if value.size != 1 or value.dtype.kind not in "fiu":  # no bool, complex, object
+                return None
+            value = value.item()  # a Python float or int (np.longdouble stays, and fails)
+        point.append(value)
+    one = _one_point(*point, n, tol, method, full_output)
+    if one is None:
+        return None
+    shape = (1,) * max(np.ndim(twist_angle), np.ndim(nu))  # the broadcast of two sizes of 1
+    if not full_output:
+        return as_output(np.array([one]), shape)
+    # the general path's dtypes: the router's method strings, solve_points' family strings
+    fields = [as_output(np.array([value], dtype=dtype), shape) for value, dtype in (
+        (one.p_star, np.float64), (one.method, "<U14"), (one.n, int),
+        (one.error_estimate, np.float64), (one.family, "<U13"), (True, bool))]
+    return CriticalLoad(*fields[:5], converged=fields[5], tol=one.tol)
+
+
 def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None,
                   tol: float = 1e-12, method: str = "auto", full_output: bool = False):
     """Critical load p* = P_cr / (pi^2 A1 / L^2) of the hinged, spontaneously twisted rod.
@@ -225,12 +254,13 @@ def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None
 
     Scalar and array calls: a collocation point is solved by the lean solver
     (:mod:`spectral_rod.straight_rod.few_points`) in a scalar call and whenever at most
-    ``few_points_limit(n)`` (24 up to n = 30, fewer above) points of a call share its degree,
-    by the batched engine otherwise; an array call pools degree groups at a higher degree where
-    a measured cost model says that is cheaper
-    (:func:`spectral_rod.straight_rod.collocation.solve_degrees`; per chunk of
-    :data:`CHUNK` points). A scalar call and a one-point array call give identical
-    results. A point in a larger call differs from its scalar call by at most the larger of the
+    ``few_points_limit(n)`` (24 up to n = 30, fewer above) points of a call share its degree, by
+    the batched engine otherwise; an array call pools degree groups at a higher degree where a
+    measured cost model says that is cheaper
+    (:func:`spectral_rod.straight_rod.collocation.solve_degrees`; per chunk of :data:`CHUNK`
+    points). A scalar call and a one-point array call give identical results (the latter, e.g.
+    scipy.optimize's (1,) vectors, takes the scalar path, at about its cost, and returns
+    arrays). A point in a larger call differs from its scalar call by at most the larger of the
     two error estimates; where both use the same degree, by at most the round-off part
     eps (32 + 0.3 Omega^2) at the default tol (the two engines round the same Rayleigh quotient
     differently), and at a looser tol by at most that plus the eigenvalue iteration's tolerance
@@ -247,6 +277,8 @@ def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None
     1.195993681
     """
     one = _one_point(twist_angle, nu, n, tol, method, full_output)
+    if one is None:
+        one = _one_element(twist_angle, nu, n, tol, method, full_output)
     if one is not None:
         return one
     twist, nu_arr = check_twist(twist_angle), check_nu(nu)

@@ -8,6 +8,7 @@ the array path, the batched sign scan against the one-point scan).
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -16,7 +17,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from threadpoolctl import threadpool_info, threadpool_limits
 
-from spectral_rod import ConvergenceWarning, critical_load
+from spectral_rod import ConvergenceWarning, CriticalLoad, critical_load
 from spectral_rod._blas_threads import one_blas_thread
 from spectral_rod.characteristic import characteristic_double_batch
 from spectral_rod.router import NEAR_DEGENERATE, TWIST_ROUTE, route, route_point
@@ -49,6 +50,57 @@ def test_scalar_path_equals_the_array_path_for_one_point():
             b = critical_load(np.array([om]), np.array([nu]), full_output=True)
             assert a.p_star == float(b.p_star[0]) and a.family == b.family[0]
             assert a.method == b.method[0] and a.n == int(b.n[0])
+
+
+def _same_output(a, b) -> None:
+    """The same type, and for arrays the same dtype, shape and values (fields of results)."""
+    if isinstance(a, CriticalLoad):
+        for f in dataclasses.fields(a):
+            _same_output(getattr(a, f.name), getattr(b, f.name))
+        return
+    assert type(a) is type(b)
+    if isinstance(a, np.ndarray):
+        assert (a.dtype, a.shape) == (b.dtype, b.shape) and np.array_equal(a, b)
+    else:
+        assert a == b
+
+
+@pytest.mark.parametrize(("twist_shape", "nu_shape", "dtype"), [
+    ((1,), (1,), np.float64), ((1,), None, np.float64), (None, (1, 1), np.float64),
+    ((), (), np.float64), ((1,), (1,), np.float32), ((1,), None, np.int64)])
+def test_one_element_arrays_take_the_scalar_path_with_the_general_output(
+        monkeypatch, twist_shape, nu_shape, dtype):
+    # e.g. scipy.optimize.least_squares passes (1,) vectors: the scalar path answers, and the
+    # result has the types, dtypes and shapes of the general path's (which it replaces)
+    import spectral_rod.critical as critical
+
+    def arg(value, shape):
+        return value if shape is None else np.reshape(np.asarray(value, dtype=dtype), shape)
+
+    for om, nu in ((0.0, 1.5), (3.0, 1.3), (9.0, 100.0), (45.0, 1.1), (-7.0, 4.0)):
+        args = arg(om, twist_shape), arg(nu, nu_shape)
+        with monkeypatch.context() as m:  # the general path must not run
+            m.setattr(critical, "solve_points", None)
+            fast = [critical_load(*args, full_output=f) for f in (True, False)]
+        with monkeypatch.context() as m:  # and here only the general path runs
+            m.setattr(critical, "_one_element", lambda *a: None)
+            general = [critical_load(*args, full_output=f) for f in (True, False)]
+        for a, b in zip(fast, general, strict=True):
+            _same_output(a, b)
+
+
+def test_one_element_arrays_outside_the_scalar_path_take_the_general_path():
+    # a forced degree, a large twist, nu - 1 near zero, a bool array: the general path answers
+    # (or rejects), as for arrays of any size
+    assert critical_load(np.array([3.0]), 1.5, n=30, full_output=True).n.tolist() == [30]
+    assert critical_load(np.array([80.0]), 1.5, full_output=True).method.tolist() == [
+        "characteristic"]
+    assert critical_load(np.array([3.0]), np.array([1.0 + 1e-6]), full_output=True
+                         ).method.tolist() == ["increment"]
+    with pytest.raises(TypeError, match="twist_angle"):
+        critical_load(np.array([True]), 1.5)
+    with pytest.raises(ValueError, match="nu"):
+        critical_load(np.array([3.0]), np.array([0.5]))
 
 
 def test_scalar_path_does_not_solve_below_the_round_off_floor(monkeypatch, reference):

@@ -47,7 +47,7 @@ pytestmark = pytest.mark.bench
 #: up since the points are solved in stacks), hence its floor of 20.
 FLOORS = {
     "figure1 batch": 8.0, "figure1 per curve": 6.0, "batches of 100": 4.5,
-    "batches of 10": 2.5, "scalar loop": 2.0, "brentq search": 2.0,
+    "batches of 10": 2.5, "scalar loop": 2.0, "one-point arrays": 2.0, "brentq search": 2.0,
     "map collocation part": 3.0, "map colloc., equal n": 10.0, "map all points": 3.0,
     "large twist": 20.0, "near-degenerate": 20.0,
 }
@@ -219,6 +219,7 @@ def test_scalar_loop_baseline(benchmark, fig1, bench_registry):
     _yardstick(benchmark, bench_registry, "scalar loop",
                lambda: [baseline_critical_load(a, b) for a, b in zip(tw, nv, strict=True)],
                len(tw), rounds=3)
+    bench_registry["one-point arrays"] = dict(bench_registry["scalar loop"])
 
 
 @pytest.mark.benchmark(group="scalar loop")
@@ -233,6 +234,18 @@ def test_scalar_loop(benchmark, fig1, reference, bench_registry):
          lambda: [critical_load(a, b, tol=TOL) for a, b in zip(tw, nv, strict=True)], len(tw),
          {"n": sorted({r.n for r in res}), "max_rel_error_sampled": err,
           "max_rel_diff_scalar_vs_array": float(same)}, "baseline")
+
+
+@pytest.mark.benchmark(group="scalar loop")
+def test_one_point_arrays(benchmark, fig1, reference, bench_registry):
+    # the (1,) vectors that e.g. scipy.optimize.least_squares passes, one call per point
+    tw, nv = (np.array(v)[:, None] for v in _scalar_points(fig1))
+    p = np.concatenate([critical_load(a, b, tol=TOL) for a, b in zip(tw, nv, strict=True)])
+    err = _max_error(p, tw[:, 0], nv[:, 0], reference)
+    assert err <= 1e-13
+    _new(benchmark, bench_registry, "one-point arrays",
+         lambda: [critical_load(a, b, tol=TOL) for a, b in zip(tw, nv, strict=True)], tw.size,
+         {"max_rel_error_sampled": err}, "baseline")
 
 
 BRENTQ_NU, BRENTQ_TARGET, BRENTQ_BRACKET = 1.3, 1.1, (2.0, 6.0)
