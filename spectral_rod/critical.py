@@ -33,9 +33,9 @@ from spectral_rod._validation import (
     check_twist,
 )
 from spectral_rod.errors import ConvergenceWarning
-from spectral_rod.families import FAMILIES
+from spectral_rod.families import FAMILIES, FAMILY_DTYPE
 from spectral_rod.results import CriticalLoad, as_output
-from spectral_rod.router import ROD_METHODS, check_route, route, route_point
+from spectral_rod.router import METHOD_DTYPE, ROD_METHODS, check_route, route, route_point
 from spectral_rod.straight_rod import N_MAX, collocation_critical_load
 from spectral_rod.straight_rod.collocation import pick_family_scalar
 from spectral_rod.straight_rod.eigensolver import iteration_allowance, iteration_rtol
@@ -116,7 +116,7 @@ def solve_points(tw: NDArray[np.float64], nv: NDArray[np.float64], methods: NDAr
                  for i in range(0, tw.size, CHUNK)]
         return PointResults(*(np.concatenate(v) for v in zip(*parts, strict=True)))
     p, deg, err = np.empty(tw.size), np.zeros(tw.size, dtype=int), np.empty(tw.size)
-    fam = np.empty(tw.size, dtype="<U13")
+    fam = np.empty(tw.size, dtype=FAMILY_DTYPE)
     names = [str(name) for name in np.unique(methods)]
     for name in names:
         importlib.import_module(_MODULES[name])
@@ -220,10 +220,9 @@ def _one_element(twist_angle: object, nu: object, n: object, tol: object, method
     shape = (1,) * max(np.ndim(twist_angle), np.ndim(nu))  # the broadcast of two sizes of 1
     if not full_output:
         return as_output(np.array([one]), shape)
-    # the general path's dtypes: the router's method strings, solve_points' family strings
     fields = [as_output(np.array([value], dtype=dtype), shape) for value, dtype in (
-        (one.p_star, np.float64), (one.method, "<U14"), (one.n, int),
-        (one.error_estimate, np.float64), (one.family, "<U13"), (True, bool))]
+        (one.p_star, np.float64), (one.method, METHOD_DTYPE), (one.n, int),
+        (one.error_estimate, np.float64), (one.family, FAMILY_DTYPE), (True, bool))]
     return CriticalLoad(*fields[:5], converged=fields[5], tol=one.tol)
 
 

@@ -18,9 +18,11 @@ import math
 
 from spectral_rod._validation import check_choice, scalar_nu
 
-__all__ = ["FAMILIES", "SHIFT", "check_family", "p_star_bounds"]
+__all__ = ["FAMILIES", "FAMILY_DTYPE", "SHIFT", "check_family", "p_star_bounds"]
 
 FAMILIES = ("symmetric", "antisymmetric")
+#: The numpy string dtype of arrays of family names (every entry point returns it).
+FAMILY_DTYPE = f"<U{max(map(len, FAMILIES))}"
 #: Shift below every physical eigenvalue lambda = pi^2 p >= pi^2 (shift-and-invert iterations).
 SHIFT = 0.95 * math.pi**2
 

@@ -79,6 +79,7 @@ from scipy.linalg import cho_factor, cho_solve
 from spectral_rod._blas_threads import one_blas_thread
 from spectral_rod._validation import broadcast_points, check_nu, check_twist
 from spectral_rod.characteristic import characteristic_double_batch
+from spectral_rod.families import FAMILY_DTYPE
 from spectral_rod.quadrature import gauss_legendre_unit
 
 __all__ = ["INCREMENT_MAX_TWIST", "critical_load_increment", "galerkin_increments"]
@@ -238,7 +239,7 @@ def galerkin_increments(twist: NDArray[np.float64], nu: NDArray[np.float64]
     """
     om, e = np.abs(twist), nu - 1.0
     d = np.zeros(om.size)
-    fam = np.full(om.size, "symmetric", dtype="<U13")
+    fam = np.full(om.size, "symmetric", dtype=FAMILY_DTYPE)
     sizes = BUCKET * np.ceil((np.ceil(2 * om / np.pi) + 48) / BUCKET).astype(int)  # bucket()
     live = (om > 0) & (e > 0)
     for n in np.unique(sizes[live]).tolist():

@@ -163,7 +163,7 @@ from spectral_rod._validation import (
     check_twist,
 )
 from spectral_rod.errors import ConvergenceWarning
-from spectral_rod.families import FAMILIES, check_family
+from spectral_rod.families import FAMILIES, FAMILY_DTYPE, check_family
 from spectral_rod.quadrature import gauss_legendre
 
 __all__ = [
@@ -468,7 +468,7 @@ def ritz_critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None =
     p = np.array([r[0] for r in rows])
     deg = np.array([r[1] for r in rows], dtype=int)
     err = np.array([r[2] for r in rows])
-    fam = np.array([r[3] for r in rows], dtype="<U13")
+    fam = np.array([r[3] for r in rows], dtype=FAMILY_DTYPE)
     converged = err <= tol
     if not converged.all():
         bad = np.flatnonzero(~converged)

@@ -32,11 +32,13 @@ from numpy.typing import ArrayLike, NDArray
 
 from spectral_rod._validation import broadcast_points, check_nu, check_resolution, check_twist
 
-__all__ = ["INCREMENT_MAX_TWIST", "NEAR_DEGENERATE", "ROD_METHODS", "TWIST_ROUTE",
+__all__ = ["INCREMENT_MAX_TWIST", "METHOD_DTYPE", "NEAR_DEGENERATE", "ROD_METHODS", "TWIST_ROUTE",
            "check_method", "check_route", "choose_method", "route", "route_point"]
 
 #: The methods that compute p* (``method=`` of :func:`spectral_rod.critical_load`).
 ROD_METHODS = ("collocation", "characteristic", "increment", "ritz")
+#: The numpy string dtype of arrays of method names (:func:`route`'s).
+METHOD_DTYPE = f"<U{max(map(len, ROD_METHODS))}"
 #: |Omega(L)| from which the characteristic equation (double precision) is used.
 TWIST_ROUTE = 50.0
 #: nu - 1 up to which p* = 1 + increment (for |Omega(L)| < TWIST_ROUTE).
@@ -85,10 +87,10 @@ def route(twist: NDArray[np.float64], nu: NDArray[np.float64], n: int | None = N
         raise ValueError(f"method='ritz' needs |twist_angle| <= {RITZ_MAX_TWIST:g} (its cost grows "
                          "like |Omega|^3)")
     if method != "auto":
-        return np.full(twist.shape, method, dtype=f"<U{max(map(len, ROD_METHODS))}")
+        return np.full(twist.shape, method, dtype=METHOD_DTYPE)
     if n is not None:
-        return np.full(twist.shape, "collocation", dtype="<U14")
-    out = np.full(twist.shape, "collocation", dtype="<U14")
+        return np.full(twist.shape, "collocation", dtype=METHOD_DTYPE)
+    out = np.full(twist.shape, "collocation", dtype=METHOD_DTYPE)
     large = np.abs(twist) >= TWIST_ROUTE
     out[large] = "characteristic"
     out[~large & (nu - 1.0 <= NEAR_DEGENERATE)] = "increment"

@@ -222,10 +222,10 @@ class _ShiftedModal:
     ``scipy.linalg.inv`` on the stack 1.7-2.4 times; no faster batched alternative was found.
     Forming (K - SHIFT)^{-1} itself from these blocks (three products with the shared G's), so
     that a step is one batched product, was measured on 2026-12-03 (:func:`lowest_eigenpair`,
-    symmetric family, random Figure 1 points, n = 18, 22, 26, noisy machine): its steps took
-    0.45-0.8 of the time at 100 points, but forming it 1.0-2.0 times this setup (2.8-4.4 at
-    1,200 points); in all 0.84-1.03 of the time at 100 points, 1.0-1.1 at 200, 1.5-2.2 at 1,200.
-    Not kept.
+    symmetric family, random Figure 1 points, n = 18, 22, 26, 9 interleaved rounds): a step took
+    0.41-0.54 of the time at 100 points (0.82-1.12 at 1,200), but forming it 1.8 times this
+    setup (3.4-3.7 at 1,200); in all 0.86-1.11 of the time at 100 points, 1.02-1.19 at 200,
+    1.70-2.21 at 1,200. Not kept.
     """
 
     elim: slice  # columns of the eliminated block

@@ -66,10 +66,15 @@ def grid_map():
     return om.ravel(), nu.ravel()
 
 
+def _sample(size, sample=40):
+    """`sample` evenly spaced indices of `size` points (those the accuracy is judged on)."""
+    return np.unique(np.linspace(0, size - 1, sample).astype(int))
+
+
 def _errors(p, twist, nu, reference, sample=40):
-    """Relative errors against the mpmath reference at `sample` evenly spaced points, and
+    """Relative errors against the mpmath reference at the points :func:`_sample` picks, and
     their indices."""
-    idx = np.unique(np.linspace(0, twist.size - 1, sample).astype(int))
+    idx = _sample(twist.size, sample)
     ref = np.array([reference(float(twist[i]), float(nu[i])) for i in idx])
     return np.abs(np.asarray(p)[idx] / ref - 1), idx
 
@@ -290,7 +295,8 @@ def test_map_baseline(benchmark, grid_map, bench_registry):
     benchmark.extra_info.update(sample="every 97th point of the map, per-point time")
 
 
-def _map_collocation(grid_map):
+@pytest.fixture(scope="module")
+def map_collocation(grid_map):
     """The map's collocation points (Omega, nu) and critical_load's full result for them."""
     tw, nv = grid_map
     col = np.flatnonzero(critical_load(tw, nv, tol=TOL, full_output=True).method
@@ -299,12 +305,12 @@ def _map_collocation(grid_map):
 
 
 @pytest.mark.benchmark(group="map")
-def test_map_baseline_at_solver_degree(benchmark, grid_map, reference, bench_registry):
+def test_map_baseline_at_solver_degree(benchmark, map_collocation, reference, bench_registry):
     # context for the map's line: at its fixed n = 24 the baseline does not resolve the map's
     # Omega(L) >~ 20 (measured 2026-12-03 on 12 points of each range: max relative error
     # 6.6e-13 for Omega in [0, 10), 3.6e-9 in [10, 20), 1.2e-2 in [20, 35), 4.1 in [35, 50)),
     # so it is also timed at the degree critical_load chose for each point (equal resolution)
-    tw, nv, res = _map_collocation(grid_map)
+    tw, nv, res = map_collocation
     deg = res.n.astype(int)
 
     def at_degree(points, degree=None):
@@ -312,7 +318,7 @@ def test_map_baseline_at_solver_degree(benchmark, grid_map, reference, bench_reg
                                                 n=int(deg[i] if degree is None else degree))
                          for i in points])
 
-    idx = _errors(res.p_star, tw, nv, reference)[1]  # the sample the collocation part is judged on
+    idx = _sample(tw.size)  # the points the collocation part is judged on
     ref = np.array([reference(float(tw[i]), float(nv[i])) for i in idx])
     errs = {f"max_rel_error_sampled_{name}": float(np.max(np.abs(at_degree(idx, d) / ref - 1)))
             for name, d in (("n24", 24), ("solver_n", None))}
@@ -324,8 +330,8 @@ def test_map_baseline_at_solver_degree(benchmark, grid_map, reference, bench_reg
 
 
 @pytest.mark.benchmark(group="map")
-def test_map_collocation_part(benchmark, grid_map, reference, bench_registry):
-    tw, nv, res = _map_collocation(grid_map)
+def test_map_collocation_part(benchmark, map_collocation, reference, bench_registry):
+    tw, nv, res = map_collocation
     errs, idx = _errors(res.p_star, tw, nv, reference)
     err = float(errs.max())
     # near |Omega| = 50 collocation's round-off, eps (32 + 0.3 Omega^2) ~ 1.6e-13, exceeds
