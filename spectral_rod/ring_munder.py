@@ -162,7 +162,8 @@ def _fft_size(n: int) -> int:
 
     Any odd P >= 2 M + 8 N + 21 is exact (:func:`_grid`); pocketfft is much slower on lengths
     with a large prime factor (measured 2026-12-03, real FFTs of (181, P, 3) arrays along P, as
-    in the Jacobian: 1.35 ms at the prime P = 61, 0.51 ms at P = 63).
+    in the Jacobian: 1.35 ms at the prime P = 61, 0.51 ms at P = 63). Not
+    ``scipy.fft.next_fast_len``: it may return an even length, and P must be odd.
 
     >>> _fft_size(37), _fft_size(61), _fft_size(69)
     (45, 63, 75)

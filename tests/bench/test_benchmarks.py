@@ -490,16 +490,16 @@ def test_tol_trade(benchmark, fig1, reference, bench_registry):
 
     The allocator's state moves this ratio, so the page faults of a call are recorded with it.
     The batched engine's largest temporaries, the (points, k, k) stacks of Schur complements,
-    are 0.4-0.5 MB a family at tol 1e-12 and 0.2 MB at 1e-4, above glibc's initial mmap
-    threshold. Where glibc hands their pages back between calls, a call faults hundreds of
-    times, which costs time the arithmetic does not (measured 2026-12-03): in plain scripts
-    620-760 faults a call at tol 1e-12 and 0-3 at 1e-4, tol 1e-12 3-11 % slower, the ratio
-    0.45-0.49 in most runs; in three runs of this test alone 2 and 0 faults (0.52, 0.52), then
-    538 and 284 (0.62). With allocator thresholds that keep the pages (``mallopt`` or
-    ``MALLOC_MMAP_THRESHOLD_``; no faults) it was 0.51-0.53 in 10 of 11 runs (0.46 in one), and
-    it is 0.525 in instructions (``instruction_counts.py``, re-counted that day). Outside load
-    moves it too: a full bench run under heavy load gave 0.45 with no faults. Judge the line by
-    the instruction count and by quiet runs without faults.
+    are 366-514 KiB a family at tol 1e-12 and 198-226 KiB at 1e-4 (Figure 1's degree groups),
+    above glibc's initial mmap threshold of 128 KiB. Where glibc hands their pages back between
+    calls, a call faults hundreds of times, which costs time the arithmetic does not (measured
+    2026-12-03): in plain scripts 620-760 faults a call at tol 1e-12 and 0-3 at 1e-4, tol 1e-12
+    3-11 % slower, the ratio 0.45-0.49 in most runs; in three runs of this test alone 2 and 0
+    faults (0.52, 0.52), then 538 and 284 (0.62). With allocator thresholds that keep the pages
+    (``mallopt`` or ``MALLOC_MMAP_THRESHOLD_``; no faults) it was 0.51-0.53 in 10 of 11 runs
+    (0.46 in one), and it is 0.525 in instructions (``instruction_counts.py``, re-counted that
+    day). Outside load moves it too: a full bench run under heavy load gave 0.45 with no faults.
+    Judge the line by the instruction count and by quiet runs without faults.
     """
     tw, nv = fig1
     res = critical_load(tw, nv, tol=1e-4, full_output=True)
