@@ -52,3 +52,23 @@ def test_each_pattern_is_counted_once(monkeypatch, capsys) -> None:
     ic.main(["figure1 batch", ic.TRADE[0]])
     assert calls == ["baseline", "figure1 batch", ic.TRADE[0]]  # the batch serves the trade too
     assert "1.500 of tol 1e-12" in capsys.readouterr().out  # 3000 / 2000
+
+
+def test_inclusive_count_reads_the_first_matching_function() -> None:
+    annotated = """--------
+170,278,855 (100.0%)  PROGRAM TOTALS
+140,313,660 (82.40%)  ???:ufunc_generic_vectorcall [libnumpy]
+ 65,604,019 (38.53%)  ???:void inv<double>(char**, long const*, long const*, void*) [umath]
+  1,000 ( 0.00%)  ???:void inv<double>'2 [umath]
+"""
+    assert ic.inclusive_count(annotated, ic.INVERSE_SYMBOL) == 65604019
+    assert ic.inclusive_count(annotated, "no such function") == 0
+
+
+def test_inverse_share_prints_the_ratio_were_the_inverse_free(monkeypatch, capsys) -> None:
+    monkeypatch.setattr(ic.shutil, "which", lambda name: f"/usr/bin/{name}")
+    monkeypatch.setattr(ic, "count", lambda name: 4000.0)  # the baseline, a point
+    monkeypatch.setattr(ic, "profile", lambda name, symbol: (200.0, 0.5))
+    ic.main([ic.INVERSE_FLAG])
+    out = capsys.readouterr().out
+    assert "50.0% of its 200 instructions" in out and "were it free, 40.0x" in out  # 4000/100

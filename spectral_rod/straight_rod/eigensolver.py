@@ -217,9 +217,9 @@ class _ShiftedModal:
 
     The per-point inverse (``numpy.linalg.inv``, LAPACK per matrix) is 34 % (tol 1e-4) and 39 %
     (tol 1e-12) of the Figure 1 batch's instructions (callgrind, 2026-12-02; 38.5 % on
-    2026-12-04: 65.6 of 170.3 M, of which LAPACK's dgesv 60.2 M), so even a free inverse would
-    leave the batch at ~87 k instructions a point, 43.5 times below the baseline's 3.79 M, not
-    the 50 of issue 14. Against it on 800
+    2026-12-04 by ``tests/bench/instruction_counts.py --inverse-share``), so even a free inverse
+    would leave the batch 43.4 times below the baseline in instructions, not the 50 of issue 14.
+    Against it on 800
     matrices of k = 6..32: a Gauss-Jordan inversion with partial pivoting vectorised over the
     points took 1.5-3 times as long (points-last layout; 2.3-5.5 times points-first), and
     ``scipy.linalg.inv`` on the stack 1.7-2.4 times; no faster batched alternative was found.

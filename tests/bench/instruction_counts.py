@@ -1,6 +1,6 @@
 """Load-independent cost of issue 14's collocation call patterns: instructions, not seconds.
 
-    python tests/bench/instruction_counts.py [pattern ...]      (needs valgrind)
+    python tests/bench/instruction_counts.py [pattern ...] [--inverse-share]   (needs valgrind)
 
 On the project's shared 2-core machines the same-run wall-clock ratios of ``python -m pytest -m
 bench`` swing 1.5-2x with other jobs' load, which hides changes of 5-20 %. An instruction count
@@ -10,7 +10,9 @@ around one call only (``callgrind_control -i on`` / ``off``), so imports and the
 operator assembly are excluded. Printed: instructions per point of the yardstick (the baseline,
 ``spectral_rod.baseline``, n = 24: its cost does not depend on the point; 40 Figure 1 points)
 and of ``critical_load`` at tol 1e-12 (as the benchmarks), and their ratio; and the Figure 1
-batch at tol 1e-4 as a fraction of tol 1e-12. It is not a time
+batch at tol 1e-4 as a fraction of tol 1e-12; with ``--inverse-share``, the Figure 1 batch's
+fraction inside numpy's per-matrix inverse (the Schur complements of the batched engine) and
+its ratio to the baseline were that inverse free. It is not a time
 ratio: the baseline's dense LAPACK runs more instructions per cycle than numpy's per-call
 overhead, so the wall-clock ratios measured so far lie below these (2026-12-02, one machine:
 scalar loop 5.7 here, 3.8-7.4 in wall-clock runs; batches of 100 19.1 here, 13.9-22.9).
@@ -61,25 +63,54 @@ print("POINTS", {points})
 """
 
 
-def count(pattern: str) -> float:
-    """Instructions per point of one call of `pattern` (see the module docstring)."""
+#: callgrind's name for numpy's per-matrix inverse gufunc, the batched engine's largest single
+#: cost (``--inverse-share``: what issue 14's Figure 1 batch would reach were it free).
+INVERSE_SYMBOL = "inv<double>"
+INVERSE_FLAG = "--inverse-share"
+
+
+def profile(pattern: str, symbol: str | None = None) -> tuple[float, float]:
+    """Instructions per point of one call of `pattern` (see the module docstring) and the
+    fraction of them spent inside `symbol` (callgrind_annotate's inclusive count; 0 if None)."""
     stmt, points = PATTERNS[pattern] if pattern != TRADE[0] else TRADE[1:]
     with tempfile.TemporaryDirectory() as tmp:
+        out_file = Path(tmp) / "callgrind.out"
         out = subprocess.run(
             ["valgrind", "--tool=callgrind", "--instr-atstart=no",
-             f"--callgrind-out-file={Path(tmp) / 'callgrind.out'}", sys.executable, "-c",
+             f"--callgrind-out-file={out_file}", sys.executable, "-c",
              _CHILD.format(stmt=stmt, points=points)],
             capture_output=True, text=True, check=True)
+        annotated = "" if symbol is None else subprocess.run(
+            ["callgrind_annotate", "--inclusive=yes", str(out_file)],
+            capture_output=True, text=True, check=True).stdout
     n = int(re.search(r"POINTS (\d+)", out.stdout).group(1))
     collected = int(re.search(r"Collected : (\d+)", out.stderr).group(1))
-    return collected / n
+    inside = 0 if symbol is None else inclusive_count(annotated, symbol)
+    return collected / n, inside / collected
 
 
-def main(names: list[str]) -> None:
+def inclusive_count(annotated: str, symbol: str) -> int:
+    """The inclusive instructions of the first function in callgrind_annotate's listing whose
+    name contains `symbol` (0 if none)."""
+    for line in annotated.splitlines():
+        m = re.match(r"\s*([\d,]+) ", line)
+        if m and symbol in line:
+            return int(m.group(1).replace(",", ""))
+    return 0
+
+
+def count(pattern: str) -> float:
+    """Instructions per point of one call of `pattern` (see the module docstring)."""
+    return profile(pattern)[0]
+
+
+def main(args: list[str]) -> None:
     if shutil.which("valgrind") is None or shutil.which("callgrind_control") is None:
         sys.exit("valgrind (with callgrind_control) is needed")
+    share = INVERSE_FLAG in args
+    names = [a for a in args if a != INVERSE_FLAG]
     known = [p for p in PATTERNS if p != "baseline"] + [TRADE[0]]
-    names = names or known
+    names = names or ([] if share else known)
     unknown = set(names) - set(known)
     if unknown:
         sys.exit(f"unknown pattern(s) {sorted(unknown)}; known: {known}")
@@ -100,6 +131,11 @@ def main(names: list[str]) -> None:
         loose = cached(TRADE[0])
         print(f"{TRADE[0]:<24}{loose:>20,.0f}   {loose / cached('figure1 batch'):.3f} of tol "
               "1e-12")
+    if share:
+        per_point, frac = profile("figure1 batch", INVERSE_SYMBOL)
+        print(f"figure1 batch: {frac:.1%} of its {per_point:,.0f} instructions a point in "
+              f"{INVERSE_SYMBOL}; were it free, {base / (per_point * (1 - frac)):.1f}x below "
+              "the baseline")
 
 if __name__ == "__main__":
     main(sys.argv[1:])
