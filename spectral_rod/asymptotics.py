@@ -105,6 +105,13 @@ quadratic for w = Omega^2/pi^2 whose larger root is the crossing:
           / ((3 nu + 1)(nu + 3)),        N = n^2 + 1,  M = (n^2 - 1)^2,
     Omega_n = pi sqrt(w_n),   p*_n = 2 nu (N - w_n) / (nu + 1).
 
+N - w_n -> 1 while both grow like n^2, so p*_n is evaluated without that difference: with
+a = 2 N (nu + 1)^2 and R the square root, N - w_n = (a - R) / ((3 nu + 1)(nu + 3)) and
+a^2 - R^2 = 4 n^2 (nu + 1)^2 (3 nu + 1)(nu + 3) (as 4 (nu+1)^2 - (nu-1)^2 = (3nu+1)(nu+3) and
+N^2 - M = 4 n^2), so
+
+    p*_n = 8 n^2 nu (nu + 1) / (2 N (nu + 1)^2 + R)      (a sum of positive terms).
+
 (n = 1 reproduces Omega_b and p_b above: there beta_1 = 0 and beta_2 = 2 pi, but S_- = 1/2, so it
 is not a crossing.) For large n, with sqrt(N^2 b^2 + M c) expanded in 1/n^2 (b^2 + (nu+1)^2
 (3nu+1)(nu+3) = 4 (nu+1)^4),
@@ -128,7 +135,8 @@ from spectral_rod._validation import check_choice, check_int, scalar_nu, scalar_
 #: gives p < 0 for nu = 2; from 2 pi on it stays in (1, 2) for every nu in [1, 1e4], checked
 #: by the fuzz suite).
 EXPANSION_MIN_TWIST = 2.0 * math.pi
-#: Largest n of the crossing closed forms (N - w loses ~n^2 eps to cancellation).
+#: Largest n of the crossing closed forms (the range their tests cover; n^2 must stay far
+#: below the float range).
 CROSSING_MAX_N = 10_000
 
 
@@ -276,16 +284,22 @@ class CrossingClosedForm:
 
 
 def crossing_closed_form(n: int, nu: float) -> CrossingClosedForm:
-    """Omega_n and p*_n of the crossing near n pi (2 <= n <= 1e4, where the cancellation in
-    N - w costs at most ~1e-8 relative; module docstring for the proof)."""
+    """Omega_n and p*_n of the crossing near n pi (2 <= n <= 1e4; module docstring for the
+    proof and for the form of p*_n without the cancellation in N - w_n).
+
+    >>> c = crossing_closed_form(2, 1.5)
+    >>> round(c.twist, 12), round(c.p_star, 12)
+    (6.285782609677, 1.196030793888)
+    """
     n = check_int(n, "n", 2, CROSSING_MAX_N)
     nu = _nu(nu)
     big_n, big_m = n * n + 1.0, (n * n - 1.0) ** 2
     den = (3.0 * nu + 1.0) * (nu + 3.0)
     root = math.sqrt(big_n**2 * (nu * nu - 1.0) ** 2 + big_m * (nu + 1.0) ** 2 * den)
     w = (big_n * (nu * nu + 6.0 * nu + 1.0) + root) / den
-    # N - w -> 1 while both grow like n^2: a relative loss of ~n^2 eps, harmless for n < 1e4
-    p = 2.0 * nu * (big_n - w) / (nu + 1.0)
+    # 2 nu (N - w) / (nu + 1) lost ~n^2 eps to cancellation (p* above its bound (1 + nu)/2 by
+    # 2.3e-13 at n = 33, nu = 1 + eps, found by the fuzz suite)
+    p = 8.0 * n * n * nu * (nu + 1.0) / (2.0 * big_n * (nu + 1.0) ** 2 + root)
     return CrossingClosedForm(n=n, twist=math.pi * math.sqrt(w), p_star=p,
                               beta1=(n - 1) * math.pi, beta2=(n + 1) * math.pi)
 

@@ -24,6 +24,8 @@ from spectral_rod.asymptotics import (
 from spectral_rod.characteristic import characteristic_critical_load, family_critical_load
 from spectral_rod.crossings import family_crossing
 
+EPS = float(np.finfo(float).eps)
+
 
 @pytest.mark.parametrize("nu", [1.0, 1.1, 1.5, 3.0, 10.0, 1e3])
 def test_limit_is_harmonic_mean_within_rayleigh_bounds(nu):
@@ -107,6 +109,29 @@ def test_crossing_closed_form_matches_newton_on_the_determinants(nu, n):
     r = characteristic_critical_load(float(newton.twist), nu, dps=30)
     assert float(mp.sqrt(r.x_minus)) == pytest.approx((n - 1) * math.pi, abs=1e-9)
     assert float(mp.sqrt(r.x_plus)) == pytest.approx((n + 1) * math.pi, abs=1e-9)
+
+
+def _printed_crossing(n: int, nu: float) -> tuple[mp.mpf, mp.mpf]:
+    """Omega_n and p*_n by the module docstring's printed form, p* = 2 nu (N - w)/(nu + 1), in
+    60-digit arithmetic (where its cancellation costs nothing)."""
+    with mp.workdps(60):
+        nu, big_n, big_m = mp.mpf(nu), mp.mpf(n) ** 2 + 1, (mp.mpf(n) ** 2 - 1) ** 2
+        den = (3 * nu + 1) * (nu + 3)
+        w = (big_n * (nu**2 + 6 * nu + 1)
+             + mp.sqrt(big_n**2 * (nu**2 - 1) ** 2 + big_m * (nu + 1) ** 2 * den)) / den
+        return mp.pi * mp.sqrt(w), 2 * nu * (big_n - w) / (nu + 1)
+
+
+@pytest.mark.parametrize("n", [2, 3, 12, 33, 1000, 10_000])
+@pytest.mark.parametrize("nu", [1.0, 1.0 + 2**-52, 1.0001, 1.5, 10.0, 1e4])
+def test_crossing_closed_form_is_accurate_to_round_off_for_every_n(n, nu):
+    # the double-precision form avoids N - w (it lost ~n^2 eps: p* = 1 + 2.3e-13 > (1 + nu)/2
+    # at n = 33, nu = 1 + eps, found by the fuzz suite)
+    closed = crossing_closed_form(n, nu)
+    twist, p = _printed_crossing(n, nu)
+    assert abs(closed.twist - twist) <= 4 * EPS * twist
+    assert abs(closed.p_star - p) <= 4 * EPS * p
+    assert 1.0 <= closed.p_star <= (1.0 + nu) / 2 * (1 + 2 * EPS)
 
 
 def test_crossing_offset_from_n_pi_shrinks_like_n_cubed():
