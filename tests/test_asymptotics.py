@@ -134,6 +134,18 @@ def test_crossing_closed_form_is_accurate_to_round_off_for_every_n(n, nu):
     assert 1.0 <= closed.p_star <= (1.0 + nu) / 2 * (1 + 2 * EPS)
 
 
+def test_crossing_closed_form_rationalisation_identity():
+    # the module docstring's a^2 - R^2 = 4 n^2 (nu + 1)^2 (3 nu + 1)(nu + 3), in sympy
+    import sympy as sp
+
+    n, nu = sp.symbols("n nu", positive=True)
+    big_n, big_m, den = n**2 + 1, (n**2 - 1) ** 2, (3 * nu + 1) * (nu + 3)
+    a, r2 = 2 * big_n * (nu + 1) ** 2, big_n**2 * (nu**2 - 1) ** 2 + big_m * (nu + 1) ** 2 * den
+    assert sp.expand(a**2 - r2 - 4 * n**2 * (nu + 1) ** 2 * den) == 0
+    # N - w = (N den - N (nu^2 + 6 nu + 1) - R) / den = (a - R) / den:
+    assert sp.expand(den - (nu**2 + 6 * nu + 1) - 2 * (nu + 1) ** 2) == 0
+
+
 def test_crossing_offset_from_n_pi_shrinks_like_n_cubed():
     ns = np.arange(10, 41, 5)
     off = [crossing_closed_form(int(n), 1.5).twist - n * math.pi for n in ns]
