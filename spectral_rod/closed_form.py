@@ -7,6 +7,7 @@ omega1 = -lambda xi, omega2 = -mu eta) and :mod:`spectral_rod.wavenumbers` (X_k 
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import mpmath as mp
@@ -14,7 +15,12 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from spectral_rod._validation import check_int, scalar_nu, scalar_twist
-from spectral_rod.characteristic import CharacteristicRoot, entire_cs, entire_cs_double
+from spectral_rod.characteristic import (
+    CharacteristicRoot,
+    determinant,
+    entire_cs,
+    entire_cs_double,
+)
 from spectral_rod.wavenumbers import characteristic_roots
 
 __all__ = ["CharacteristicMode", "boundary_determinant_4x4", "characteristic_mode",
@@ -85,6 +91,25 @@ def _null_coefficients(family: str, amp: list[tuple[mp.mpf, mp.mpf]],
     return r[1], -r[0]
 
 
+#: Working digits of the closed-form mode beyond -log10 |Omega(L)| (:func:`mode_fields`). An
+#: empirical margin: with it the modes agree with collocation eigenvectors to <= 3e-15 from
+#: Omega(L) = 5e-324 to 30 (tests/test_two_solvers.py; measured 2026-12-04).
+MODE_DIGITS = 20
+#: A refined load is used only within this relative distance of the root's.
+REFINE_RTOL = 1e-10
+
+
+def _refined_load(root: CharacteristicRoot, om: mp.mpf, nu: mp.mpf) -> mp.mpf:
+    """root.p_star refined to the working precision on its family's determinant (secant), or
+    root.p_star itself if the refinement fails or moves it by more than REFINE_RTOL."""
+    p = mp.mpf(root.p_star)
+    try:
+        q = mp.findroot(lambda x: determinant(root.family, mp.pi**2 * x, om, nu), p)
+    except (ValueError, ZeroDivisionError):
+        return p
+    return q if abs(q - p) <= REFINE_RTOL * p else p
+
+
 def mode_fields(root: CharacteristicRoot, twist_angle: float, nu: float, s: ArrayLike,
                 dps: int = 30) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """Body-frame displacements (xi, eta) of the mode of ``root`` at the points s (unscaled).
@@ -94,7 +119,18 @@ def mode_fields(root: CharacteristicRoot, twist_angle: float, nu: float, s: Arra
     t) (t = s - 1/2) in double precision. Symmetric family: xi = sum_k c_k 2 Omega cos(beta_k t),
     eta = sum_k c_k (lambda - Omega^2 - X_k) sin(beta_k t)/beta_k; antisymmetric: xi = sum_k c_k
     (mu - Omega^2 - X_k) sin(beta_k t)/beta_k, eta = -sum_k c_k 2 Omega cos(beta_k t). Needs
-    Omega != 0 (at zero twist the mode is Euler's planar sin(pi s)).
+    Omega != 0 (at zero twist the mode is Euler's planar sin(pi s)). The weights are divided by
+    the largest of them before they leave mpmath: unnormalised they carry a factor ~Omega that
+    underflows double precision at tiny twist (at Omega(L) = 1e-322 every field was 0, so the
+    scaled mode was nan; at 1e-320 it had one significant digit).
+
+    The mode is ill-conditioned at small twist: the part of order Omega is decided by
+    lam - Omega^2 - X_+, which is O(Omega^2), so the load and the wavenumbers X_k must agree to
+    well below |Omega|. They are therefore computed here, at max(dps, MODE_DIGITS -
+    log10 |Omega(L)|) digits: the load refined on the family's determinant from root.p_star,
+    the X_k again from it (root.x_plus/x_minus, at the root's precision, are not used). Before
+    (root's X_k, 30 digits) a 40-digit root's mode was wrong (O(1)) for |Omega(L)| <= 1e-40 and
+    off by 1e-12 at 1e-20.
     """
     if not isinstance(root, CharacteristicRoot):
         raise TypeError(f"root must be a CharacteristicRoot, got {type(root).__name__}")
@@ -103,13 +139,17 @@ def mode_fields(root: CharacteristicRoot, twist_angle: float, nu: float, s: Arra
     if twist_angle == 0.0:
         raise ValueError("twist_angle must be non-zero for the closed-form mode (at zero twist "
                          "the mode is Euler's planar sin(pi s))")
-    with mp.workdps(dps):
-        om, nuv = mp.mpf(abs(float(twist_angle))), mp.mpf(nu)
-        lam = mp.pi**2 * root.p_star
-        xs = (root.x_plus, root.x_minus)
+    om_f = abs(float(twist_angle))
+    with mp.workdps(max(dps, MODE_DIGITS - math.floor(math.log10(om_f)))):
+        om, nuv = mp.mpf(om_f), mp.mpf(nu)
+        lam = mp.pi**2 * _refined_load(root, om, nuv)
+        xm, xp = characteristic_roots(lam, lam / nuv, om, sqrt=mp.sqrt)
+        xs = (xp, xm)
         amp = _amplitudes(root.family, lam, lam / nuv, om, xs)
         c = _null_coefficients(root.family, amp, [entire_cs(x) for x in xs])
-        weights = [[float(ck * ak[j]) for ck, ak in zip(c, amp, strict=True)] for j in (0, 1)]
+        raw = [[ck * ak[j] for ck, ak in zip(c, amp, strict=True)] for j in (0, 1)]
+        top = max(abs(w) for row in raw for w in row)
+        weights = [[float(w / top) for w in row] for row in raw]
     t = np.asarray(s, dtype=float) - 0.5
     cs = [entire_cs_double(float(x), t) for x in xs]
     first, second = (0, 1) if root.family == "symmetric" else (1, 0)

@@ -245,7 +245,8 @@ def chebyshev_degree(twist_angle: float, nu: float, n: int) -> int:
     m = np.arange(start, start + 400 + math.ceil(25 * om ** (1 / 3)))
     z = om / m
     r = np.sqrt((1 - z) * (1 + z))
-    log_bound = m * (np.log(z) + r - np.log1p(r))
+    # log(Omega) - log(m), not log(z): z underflows to 0 at subnormal twist (divide warning)
+    log_bound = m * (math.log(om) - np.log(m) + r - np.log1p(r))
     tail = np.cumsum(np.exp(log_bound)[::-1])[::-1]  # tail[i] = sum_{j >= i} bound_j
     scale = 4.0 * (2 * n + 1) * (n + 1) * nu
     ok = np.flatnonzero(scale * tail <= QUADRATURE_BUDGET)

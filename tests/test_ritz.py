@@ -313,3 +313,14 @@ def test_bad_input_names_the_argument(kwargs, exc, name):
     twist, nu = args.pop("twist_angle"), args.pop("nu")
     with pytest.raises(exc, match=name):
         ritz_critical_load(twist, nu, **args)
+
+
+def test_subnormal_twist_quietly():
+    """At Omega(L) = 5e-324, Omega/m underflowed to 0 in the Kapteyn bound (a divide warning,
+    found by fuzzing 2026-12-04); the bound is now taken in logarithms."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert ritz.chebyshev_degree(5e-324, 1.5, 20) == ritz.chebyshev_degree(1e-300, 1.5, 20)
+        assert ritz.chebyshev_degree(100.0, 10.0, 130) == 172  # the docstring's "about 170"
+        p = ritz.ritz_point(5e-324, 1.5, None, 1e-12, None)
+    assert p == ritz.ritz_point(0.0, 1.5, None, 1e-12, None) and abs(p[0] - 1.0) < 1e-15

@@ -127,3 +127,35 @@ def test_closed_form_mode_needs_twist():
         characteristic_mode(root, 0.0, 1.5)
     with pytest.raises(ValueError):
         family_critical_load("even", 1.0, 1.5)
+
+
+def _unit_shape(x1: np.ndarray, x2: np.ndarray) -> np.ndarray:
+    v = np.concatenate([x1, x2])
+    return v / np.linalg.norm(v)
+
+
+@pytest.mark.parametrize("nu", [1.0009, 1.5, 30.0])
+@pytest.mark.parametrize("family", ["symmetric", "antisymmetric"])
+def test_closed_form_mode_at_tiny_twist(family, nu):
+    """The closed-form mode of a 40-digit root against the family's collocation eigenvector
+    down to subnormal twist (found 2026-12-04: before, wrong (O(1)) for |Omega(L)| <= 1e-40 and
+    nan in buckling_mode at 1e-322, the weights underflowing)."""
+    from spectral_rod.mode import _collocation_fields
+
+    s = np.linspace(0.0, 1.0, 61)
+    for twist in (5e-324, 1e-100, 1e-40, 1e-20, 0.3):
+        root = family_critical_load(family, twist, nu)
+        cm = characteristic_mode(root, twist, nu, points=61)
+        _, _, x1, x2 = _collocation_fields(twist, nu, 40, family, s)
+        a, b = _unit_shape(cm.x1, cm.x2), _unit_shape(x1, x2)
+        assert min(np.abs(a - b).max(), np.abs(a + b).max()) < 1e-13, twist
+
+
+def test_buckling_mode_at_subnormal_twist():
+    """The fuzz finding of 2026-12-04 (twist 5e-324, nu 1.00095: nan mode, converged=True):
+    the mode is Euler's planar one to within O(twist)."""
+    euler = buckling_mode(0.0, 1.0009486502877003, points=51)
+    for twist in (5e-324, 1e-322, 1e-300):
+        m = buckling_mode(twist, 1.0009486502877003, points=51)
+        for f in ("omega1", "omega2", "x1", "x2"):
+            assert np.abs(getattr(m, f) - getattr(euler, f)).max() < 1e-15, (twist, f)
