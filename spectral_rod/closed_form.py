@@ -21,6 +21,7 @@ from spectral_rod.characteristic import (
     entire_cs,
     entire_cs_double,
 )
+from spectral_rod.errors import ConvergenceError
 from spectral_rod.wavenumbers import characteristic_roots
 
 __all__ = ["CharacteristicMode", "boundary_determinant_4x4", "characteristic_mode",
@@ -163,7 +164,8 @@ def characteristic_mode(root: CharacteristicRoot, twist_angle: float, nu: float,
     """The mode of ``root`` on a uniform grid of `points` in [0, 1] (:func:`mode_fields`), with
     the fixed-frame centreline x = R(Omega s)(xi, eta), scaled to max |x| = 1 (the maximum taken
     on a fixed fine grid too, so that a coarse output grid -- even just the two hinges, where
-    x = 0 -- is scaled like any other)."""
+    x = 0 -- is scaled like any other). A mode that comes out non-finite or zero raises
+    :class:`spectral_rod.ConvergenceError` (no such case is known)."""
     npts = check_int(points, "points", 2, 100_000)
     s = np.concatenate([np.linspace(0.0, 1.0, npts), np.linspace(0.0, 1.0, SCALE_POINTS)])
     xi, eta = mode_fields(root, twist_angle, nu, s, dps)
@@ -171,6 +173,9 @@ def characteristic_mode(root: CharacteristicRoot, twist_angle: float, nu: float,
     x1 = xi * np.cos(om * s) - eta * np.sin(om * s)
     x2 = xi * np.sin(om * s) + eta * np.cos(om * s)
     scale = float(np.max(np.hypot(x1, x2)))
+    if not (math.isfinite(scale) and scale > 0.0):
+        raise ConvergenceError(f"characteristic_mode: no finite nonzero mode at twist_angle="
+                               f"{twist_angle!r}, nu={nu!r}, p*={root.p_star}")
     out = slice(0, npts)
     return CharacteristicMode(s[out], xi[out] / scale, eta[out] / scale, x1[out] / scale,
                               x2[out] / scale)

@@ -36,6 +36,7 @@ from spectral_rod._validation import (
 from spectral_rod.characteristic import CharacteristicRoot
 from spectral_rod.closed_form import SCALE_POINTS, mode_fields
 from spectral_rod.critical import apply_bounds, solve_points, warn_unconverged
+from spectral_rod.errors import ConvergenceError
 from spectral_rod.results import BucklingMode
 from spectral_rod.router import check_route, route
 from spectral_rod.straight_rod import collocation_mode_coefficients
@@ -112,7 +113,8 @@ def buckling_mode(twist_angle: float, nu: float, *, n: int | None = None, tol: f
     Arguments as in :func:`spectral_rod.critical_load` (scalars only); ``points`` (2..100000) is
     the size of the uniform output grid in s/L. The mode comes from the method that computed p*
     (module docstring); ``converged`` and ``error_estimate`` are those of p*, and a missed
-    ``tol`` warns (:class:`spectral_rod.ConvergenceWarning`).
+    ``tol`` warns (:class:`spectral_rod.ConvergenceWarning`); a mode that comes out non-finite or
+    zero raises :class:`spectral_rod.ConvergenceError` (no such case is known).
 
     >>> m = buckling_mode(5.0, 1.5)
     >>> m.method, m.family, round(m.p_star, 6)
@@ -139,6 +141,10 @@ def buckling_mode(twist_angle: float, nu: float, *, n: int | None = None, tol: f
     w1, w2, x1, x2 = (f[:npts] for f in fields)
     both = np.concatenate([fields[0], fields[1]])
     scale = both[np.argmax(np.abs(both))]  # max |omega| = 1, the largest entry positive
+    if scale == 0.0 or not all(np.isfinite(f).all() for f in fields):
+        # never a nan mode flagged converged (as at twist 5e-324 before the closed form's fix)
+        raise ConvergenceError(f"buckling_mode: no finite nonzero mode at twist_angle={twist!r}, "
+                               f"nu={nu_f!r} (method {how}, p*={p!r})")
     beta1, beta2 = critical_wavenumbers(p, twist, nu_f)
     return BucklingMode(s=s, omega1=w1 / scale, omega2=w2 / scale, x1=x1 / scale, x2=x2 / scale,
                         p_star=p, twist_angle=twist, nu=nu_f, family=fam, method=how, n=deg,

@@ -217,3 +217,29 @@ def _must_not_run(what: str):
     def fail(*args, **kwargs):
         raise AssertionError(f"{what} was reached")
     return fail
+
+
+@pytest.mark.parametrize(("twist", "nu", "where"), [(0.5, 1.0005, "_closed_form_fields"),
+                                                     (5.0, 1.5, "_collocation_fields")])
+def test_a_non_finite_mode_raises(twist, nu, where, monkeypatch):
+    """The guard behind the fuzz finding of 2026-12-04 (a nan mode returned converged=True):
+    fields that come out nan or zero raise instead of being returned."""
+    import spectral_rod.mode as mode
+
+    real = getattr(mode, where)
+    for broken in (np.nan, 0.0):
+        monkeypatch.setattr(mode, where, lambda *a, b=broken, **k: tuple(
+            np.full_like(f, b) for f in real(*a, **k)))
+        with pytest.raises(sr.ConvergenceError, match="no finite nonzero mode"):
+            sr.buckling_mode(twist, nu)
+    monkeypatch.setattr(mode, where, real)
+    assert np.isfinite(sr.buckling_mode(twist, nu).omega1).all()
+
+
+def test_a_non_finite_closed_form_mode_raises(monkeypatch):
+    import spectral_rod.closed_form as cf
+
+    root = sr.characteristic_critical_load(5.0, 1.5)
+    monkeypatch.setattr(cf, "mode_fields", lambda *a, **k: (np.zeros(259), np.zeros(259)))
+    with pytest.raises(sr.ConvergenceError, match="no finite nonzero mode"):
+        cf.characteristic_mode(root, 5.0, 1.5, points=2)
