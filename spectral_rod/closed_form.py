@@ -96,19 +96,35 @@ def _null_coefficients(family: str, amp: list[tuple[mp.mpf, mp.mpf]],
 #: empirical margin: with it the modes agree with collocation eigenvectors to <= 3e-15 from
 #: Omega(L) = 5e-324 to 30 (tests/test_two_solvers.py; measured 2026-12-04).
 MODE_DIGITS = 20
-#: A refined load is used only within this relative distance of the root's.
-REFINE_RTOL = 1e-10
+#: A refined load is used only within this relative distance of the root's; the secant's
+#: second start is 10^-REFINE_START (relative) from it, and it gets REFINE_STEPS steps.
+REFINE_RTOL, REFINE_START, REFINE_STEPS = 1e-10, 20, 12
 
 
 def _refined_load(root: CharacteristicRoot, om: mp.mpf, nu: mp.mpf) -> mp.mpf:
-    """root.p_star refined to the working precision on its family's determinant (secant), or
-    root.p_star itself if the refinement fails or moves it by more than REFINE_RTOL."""
+    """root.p_star refined to the working precision on its family's determinant by the secant
+    method from p and p (1 + 10^-REFINE_START), or root.p_star itself if the secant does not
+    settle within REFINE_STEPS or moves it by more than REFINE_RTOL.
+
+    A loop of our own: mpmath's findroot from one start steps to p + 1/4, and from two it
+    wandered off too (to p - 2.7 at Omega(L) = 2.2e-171, nu = 237.5, where the determinant is
+    linear with slope 2.4 near the root); in both cases the mode came out wrong.
+    """
     p = mp.mpf(root.p_star)
-    try:
-        q = mp.findroot(lambda x: determinant(root.family, mp.pi**2 * x, om, nu), p)
-    except (ValueError, ZeroDivisionError):
-        return p
-    return q if abs(q - p) <= REFINE_RTOL * p else p
+
+    def f(x: mp.mpf) -> mp.mpf:
+        return determinant(root.family, mp.pi**2 * x, om, nu)
+
+    x0, x1 = p, p * (1 + mp.mpf(10) ** -REFINE_START)
+    f0, f1 = f(x0), f(x1)
+    for _ in range(REFINE_STEPS):
+        if f1 == f0:
+            break
+        x0, x1 = x1, x1 - f1 * (x1 - x0) / (f1 - f0)
+        if abs(x1 - x0) <= 8 * mp.eps * abs(x1):
+            return x1 if abs(x1 - p) <= REFINE_RTOL * p else p
+        f0, f1 = f1, f(x1)
+    return p
 
 
 def mode_fields(root: CharacteristicRoot, twist_angle: float, nu: float, s: ArrayLike,

@@ -151,6 +151,22 @@ def test_closed_form_mode_at_tiny_twist(family, nu):
         assert min(np.abs(a - b).max(), np.abs(a + b).max()) < 1e-13, twist
 
 
+@pytest.mark.parametrize(("twist", "nu"), [(3.412869764455022e-117, 12.580203262025508),
+                                         (2.190036320285023e-171, 237.5240541225538)])
+def test_closed_form_mode_load_refinement(twist, nu):
+    """Random cases where mpmath's findroot (from one start, then from two) left the root, so
+    the 40-digit root's error (9e-47 >> Omega) decided the mode: x2 of O(1) at the hinges
+    (found 2026-12-04 by comparing 500 random closed-form modes with collocation)."""
+    from spectral_rod.mode import _collocation_fields
+
+    s = np.linspace(0.0, 1.0, 61)
+    cm = characteristic_mode(family_critical_load("antisymmetric", twist, nu), twist, nu,
+                             points=61)
+    _, _, x1, x2 = _collocation_fields(twist, nu, 40, "antisymmetric", s)
+    a, b = _unit_shape(cm.x1, cm.x2), _unit_shape(x1, x2)
+    assert min(np.abs(a - b).max(), np.abs(a + b).max()) < 1e-13
+
+
 def test_buckling_mode_at_subnormal_twist():
     """The fuzz finding of 2026-12-04 (twist 5e-324, nu 1.00095: nan mode, converged=True):
     the mode is Euler's planar one to within O(twist)."""
