@@ -92,9 +92,11 @@ def _null_coefficients(family: str, amp: list[tuple[mp.mpf, mp.mpf]],
     return r[1], -r[0]
 
 
-#: Working digits of the closed-form mode beyond -log10 |Omega(L)| (:func:`mode_fields`). An
-#: empirical margin: with it the modes agree with collocation eigenvectors to <= 3e-15 from
-#: Omega(L) = 5e-324 to 30 (tests/test_two_solvers.py; measured 2026-12-04).
+#: Working digits of the closed-form mode beyond -2 log10 |Omega(L)| (:func:`mode_fields`). An
+#: empirical margin: with it the modes agree with collocation eigenvectors to <= 8.5e-15 from
+#: Omega(L) = 5e-324 to 45, and the out-of-plane part (O(Omega)) with an evaluation wholly in
+#: mpmath at more digits to <= 1e-15 relative to itself (tests/test_two_solvers.py; measured
+#: 2026-12-04).
 MODE_DIGITS = 20
 #: A refined load is used only within this relative distance of the root's; the secant's
 #: second start is 10^-REFINE_START (relative) from it, and it gets REFINE_STEPS steps.
@@ -143,11 +145,13 @@ def mode_fields(root: CharacteristicRoot, twist_angle: float, nu: float, s: Arra
 
     The mode is ill-conditioned at small twist: the part of order Omega is decided by
     lam - Omega^2 - X_+, which is O(Omega^2), so the load and the wavenumbers X_k must agree to
-    well below |Omega|. They are therefore computed here, at max(dps, MODE_DIGITS -
-    log10 |Omega(L)|) digits: the load refined on the family's determinant from root.p_star,
-    the X_k again from it (root.x_plus/x_minus, at the root's precision, are not used). Before
-    (root's X_k, 30 digits) a 40-digit root's mode was wrong (O(1)) for |Omega(L)| <= 1e-40 and
-    off by 1e-12 at 1e-20.
+    well below Omega^2 for that part to be right relative to itself. They are therefore
+    computed here, at max(dps, MODE_DIGITS - 2 log10 |Omega(L)|) digits: the load refined on
+    the family's determinant from root.p_star, the X_k again from it (root.x_plus/x_minus, at
+    the root's precision, are not used). Before (root's X_k, 30 digits) a 40-digit root's mode
+    was wrong (O(1)) for |Omega(L)| <= 1e-40 and off by 1e-12 at 1e-20; at MODE_DIGITS -
+    log10 |Omega(L)| digits the mode was right but its out-of-plane part was off by 2e-2
+    (relative to itself) at 1e-20 and 0.3 at 1e-200.
     """
     if not isinstance(root, CharacteristicRoot):
         raise TypeError(f"root must be a CharacteristicRoot, got {type(root).__name__}")
@@ -157,7 +161,7 @@ def mode_fields(root: CharacteristicRoot, twist_angle: float, nu: float, s: Arra
         raise ValueError("twist_angle must be non-zero for the closed-form mode (at zero twist "
                          "the mode is Euler's planar sin(pi s))")
     om_f = abs(float(twist_angle))
-    with mp.workdps(max(dps, MODE_DIGITS - math.floor(math.log10(om_f)))):
+    with mp.workdps(max(dps, MODE_DIGITS - 2 * math.floor(math.log10(om_f)))):
         om, nuv = mp.mpf(om_f), mp.mpf(nu)
         lam = mp.pi**2 * _refined_load(root, om, nuv)
         xm, xp = characteristic_roots(lam, lam / nuv, om, sqrt=mp.sqrt)

@@ -198,3 +198,19 @@ def test_closed_form_modes_random_sample():
         a, b = _unit_shape(cm.x1, cm.x2), _unit_shape(x1, x2)
         worst = max(worst, min(np.abs(a - b).max(), np.abs(a + b).max()))
     assert worst < 1e-13
+
+
+@pytest.mark.parametrize("nu", [1.5, 1.0005, 30.0])
+def test_closed_form_out_of_plane_part_is_linear_in_tiny_twist(nu):
+    """As Omega -> 0 the centreline's out-of-plane part x2 is O(Omega): x2 / Omega has a limit
+    (measured: reached to <= 1.4e-12 already at 1e-7, the reference here). Before the working
+    precision grew with 2 log10 (1/Omega) it was off by 2e-2 at 1e-20 and 0.3 at 1e-200."""
+    def shape(twist):
+        m = buckling_mode(twist, nu, points=41, method="characteristic" if nu > 1.001 else "auto")
+        assert m.method in ("characteristic", "increment")
+        return m.x2 / twist / m.x1[20]  # the mid-span in-plane deflection as the unit
+
+    limit = shape(1e-7)
+    assert np.abs(limit).max() > 1e-3  # a genuine O(Omega) part
+    for twist in (5e-300, 1e-200, 1e-100, 1e-40, 1e-20, 1e-12):
+        assert np.abs(shape(twist) - limit).max() <= 1e-10 * np.abs(limit).max(), twist
