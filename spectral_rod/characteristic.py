@@ -76,6 +76,7 @@ if TYPE_CHECKING:  # mpmath is imported where it is used: the double-precision r
 
 __all__ = [
     "CharacteristicRoot",
+    "bracketed_root_mp",
     "characteristic_critical_load",
     "characteristic_determinant",
     "characteristic_double",
@@ -219,6 +220,17 @@ class CharacteristicRoot:
     x_plus: mp.mpf   # beta_2^2 L^2
 
 
+def bracketed_root_mp(f: Any, a: mp.mpf, b: mp.mpf) -> mp.mpf:
+    """The root of f in [a, b] (f changes sign there) at the working precision, by mpmath's
+    Anderson-Bjorck (bisection should it ever leave the bracket)."""
+    import mpmath as mp
+
+    r = mp.findroot(f, (a, b), solver="anderson")
+    if not a <= r <= b:  # pragma: no cover - anderson keeps the bracket
+        r = mp.findroot(f, (a, b), solver="bisect")
+    return r
+
+
 def _mp_root(families: tuple[str, ...], twist_angle: float, nu: float, dps: int,
              scan_step: float, top: float) -> CharacteristicRoot:
     """Lowest root over `families` by the sign scan in mpmath at `dps` digits."""
@@ -228,13 +240,8 @@ def _mp_root(families: tuple[str, ...], twist_angle: float, nu: float, dps: int,
         om, nuv = mp.mpf(abs(twist_angle)), mp.mpf(nu)
         funcs = [lambda p, f=f: determinant(f, mp.pi**2 * p, om, nuv) for f in families]
 
-        def refine(k: int, a: mp.mpf, b: mp.mpf) -> mp.mpf:
-            r = mp.findroot(funcs[k], (a, b), solver="anderson")
-            if not a <= r <= b:  # pragma: no cover - anderson keeps the bracket
-                r = mp.findroot(funcs[k], (a, b), solver="bisect")
-            return r
-
-        found = lowest_root(lambda grid: [[g(p) for p in grid] for g in funcs], refine,
+        found = lowest_root(lambda grid: [[g(p) for p in grid] for g in funcs],
+                            lambda k, a, b: bracketed_root_mp(funcs[k], a, b),
                             mp.mpf(SCAN_START), mp.mpf(top), mp.mpf(scan_step))
         if found is None:
             raise RootNotFoundError(f"no root of the {'/'.join(families)} determinant for p in "

@@ -17,6 +17,7 @@ from numpy.typing import ArrayLike, NDArray
 from spectral_rod._validation import check_int, scalar_nu, scalar_twist
 from spectral_rod.characteristic import (
     CharacteristicRoot,
+    bracketed_root_mp,
     determinant,
     entire_cs,
     entire_cs_double,
@@ -25,7 +26,7 @@ from spectral_rod.errors import ConvergenceError
 from spectral_rod.wavenumbers import characteristic_roots
 
 __all__ = ["CharacteristicMode", "boundary_determinant_4x4", "characteristic_mode",
-           "mode_fields"]
+           "fields_at_load", "mode_fields"]
 
 
 #: Points of the fixed grid a mode's scale is taken on, besides the output grid's
@@ -92,41 +93,50 @@ def _null_coefficients(family: str, amp: list[tuple[mp.mpf, mp.mpf]],
     return r[1], -r[0]
 
 
-#: Working digits of the closed-form mode beyond -2 log10 |Omega(L)| (:func:`mode_fields`). An
-#: empirical margin: with it the modes agree with collocation eigenvectors to <= 8.5e-15 from
-#: Omega(L) = 5e-324 to 45, and the out-of-plane part (O(Omega)) with an evaluation wholly in
-#: mpmath at more digits to <= 1e-15 relative to itself (tests/test_two_solvers.py; measured
-#: 2026-12-04).
+#: Working digits of the closed-form mode beyond -2 log10 |Omega(L)| (:func:`fields_at_load`).
+#: An empirical margin: with it the modes agree with collocation eigenvectors to <= 1e-13 from
+#: Omega(L) = 5e-324 to 45 (measured <= 8.5e-15 on 1,100 random modes, 2026-12-04), and the
+#: out-of-plane part x2 / Omega at Omega(L) = 5e-300..1e-12 equals its value at 1e-7 to <= 1e-10
+#: (measured <= 1.4e-12; tests/test_two_solvers.py).
 MODE_DIGITS = 20
-#: A refined load is used only within this relative distance of the root's; the secant's
-#: second start is 10^-REFINE_START (relative) from it, and it gets REFINE_STEPS steps.
-REFINE_RTOL, REFINE_START, REFINE_STEPS = 1e-10, 20, 12
+#: The load is refined in the bracket p (1 -+ REFINE_RTOL) around the given one.
+REFINE_RTOL = 1e-10
 
 
-def _refined_load(root: CharacteristicRoot, om: mp.mpf, nu: mp.mpf) -> mp.mpf:
-    """root.p_star refined to the working precision on its family's determinant by the secant
-    method from p and p (1 + 10^-REFINE_START), or root.p_star itself if the secant does not
-    settle within REFINE_STEPS or moves it by more than REFINE_RTOL.
-
-    A loop of our own: mpmath's findroot from one start steps to p + 1/4, and from two it
-    wandered off too (to p - 2.7 at Omega(L) = 2.2e-171, nu = 237.5, where the determinant is
-    linear with slope 2.4 near the root); in both cases the mode came out wrong.
-    """
-    p = mp.mpf(root.p_star)
-
+def _refined_load(family: str, p: mp.mpf, om: mp.mpf, nu: mp.mpf) -> mp.mpf:
+    """p refined to the working precision on its family's determinant, in the bracket
+    p (1 -+ REFINE_RTOL); p itself where the determinant does not change sign there."""
     def f(x: mp.mpf) -> mp.mpf:
-        return determinant(root.family, mp.pi**2 * x, om, nu)
+        return determinant(family, mp.pi**2 * x, om, nu)
 
-    x0, x1 = p, p * (1 + mp.mpf(10) ** -REFINE_START)
-    f0, f1 = f(x0), f(x1)
-    for _ in range(REFINE_STEPS):
-        if f1 == f0:
-            break
-        x0, x1 = x1, x1 - f1 * (x1 - x0) / (f1 - f0)
-        if abs(x1 - x0) <= 8 * mp.eps * abs(x1):
-            return x1 if abs(x1 - p) <= REFINE_RTOL * p else p
-        f0, f1 = f1, f(x1)
-    return p
+    a, b = p * (1 - REFINE_RTOL), p * (1 + REFINE_RTOL)
+    if f(a) * f(b) > 0:
+        return p
+    return bracketed_root_mp(f, a, b)
+
+
+def fields_at_load(family: str, p_star: float | mp.mpf, twist_angle: float, nu: float,
+                   s: ArrayLike, dps: int = 30) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Body-frame displacements (xi, eta) of `family`'s mode at the load p_star, at the points s
+    (unscaled); the work of :func:`mode_fields` (which see), for a load without its root record.
+    """
+    om_f = abs(float(twist_angle))
+    with mp.workdps(max(dps, MODE_DIGITS - 2 * math.floor(math.log10(om_f)))):
+        om, nuv = mp.mpf(om_f), mp.mpf(nu)
+        lam = mp.pi**2 * _refined_load(family, mp.mpf(p_star), om, nuv)
+        xm, xp = characteristic_roots(lam, lam / nuv, om, sqrt=mp.sqrt)
+        xs = (xp, xm)
+        amp = _amplitudes(family, lam, lam / nuv, om, xs)
+        c = _null_coefficients(family, amp, [entire_cs(x) for x in xs])
+        raw = [[ck * ak[j] for ck, ak in zip(c, amp, strict=True)] for j in (0, 1)]
+        top = max(abs(w) for row in raw for w in row)
+        weights = [[float(w / top) for w in row] for row in raw]
+    t = np.asarray(s, dtype=float) - 0.5
+    cs = [entire_cs_double(float(x), t) for x in xs]
+    first, second = (0, 1) if family == "symmetric" else (1, 0)
+    xi = sum(w * f[first] for w, f in zip(weights[0], cs, strict=True))
+    eta = sum(w * f[second] for w, f in zip(weights[1], cs, strict=True))
+    return np.asarray(xi), np.asarray(eta)
 
 
 def mode_fields(root: CharacteristicRoot, twist_angle: float, nu: float, s: ArrayLike,
@@ -146,12 +156,13 @@ def mode_fields(root: CharacteristicRoot, twist_angle: float, nu: float, s: Arra
     The mode is ill-conditioned at small twist: the part of order Omega is decided by
     lam - Omega^2 - X_+, which is O(Omega^2), so the load and the wavenumbers X_k must agree to
     well below Omega^2 for that part to be right relative to itself. They are therefore
-    computed here, at max(dps, MODE_DIGITS - 2 log10 |Omega(L)|) digits: the load refined on
-    the family's determinant from root.p_star, the X_k again from it (root.x_plus/x_minus, at
-    the root's precision, are not used). Before (root's X_k, 30 digits) a 40-digit root's mode
-    was wrong (O(1)) for |Omega(L)| <= 1e-40 and off by 1e-12 at 1e-20; at MODE_DIGITS -
-    log10 |Omega(L)| digits the mode was right but its out-of-plane part was off by 2e-2
-    (relative to itself) at 1e-20 and 0.3 at 1e-200.
+    computed at max(dps, MODE_DIGITS - 2 log10 |Omega(L)|) digits: the load refined on the
+    family's determinant from root.p_star, the X_k again from it (root.x_plus/x_minus, at the
+    root's precision, are not used). Measured 2026-12-04 on the code before: with the root's
+    X_k at 30 digits a 40-digit root's mode was wrong (O(1)) for |Omega(L)| <= 1e-40; at
+    MODE_DIGITS - log10 |Omega(L)| digits the mode was right, but its out-of-plane part was off
+    by 2e-2 (relative to itself) at 1e-20 and 0.3 at 1e-200 against an evaluation wholly in
+    mpmath (a one-off check; the committed test is the Omega-scaling of MODE_DIGITS).
     """
     if not isinstance(root, CharacteristicRoot):
         raise TypeError(f"root must be a CharacteristicRoot, got {type(root).__name__}")
@@ -160,23 +171,7 @@ def mode_fields(root: CharacteristicRoot, twist_angle: float, nu: float, s: Arra
     if twist_angle == 0.0:
         raise ValueError("twist_angle must be non-zero for the closed-form mode (at zero twist "
                          "the mode is Euler's planar sin(pi s))")
-    om_f = abs(float(twist_angle))
-    with mp.workdps(max(dps, MODE_DIGITS - 2 * math.floor(math.log10(om_f)))):
-        om, nuv = mp.mpf(om_f), mp.mpf(nu)
-        lam = mp.pi**2 * _refined_load(root, om, nuv)
-        xm, xp = characteristic_roots(lam, lam / nuv, om, sqrt=mp.sqrt)
-        xs = (xp, xm)
-        amp = _amplitudes(root.family, lam, lam / nuv, om, xs)
-        c = _null_coefficients(root.family, amp, [entire_cs(x) for x in xs])
-        raw = [[ck * ak[j] for ck, ak in zip(c, amp, strict=True)] for j in (0, 1)]
-        top = max(abs(w) for row in raw for w in row)
-        weights = [[float(w / top) for w in row] for row in raw]
-    t = np.asarray(s, dtype=float) - 0.5
-    cs = [entire_cs_double(float(x), t) for x in xs]
-    first, second = (0, 1) if root.family == "symmetric" else (1, 0)
-    xi = sum(w * f[first] for w, f in zip(weights[0], cs, strict=True))
-    eta = sum(w * f[second] for w, f in zip(weights[1], cs, strict=True))
-    return np.asarray(xi), np.asarray(eta)
+    return fields_at_load(root.family, root.p_star, twist_angle, nu, s, dps)
 
 
 def characteristic_mode(root: CharacteristicRoot, twist_angle: float, nu: float,

@@ -22,7 +22,6 @@ from __future__ import annotations
 
 import math
 
-import mpmath as mp
 import numpy as np
 import numpy.polynomial.chebyshev as C
 from numpy.typing import NDArray
@@ -33,15 +32,14 @@ from spectral_rod._validation import (
     check_twist,
     scalar_value,
 )
-from spectral_rod.characteristic import CharacteristicRoot
-from spectral_rod.closed_form import SCALE_POINTS, mode_fields
+from spectral_rod.closed_form import SCALE_POINTS, fields_at_load
 from spectral_rod.critical import apply_bounds, solve_points, warn_unconverged
 from spectral_rod.errors import ConvergenceError
 from spectral_rod.results import BucklingMode
 from spectral_rod.router import check_route, route
 from spectral_rod.straight_rod import collocation_mode_coefficients
 from spectral_rod.straight_rod.chebyshev import interpolation_coefficients
-from spectral_rod.wavenumbers import characteristic_roots, critical_wavenumbers
+from spectral_rod.wavenumbers import critical_wavenumbers
 
 __all__ = ["MAX_POINTS", "buckling_mode"]
 
@@ -94,12 +92,7 @@ def _closed_form_fields(twist: float, nu: float, p_star: float, family: str,
         eta = -np.sin(np.pi * s) * np.sin(twist * (s - 0.5))
     else:
         dps = 30 + int(max(0.0, -math.log10(nu - 1.0)))  # p* - 1 ~ nu - 1 must be resolved
-        with mp.workdps(dps):
-            lam = mp.pi**2 * mp.mpf(p_star)
-            xm, xp = characteristic_roots(lam, lam / mp.mpf(nu), mp.mpf(abs(twist)),
-                                          sqrt=mp.sqrt)
-            root = CharacteristicRoot(mp.mpf(p_star), family, xm, xp)
-            xi, eta = mode_fields(root, abs(twist), nu, s, dps)
+        xi, eta = fields_at_load(family, p_star, abs(twist), nu, s, dps)
         eta = -eta if twist < 0 else eta
     lam = np.pi**2 * p_star
     rot_c, rot_s = np.cos(twist * s), np.sin(twist * s)

@@ -240,6 +240,7 @@ def test_a_non_finite_closed_form_mode_raises(monkeypatch):
     import spectral_rod.closed_form as cf
 
     root = sr.characteristic_critical_load(5.0, 1.5)
-    monkeypatch.setattr(cf, "mode_fields", lambda *a, **k: (np.zeros(259), np.zeros(259)))
+    size = 2 + cf.SCALE_POINTS  # the output grid of points=2 and the fixed scale grid
+    monkeypatch.setattr(cf, "mode_fields", lambda *a, **k: (np.zeros(size), np.zeros(size)))
     with pytest.raises(sr.ConvergenceError, match="no finite nonzero mode"):
         cf.characteristic_mode(root, 5.0, 1.5, points=2)

@@ -129,42 +129,36 @@ def test_closed_form_mode_needs_twist():
         family_critical_load("even", 1.0, 1.5)
 
 
-def _unit_shape(x1: np.ndarray, x2: np.ndarray) -> np.ndarray:
-    v = np.concatenate([x1, x2])
-    return v / np.linalg.norm(v)
+def _closed_form_vs_collocation(family: str, twist: float, nu: float, n: int = 40) -> float:
+    """Max difference (up to sign) of the unit-norm centrelines (x1, x2) of the closed-form mode
+    of family_critical_load's 40-digit root and of the family's collocation eigenvector at
+    degree n: two independent solutions of inst1's mode."""
+    from spectral_rod.mode import _collocation_fields
+
+    s = np.linspace(0.0, 1.0, 61)
+    cm = characteristic_mode(family_critical_load(family, twist, nu), twist, nu, points=61)
+    _, _, x1, x2 = _collocation_fields(twist, nu, n, family, s)
+    a, b = np.concatenate([cm.x1, cm.x2]), np.concatenate([x1, x2])
+    a, b = a / np.linalg.norm(a), b / np.linalg.norm(b)
+    return float(min(np.abs(a - b).max(), np.abs(a + b).max()))
 
 
 @pytest.mark.parametrize("nu", [1.0009, 1.5, 30.0])
 @pytest.mark.parametrize("family", ["symmetric", "antisymmetric"])
 def test_closed_form_mode_at_tiny_twist(family, nu):
-    """The closed-form mode of a 40-digit root against the family's collocation eigenvector
-    down to subnormal twist (found 2026-12-04: before, wrong (O(1)) for |Omega(L)| <= 1e-40 and
-    nan in buckling_mode at 1e-322, the weights underflowing)."""
-    from spectral_rod.mode import _collocation_fields
-
-    s = np.linspace(0.0, 1.0, 61)
+    """Down to subnormal twist (found 2026-12-04: before, wrong (O(1)) for |Omega(L)| <= 1e-40
+    and nan in buckling_mode at 1e-322, the weights underflowing)."""
     for twist in (5e-324, 1e-100, 1e-40, 1e-20, 0.3):
-        root = family_critical_load(family, twist, nu)
-        cm = characteristic_mode(root, twist, nu, points=61)
-        _, _, x1, x2 = _collocation_fields(twist, nu, 40, family, s)
-        a, b = _unit_shape(cm.x1, cm.x2), _unit_shape(x1, x2)
-        assert min(np.abs(a - b).max(), np.abs(a + b).max()) < 1e-13, twist
+        assert _closed_form_vs_collocation(family, twist, nu) < 1e-13, twist
 
 
 @pytest.mark.parametrize(("twist", "nu"), [(3.412869764455022e-117, 12.580203262025508),
                                          (2.190036320285023e-171, 237.5240541225538)])
 def test_closed_form_mode_load_refinement(twist, nu):
-    """Random cases where mpmath's findroot (from one start, then from two) left the root, so
-    the 40-digit root's error (9e-47 >> Omega) decided the mode: x2 of O(1) at the hinges
-    (found 2026-12-04 by comparing 500 random closed-form modes with collocation)."""
-    from spectral_rod.mode import _collocation_fields
-
-    s = np.linspace(0.0, 1.0, 61)
-    cm = characteristic_mode(family_critical_load("antisymmetric", twist, nu), twist, nu,
-                             points=61)
-    _, _, x1, x2 = _collocation_fields(twist, nu, 40, "antisymmetric", s)
-    a, b = _unit_shape(cm.x1, cm.x2), _unit_shape(x1, x2)
-    assert min(np.abs(a - b).max(), np.abs(a + b).max()) < 1e-13
+    """Random cases where a refinement by mpmath's secant (from one start, then from two) left
+    the root, so the 40-digit root's error (9e-47 >> Omega) decided the mode: x2 of O(1) at the
+    hinges (found 2026-12-04 by comparing 500 random closed-form modes with collocation)."""
+    assert _closed_form_vs_collocation("antisymmetric", twist, nu) < 1e-13
 
 
 def test_buckling_mode_at_subnormal_twist():
@@ -181,10 +175,7 @@ def test_closed_form_modes_random_sample():
     """200 random closed-form modes (both families, Omega(L) from 1e-200 to 45, nu from
     1 + 1e-6 to 1e3) against the collocation eigenvectors: the sample that found the load
     refinement's failures on 2026-12-04 (then up to 0.18; now <= 8.5e-15 on 1,100 modes)."""
-    from spectral_rod.mode import _collocation_fields
-
     rng = np.random.default_rng(21)
-    s = np.linspace(0.0, 1.0, 61)
     worst = 0.0
     for _ in range(200):
         family = str(rng.choice(["symmetric", "antisymmetric"]))
@@ -192,11 +183,8 @@ def test_closed_form_modes_random_sample():
             float(rng.uniform(0.01, 45))
         nu = float(1 + 10 ** rng.uniform(-6, -1)) if rng.random() < 0.3 else \
             float(10 ** rng.uniform(0, 3))
-        cm = characteristic_mode(family_critical_load(family, twist, nu), twist, nu, points=61)
         n = int(min(96, 40 + 1.2 * twist))
-        _, _, x1, x2 = _collocation_fields(twist, nu, n - n % 2, family, s)
-        a, b = _unit_shape(cm.x1, cm.x2), _unit_shape(x1, x2)
-        worst = max(worst, min(np.abs(a - b).max(), np.abs(a + b).max()))
+        worst = max(worst, _closed_form_vs_collocation(family, twist, nu, n - n % 2))
     assert worst < 1e-13
 
 
