@@ -54,6 +54,7 @@ is a difference of two phases of size ~Omega); measured <= 2.5e-14 at Omega(L) =
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -67,7 +68,7 @@ from spectral_rod._validation import (
     scalar_twist,
 )
 from spectral_rod.errors import RootNotFoundError
-from spectral_rod.families import FAMILIES, check_family
+from spectral_rod.families import FAMILIES, check_family, euler_loads
 from spectral_rod.sign_scan import bracketed_roots, lowest_root, lowest_roots
 from spectral_rod.wavenumbers import characteristic_roots
 
@@ -323,7 +324,68 @@ def family_critical_load(family: str, twist_angle: float, nu: float, *, dps: int
     if nu_f == 1.0 or om_f == 0.0:
         return _closed_form_root(family, om_f, nu_f, dps)
     top = nu_f + SCAN_MARGIN if p_max is None else p_max
-    return _mp_root((family,), om_f, nu_f, dps, scan_step, top)
+    try:
+        root = _mp_root((family,), om_f, nu_f, dps, scan_step, top)
+    except RootNotFoundError:
+        root = None
+    if root is None or root.p_star > nu_f + SCAN_MARGIN:
+        # the bound puts a root in [1, nu]: the scan stepped over an even number of roots
+        pair = _close_pair_root(family, om_f, nu_f, dps, scan_step, min(top, nu_f + SCAN_MARGIN))
+        if pair is not None:
+            return pair
+    if root is None:
+        raise RootNotFoundError(f"no root of the {family} determinant for p in [1, {top:g}] "
+                                f"(twist_angle={om_f}, nu={nu_f})")
+    return root
+
+
+#: Digits beyond dps (and beyond the 2 log10(1/|Omega|) a close pair needs) at which a pair is
+#: separated: an empirical margin, like :data:`spectral_rod.closed_form.MODE_DIGITS`.
+PAIR_DIGITS = 10
+
+
+def _close_pair_root(family: str, twist_angle: float, nu: float, dps: int, step: float,
+                     top: float) -> CharacteristicRoot | None:
+    """The lower of two roots of one family closer than a scan step, or None.
+
+    At small twist the roots lie near the family's Euler loads, and where two of those coincide
+    (antisymmetric: 4 = nu) the twist splits them by ~Omega (measured at nu = 4: 4 -+ 1.081
+    Omega): the determinant has the same sign on both sides and an extremum of the other sign
+    between them. Around each Euler load e below `top`, the extremum x in [e - step, e + step]
+    (a root of D') is found; if D(x) has the other sign, the quadratic model of D there brackets
+    the lower root. D(x) = O(Omega^2), so the work is done at dps + 2 log10(1/|Omega|) +
+    PAIR_DIGITS digits.
+    """
+    import mpmath as mp
+
+    digits = dps + PAIR_DIGITS + 2 * max(0, math.ceil(-math.log10(twist_angle)))
+    with mp.workdps(digits):
+        om, nuv = mp.mpf(twist_angle), mp.mpf(nu)
+
+        def f(p):
+            return determinant(family, mp.pi**2 * p, om, nuv)
+
+        for e in euler_loads(family, nu, top):
+            a, b = mp.mpf(max(e - step, SCAN_START)), mp.mpf(e + step)
+            da, db = mp.diff(f, a), mp.diff(f, b)
+            if not da * db < 0:
+                continue
+            x = bracketed_root_mp(lambda p: mp.diff(f, p), a, b)
+            d0, d2 = f(x), mp.diff(f, x, 2)
+            if not d0 * f(a) < 0:
+                continue
+            lo = x - 2 * mp.sqrt(-2 * d0 / d2)  # twice the quadratic model's half-distance
+            if not f(lo) * d0 < 0:
+                lo = a
+            r = bracketed_root_mp(f, lo, x)
+            if r > top:
+                continue
+            with mp.workdps(dps):
+                r = +r
+                lam = mp.pi**2 * r
+                return CharacteristicRoot(r, family, *characteristic_roots(
+                    lam, lam / mp.mpf(nu), mp.mpf(twist_angle), sqrt=mp.sqrt))
+    return None
 
 
 def characteristic_double(twist_angle: float, nu: float) -> tuple[float, str]:

@@ -163,6 +163,11 @@ def mode_fields(root: CharacteristicRoot, twist_angle: float, nu: float, s: Arra
     MODE_DIGITS - log10 |Omega(L)| digits the mode was right, but its out-of-plane part was off
     by 2e-2 (relative to itself) at 1e-20 and 0.3 at 1e-200 against an evaluation wholly in
     mpmath (a one-off check; the committed test is the Omega-scaling of MODE_DIGITS).
+
+    At a split pair (the antisymmetric family near nu = 4, roots ~2.2 Omega apart) the mode is
+    that of whichever root root.p_star is nearest, so the root must separate the pair: a
+    dps-digit root does so for |Omega(L)| >~ 10^(15 - dps) (measured with 40-digit roots
+    against 80-digit ones at nu = 4: the modes agree to 1.5e-13 at 1e-30, 1e-2 at 1e-40).
     """
     if not isinstance(root, CharacteristicRoot):
         raise TypeError(f"root must be a CharacteristicRoot, got {type(root).__name__}")

@@ -18,7 +18,7 @@ import math
 
 from spectral_rod._validation import check_choice, scalar_nu
 
-__all__ = ["FAMILIES", "FAMILY_DTYPE", "SHIFT", "check_family", "p_star_bounds"]
+__all__ = ["FAMILIES", "FAMILY_DTYPE", "SHIFT", "check_family", "euler_loads", "p_star_bounds"]
 
 FAMILIES = ("symmetric", "antisymmetric")
 #: The numpy string dtype of arrays of family names (every entry point returns it).
@@ -39,3 +39,18 @@ def p_star_bounds(nu: float) -> tuple[float, float]:
     (1.0, 1.25)
     """
     return 1.0, (1.0 + scalar_nu(nu)) / 2.0
+
+
+def euler_loads(family: str, nu: float, top: float) -> list[float]:
+    """The family's loads p at zero twist up to `top`, ascending: the uncoupled Euler loads
+    (omega1 with j half-waves: p = j^2; omega2: p = nu j^2), j odd for omega1 and even for omega2
+    in the symmetric family, the other way round in the antisymmetric one. Where two coincide
+    (antisymmetric 4 = nu), a small twist splits them into two roots ~Omega apart.
+
+    >>> euler_loads("antisymmetric", 4.0, 10.0)
+    [4.0, 4.0]
+    """
+    first = 1 if family == "symmetric" else 2  # omega1's half-waves: odd / even
+    loads = [j * j for j in range(first, math.isqrt(int(top)) + 2, 2)]
+    loads += [nu * j * j for j in range(3 - first, math.isqrt(int(top / nu)) + 2, 2)]
+    return sorted(float(p) for p in loads if p <= top)

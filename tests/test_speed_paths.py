@@ -345,7 +345,7 @@ def test_lean_loose_eigenvalue_is_the_discrete_eigenvalue_within_the_iteration_t
     power iteration): the figure the docstring quotes, on Figure 1's and random points at their
     a priori degree and n = 64."""
     from spectral_rod import load_figure1
-    from spectral_rod.straight_rod.eigensolver import _solve_family_eig
+    from spectral_rod.straight_rod.eigensolver import solve_family_eig
     from spectral_rod.straight_rod.resolution import initial_degree_scalar
 
     d = load_figure1()
@@ -356,7 +356,7 @@ def test_lean_loose_eigenvalue_is_the_discrete_eigenvalue_within_the_iteration_t
     for tw, nu in zip(om, nus, strict=True):
         for n in sorted({initial_degree_scalar(float(tw), 1e-6), 64}):
             lam, _, ok = solve_one(n, float(tw), float(nu), 1e-8)
-            ref = [_solve_family_eig(n, f, np.array([tw]), np.array([nu]))[0][0]
+            ref = [solve_family_eig(n, f, np.array([tw]), np.array([nu]))[0][0]
                    for f in ("symmetric", "antisymmetric")]
             families += 2
             if ok:

@@ -20,6 +20,7 @@ from spectral_rod.characteristic import (
 from spectral_rod.closed_form import boundary_determinant_4x4, characteristic_mode
 from spectral_rod.critical import critical_load
 from spectral_rod.crossings import family_crossing, family_slope
+from spectral_rod.straight_rod import collocation_family_load
 from spectral_rod.straight_rod.eigensolver import solve_family
 
 #: Omega(L) in [0, 40] (with the special twists pi, 2 pi, 3 pi and the window around pi) and
@@ -68,6 +69,60 @@ def test_family_roots_agree_with_collocation_families(twist, nu):
         lam, _, _ = solve_family(64, fam, np.array([twist]), np.array([nu]))
         ref = float(family_critical_load(fam, twist, nu).p_star)
         assert lam[0] / math.pi**2 == pytest.approx(ref, rel=1e-12)
+
+
+@pytest.mark.parametrize(("twist", "nu"), [(1e-10, 4.0), (1e-13, 4.0), (1e-7, 4.001),
+                                           (1e-7, 4.005)])
+@pytest.mark.parametrize("p_max", [None, 20.0])
+def test_family_root_of_a_pair_split_by_small_twist(twist, nu, p_max):
+    """At nu near 4 the antisymmetric family's two lowest Euler loads (4 and nu) coincide, and a
+    small twist splits them into two roots inside one scan step: the scan raised
+    RootNotFoundError, or with p_max = 20 silently returned the next root, 16. The reference is
+    the family's collocation eigenvalue (another formulation)."""
+    lam, _, _ = solve_family(24, "antisymmetric", np.array([twist]), np.array([nu]))
+    r = family_critical_load("antisymmetric", twist, nu, p_max=p_max)
+    assert float(r.p_star) == pytest.approx(lam[0] / math.pi**2, rel=1e-13)
+    assert 1 <= r.p_star <= nu
+
+
+def test_one_family_by_collocation_at_a_near_double_root():
+    """The iteration's convergence test assumes an isolated eigenvalue: at this random point of
+    2026-12-04 (Euler loads 4 and nu 1.9e-8 apart) the antisymmetric family's load at n = 80
+    came out 4.7e-9 high through it; collocation_family_load now takes the full eig."""
+    twist, nu = 7.650810037481772e-11, 4.000000019061659
+    ref = float(family_critical_load("antisymmetric", twist, nu).p_star)
+    for n in (24, 80):
+        assert collocation_family_load(twist, nu, "antisymmetric", n) == pytest.approx(
+            ref, rel=1e-13)
+
+
+def test_closed_form_mode_of_a_split_pair():
+    """The lower root's mode at nu = 4: at Omega(L) = 1e-3 the closed form equals the
+    collocation eigenvector (the gap, 2e-3, is far above round-off there), and at 1e-13 (where
+    collocation's eigenvector is only good to eps / gap ~ 1e-3) it differs from that by the
+    O(Omega) change of the mode (measured 8.8e-5), not by O(1) as the upper root's would."""
+    assert _closed_form_vs_collocation("antisymmetric", 1e-3, 4.0) < 1e-12
+    s = np.linspace(0.0, 1.0, 61)
+    a = characteristic_mode(family_critical_load("antisymmetric", 1e-13, 4.0), 1e-13, 4.0,
+                            points=61)
+    from spectral_rod.mode import _collocation_fields
+    _, _, x1, x2 = _collocation_fields(1e-3, 4.0, 40, "antisymmetric", s)
+    u, v = np.concatenate([a.x1, a.x2]), np.concatenate([x1, x2])
+    u, v = u / np.linalg.norm(u), v / np.linalg.norm(v)
+    assert min(np.abs(u - v).max(), np.abs(u + v).max()) < 2e-4
+
+
+def test_split_pair_root_is_linear_in_tiny_twist():
+    """At nu = 4 the lower root is 4 - c Omega + O(Omega^2): (4 - p)/Omega at Omega(L) = 1e-20
+    and 1e-60 (the pair's separation, 80 digits) equals its value at 1e-6, where the ordinary
+    scan resolves the pair (a grid point falls between the roots) and collocation confirms it,
+    to the O(Omega) correction (measured 1.7e-7 between 1e-6 and 1e-10)."""
+    c = [(4 - family_critical_load("antisymmetric", om, 4.0, dps=80).p_star) / om
+         for om in (1e-6, 1e-20, 1e-60)]
+    lam, _, _ = solve_family(24, "antisymmetric", np.array([1e-6]), np.array([4.0]))
+    assert float(c[0]) == pytest.approx((4 - lam[0] / math.pi**2) / 1e-6, rel=1e-8)
+    for ci in c[1:]:
+        assert abs(ci / c[0] - 1) <= 1e-6
 
 
 @pytest.mark.parametrize(("lam", "om", "nu"), [(12, 3, 1.5), (11, 2.5, 2), (20, 7, 3),

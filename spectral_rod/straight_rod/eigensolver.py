@@ -42,7 +42,7 @@ from spectral_rod.straight_rod.resolution import mode_tails
 
 __all__ = ["CALIBRATED_TOL", "ModalFamily", "iteration_allowance", "iteration_rtol",
            "lowest_eigenpair", "modal_family", "pencil_rayleigh_quotient", "physical_eig",
-           "solve_family"]
+           "solve_family", "solve_family_eig"]
 
 #: Eigenvalues with |Im| above this fraction of |lambda| are complex, i.e. not physical.
 IMAG_REL = 1.0e-8
@@ -321,6 +321,16 @@ def lowest_eigenpair(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np
     needed to be shown higher than another family's eigenvalue: "above", lambda approximate).
     Points are dropped from the iteration as they finish.
 
+    The estimate assumes the eigenvalue is isolated: for two of the family's eigenvalues a gap
+    delta apart it is ~delta^2 |mix|^2 while the error is ~delta |mix|^2, so a mixed vector
+    passes once delta^2 < rtol lambda. That happens only in the antisymmetric family near
+    nu = 4 at small twist (Euler loads 4 and nu; found 2026-12-04: 15 of 400 random family
+    loads at n = 80, errors up to 2.0e-8 against the 40-digit family root, all with nu within
+    2e-7 of 4 and |Omega(L)| < 3e-7; the other 785 agreed to <= 1e-11). There the
+    symmetric family (p* ~ 1) is far lower, so :func:`spectral_rod.critical_load` stops the
+    antisymmetric iteration at "above" and is unaffected; one family alone is solved by
+    :func:`solve_family_eig`.
+
     The right and left solves are separate calls. Stacking them in one (2, points, k) array,
     with [S^{-1}, S^{-T}] stored (half the numpy calls), was measured on 2026-12-02 against this
     code (symmetric family, tol 1e-12, 40 interleaved runs each): faster only at 10 points
@@ -439,13 +449,13 @@ def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np
     lambda = inf where no eigenvalue passes the rule.
     """
     if twist.size <= SMALL_BATCH and n <= SMALL_DEGREE:  # the full eig is cheaper here
-        return _solve_family_eig(n, family, twist, nu)
+        return solve_family_eig(n, family, twist, nu)
     mf = modal_family(n, family)
     op = mf.op
     try:
         lam, z, w, ok, above = lowest_eigenpair(mf, twist, nu, rtol=rtol, ceiling=ceiling)
     except np.linalg.LinAlgError:  # SHIFT an eigenvalue of some point (spurious): the rule
-        return _solve_family_eig(n, family, twist, nu)
+        return solve_family_eig(n, family, twist, nu)
     vec = mf.right_vectors(z)
     # the eigenvalue from the O(1) pencil itself: the two-sided Rayleigh quotient (its error is
     # the product of the vectors' errors; K carries round-off ~ eps n^4 in its diagonal)
@@ -458,13 +468,16 @@ def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np
     resolved = np.flatnonzero(~above & np.isfinite(lam) & (ok | above))
     tails[resolved] = mode_tails(op, vec[resolved])
     if bad.size:  # the full eig with the rule decides
-        lam[bad], tails[bad], vec[bad] = _solve_family_eig(n, family, twist[bad], nu[bad])
+        lam[bad], tails[bad], vec[bad] = solve_family_eig(n, family, twist[bad], nu[bad])
     return lam, tails, vec
 
 
-def _solve_family_eig(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np.float64]
+def solve_family_eig(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np.float64]
                       ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
-    """:func:`solve_family` by the full ``eig`` of A^{-1} B and the rule (the reference path)."""
+    """:func:`solve_family` by the full ``eig`` of A^{-1} B and the rule (the reference path).
+
+    Unlike the iteration it needs no gap below the family's next eigenvalue, so it is the path
+    for one family on its own (:func:`.collocation.collocation_family_load`)."""
     op = family_operator(n, family)
     a, b = op.pencil(twist, nu)
     # B broadcast to A's stack: numpy < 2.0 would read a (m, m) right-hand side against a
