@@ -24,11 +24,12 @@ from spectral_rod._validation import check_resolution, scalar_nu, scalar_twist
 from spectral_rod.families import FAMILIES, check_family
 from spectral_rod.straight_rod.discretisation import family_operator
 from spectral_rod.straight_rod.eigensolver import (
+    ISOLATION_GAP,
     iteration_allowance,
     iteration_rtol,
+    lowest_gap,
     physical_eig,
     solve_family,
-    solve_family_eig,
 )
 from spectral_rod.straight_rod.few_points import LEAN_MAX_DEGREE, solve_few
 from spectral_rod.straight_rod.resolution import (
@@ -228,13 +229,19 @@ def collocation_family_load(twist_angle: float, nu: float, family: str, n: int) 
     """Lowest p of one mode family by collocation at degree n (one point; no resolution loop).
 
     Used where the two families are needed separately, e.g. to locate their crossings
-    (:func:`spectral_rod.crossings.collocation_crossing`). By the full ``eig`` with the rule
-    (:func:`.eigensolver.solve_family_eig`): the iteration's convergence test assumes the
-    family's lowest eigenvalue is isolated, which a family on its own need not be (the
-    antisymmetric family near nu = 4 at small twist: 2e-8 off at n = 80 through the iteration).
+    (:func:`spectral_rod.crossings.collocation_crossing`). The iteration's convergence test
+    assumes the family's lowest eigenvalue is isolated, which a family on its own need not be
+    (the antisymmetric family near nu = 4 at small twist: 2e-8 off at n = 80 through the
+    iteration); the full ``eig`` checks the gap first, and below
+    :data:`~.eigensolver.ISOLATION_GAP` its own eigenvalue is returned (elsewhere the
+    iteration's, whose two-sided quotient has the smaller round-off: a crossing twist of
+    Figure 1 moved by 3.5e-9 with eig's).
     """
-    lam, _, _ = solve_family_eig(n, family, np.array([abs(float(twist_angle))]),
-                                 np.array([float(nu)]))
+    om, nv = abs(float(twist_angle)), float(nu)
+    lam1, gap = lowest_gap(n, family, om, nv)
+    if gap < ISOLATION_GAP:
+        return lam1 / math.pi**2
+    lam, _, _ = solve_family(n, family, np.array([om]), np.array([nv]))
     return float(lam[0]) / math.pi**2
 
 

@@ -25,6 +25,7 @@ unresolved by construction) meets the tolerance.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -40,9 +41,9 @@ from spectral_rod.straight_rod.discretisation import (
 )
 from spectral_rod.straight_rod.resolution import mode_tails
 
-__all__ = ["CALIBRATED_TOL", "ModalFamily", "iteration_allowance", "iteration_rtol",
-           "lowest_eigenpair", "modal_family", "pencil_rayleigh_quotient", "physical_eig",
-           "solve_family", "solve_family_eig"]
+__all__ = ["CALIBRATED_TOL", "ISOLATION_GAP", "ModalFamily", "iteration_allowance",
+           "iteration_rtol", "lowest_eigenpair", "lowest_gap", "modal_family",
+           "pencil_rayleigh_quotient", "physical_eig", "solve_family", "solve_family_eig"]
 
 #: Eigenvalues with |Im| above this fraction of |lambda| are complex, i.e. not physical.
 IMAG_REL = 1.0e-8
@@ -329,7 +330,7 @@ def lowest_eigenpair(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np
     2e-7 of 4 and |Omega(L)| < 3e-7; the other 785 agreed to <= 1e-11). There the
     symmetric family (p* ~ 1) is far lower, so :func:`spectral_rod.critical_load` stops the
     antisymmetric iteration at "above" and is unaffected; one family alone is solved by
-    :func:`solve_family_eig`.
+    :func:`lowest_gap` and :data:`ISOLATION_GAP`.
 
     The right and left solves are separate calls. Stacking them in one (2, points, k) array,
     with [S^{-1}, S^{-T}] stored (half the numpy calls), was measured on 2026-12-02 against this
@@ -476,8 +477,8 @@ def solve_family_eig(n: int, family: str, twist: NDArray[np.float64], nu: NDArra
                       ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
     """:func:`solve_family` by the full ``eig`` of A^{-1} B and the rule (the reference path).
 
-    Unlike the iteration it needs no gap below the family's next eigenvalue, so it is the path
-    for one family on its own (:func:`.collocation.collocation_family_load`)."""
+    Unlike the iteration it needs no gap below the family's next eigenvalue (but its round-off
+    is larger: the inverse pencil carries cond(A) ~ n^4)."""
     op = family_operator(n, family)
     a, b = op.pencil(twist, nu)
     # B broadcast to A's stack: numpy < 2.0 would read a (m, m) right-hand side against a
@@ -486,3 +487,21 @@ def solve_family_eig(n: int, family: str, twist: NDArray[np.float64], nu: NDArra
     valid = np.isfinite(theta) & (theta > 0)
     lam = np.where(valid, 1.0 / np.where(valid, theta, 1.0), np.inf)
     return lam, np.where(valid, mode_tails(op, vec), np.inf), vec
+
+
+#: The family's lowest eigenvalue counts as isolated, so that the iteration's convergence test
+#: holds, if the next physical one is at least this far above it, relatively: the test passes a
+#: mixed vector once the gap is below ~sqrt(rtol / lambda) (2e-8 at POWER_RTOL); a margin of 50.
+ISOLATION_GAP = 1e-6
+
+
+def lowest_gap(n: int, family: str, twist: float, nu: float) -> tuple[float, float]:
+    """(lambda_1, (lambda_2 - lambda_1) / lambda_1) of one point: the family's two lowest
+    physical eigenvalues by the full ``eig`` of A^{-1} B and the rule (inf gap if only one)."""
+    a, b = family_operator(n, family).pencil(np.array([twist]), np.array([nu]))
+    theta = np.linalg.eigvals(np.linalg.solve(a[0], b))
+    ok = (np.abs(theta.imag) <= IMAG_REL * np.abs(theta)) & (theta.real > 0)
+    lam = np.sort(1.0 / theta.real[ok])
+    if not lam.size:
+        return math.inf, math.inf
+    return float(lam[0]), float((lam[1] - lam[0]) / lam[0]) if lam.size > 1 else math.inf
