@@ -11,7 +11,7 @@ import mpmath as mp
 import numpy as np
 import pytest
 
-from spectral_rod import buckling_mode
+from spectral_rod import buckling_mode, non_planarity
 from spectral_rod.characteristic import (
     characteristic_critical_load,
     determinant,
@@ -214,6 +214,25 @@ def test_closed_form_mode_load_refinement(twist, nu):
     the root, so the 40-digit root's error (9e-47 >> Omega) decided the mode: x2 of O(1) at the
     hinges (found 2026-12-04 by comparing 500 random closed-form modes with collocation)."""
     assert _closed_form_vs_collocation("antisymmetric", twist, nu) < 1e-13
+
+
+@pytest.mark.parametrize("nu", [1.0009, 1.5, 30.0])
+@pytest.mark.parametrize("family", ["symmetric", "antisymmetric"])
+def test_collocation_mode_small_part_at_tiny_twist(family, nu):
+    """The O(Omega) field of the collocation eigenvector, relative to itself: non_planarity of
+    the centreline against the closed form's (whose out-of-plane part is checked by its Omega
+    scaling). Before 2026-12-04 eig's small field was noise ~1e-17 relative to the mode:
+    off by 1.1e-5 at Omega(L) = 1e-12 (symmetric, nu = 1.5), 0.41 at nu = 1.0009, 7e25 at
+    1e-200 (antisymmetric); now solved from its own block row (measured <= 7e-15; 1.3e-9 at
+    nu = 1.0009, where the mode is near-degenerate)."""
+    from spectral_rod.mode import _collocation_fields
+
+    s = np.linspace(0.0, 1.0, 201)
+    for twist in (1e-6, 1e-12, 1e-200):
+        cm = characteristic_mode(family_critical_load(family, twist, nu), twist, nu, points=201)
+        _, _, x1, x2 = _collocation_fields(twist, nu, 40, family, s)
+        assert non_planarity(x1, x2) == pytest.approx(non_planarity(cm.x1, cm.x2),
+                                                      rel=1e-8 if nu < 1.01 else 1e-13), twist
 
 
 def test_buckling_mode_at_subnormal_twist():

@@ -41,9 +41,10 @@ from spectral_rod.straight_rod.resolution import (
     roundoff_floor,
 )
 
-__all__ = ["CLOSE_REL", "FEW_POINTS", "N_MAX", "N_MIN", "TIE_REL", "CollocationResult",
-           "collocation_critical_load", "collocation_family_load", "collocation_mode_coefficients",
-           "pick_family", "pick_family_scalar", "solve_cost", "solve_degrees"]
+__all__ = ["CLOSE_REL", "FEW_POINTS", "N_MAX", "N_MIN", "SMALL_PART", "TIE_REL",
+           "CollocationResult", "collocation_critical_load", "collocation_family_load",
+           "collocation_mode_coefficients", "pick_family", "pick_family_scalar", "solve_cost",
+           "solve_degrees"]
 
 
 class CollocationResult(NamedTuple):
@@ -245,13 +246,35 @@ def collocation_family_load(twist_angle: float, nu: float, family: str, n: int) 
     return float(lam[0]) / math.pi**2
 
 
+#: A field of the mode counts as its small part if its largest coefficient is below this
+#: fraction of the other field's (:func:`collocation_mode_coefficients`).
+SMALL_PART = 1e-3
+
+
 def collocation_mode_coefficients(twist_angle: float, nu: float, n: int, family: str
                                   ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """Chebyshev coefficients (in x = 2 s - 1) of (omega1, omega2) of the family's lowest mode at
     degree n, from the full ``eig`` (an exact eigenvector of the discrete pencil), for
-    Omega(L) >= 0 (the mode of -Omega is the mirror image, omega2 -> -omega2)."""
+    Omega(L) >= 0 (the mode of -Omega is the mirror image, omega2 -> -omega2).
+
+    At small twist one field is O(Omega) (omega2 in the symmetric family). ``eig`` gets it to
+    an absolute error ~eps times the mode, so relative to itself it was off by ~1e-17/Omega
+    (non_planarity of the centreline 1.6e-9 off at Omega(L) = 1e-6, 5e-6 at 1e-12, nu = 1.5;
+    0.35 at 1e-12, nu = 1.0009). Where it is below SMALL_PART of the other field it is
+    therefore solved again from its own block row of the pencil, (A_ss - lambda V_s) c_s =
+    -A_sb c_b, which carries the relative error of c_b and lambda instead.
+    """
     om, nu = abs(scalar_twist(twist_angle)), scalar_nu(nu)
     op = family_operator(check_resolution(n, minimum=N_MIN, maximum=N_MAX), check_family(family))
     a, b = op.pencil(om, nu)
-    _, vec = physical_eig(np.linalg.solve(a, b)[None])
-    return op.split(vec[0])
+    theta, vec = physical_eig(np.linalg.solve(a, b)[None])
+    c = vec[0]
+    k1 = op.sizes[0]
+    part = (slice(0, k1), slice(k1, None))
+    size = [float(np.abs(c[f]).max()) for f in part]
+    small, big = (part[0], part[1]) if size[0] < size[1] else (part[1], part[0])
+    if min(size) < SMALL_PART * max(size) and np.isfinite(theta[0]):
+        c = c.copy()
+        c[small] = -np.linalg.solve(a[small, small] - b[small, small] / theta[0],
+                                    a[small, big] @ c[big])
+    return op.split(c)
