@@ -172,8 +172,11 @@ def collocation_crossing(twist_guess: float, nu: float, half_width: float = 0.15
     load_error = float(roundoff_floor(om_c)) * p_c
     gap = _slope_gap(diff, om_c, load_error)
     twist_error = 2 * load_error / gap if gap > 0 else math.inf
+    # inf, not 0 * inf = nan, where the twist is not resolved and a slope rounds to 0
+    p_error = (load_error + abs(slopes[FAMILIES[0]]) * twist_error if math.isfinite(twist_error)
+               else math.inf)
     return CollocationCrossing(float(om_c), p_c, {k: float(v) for k, v in slopes.items()}, n,
-                               twist_error, load_error + abs(slopes[FAMILIES[0]]) * twist_error)
+                               twist_error, p_error)
 
 
 #: Steps of the slope-difference estimate behind ``twist_error`` (:func:`_slope_gap`), and how
