@@ -339,6 +339,20 @@ def family_critical_load(family: str, twist_angle: float, nu: float, *, dps: int
     return root
 
 
+def _pair_bracket(f: Any, a: mp.mpf, x: mp.mpf, d0: mp.mpf) -> mp.mpf:
+    """The left end of a bracket [lo, x] of the lower root of a pair around the extremum x of
+    f (f(x) = d0): twice the quadratic model's half-distance below x, or `a` (a far end, where
+    Anderson-Bjorck converged too slowly at Omega = 1e-10) if the model does not bracket."""
+    import mpmath as mp
+
+    d2 = mp.diff(f, x, 2)
+    if d0 * d2 < 0:
+        lo = x - 2 * mp.sqrt(-2 * d0 / d2)
+        if a < lo and f(lo) * d0 < 0:
+            return lo
+    return a
+
+
 #: Digits beyond dps (and beyond the 2 log10(1/|Omega|) a close pair needs) at which a pair is
 #: separated: an empirical margin, like :data:`spectral_rod.closed_form.MODE_DIGITS`.
 PAIR_DIGITS = 10
@@ -371,13 +385,10 @@ def _close_pair_root(family: str, twist_angle: float, nu: float, dps: int, step:
             if not da * db < 0:
                 continue
             x = bracketed_root_mp(lambda p: mp.diff(f, p), a, b)
-            d0, d2 = f(x), mp.diff(f, x, 2)
+            d0 = f(x)
             if not d0 * f(a) < 0:
                 continue
-            lo = x - 2 * mp.sqrt(-2 * d0 / d2)  # twice the quadratic model's half-distance
-            if not f(lo) * d0 < 0:
-                lo = a
-            r = bracketed_root_mp(f, lo, x)
+            r = bracketed_root_mp(f, _pair_bracket(f, a, x, d0), x)
             if r > top:
                 continue
             with mp.workdps(dps):
