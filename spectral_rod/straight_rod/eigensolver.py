@@ -325,7 +325,7 @@ def lowest_eigenpair(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np
     The estimate assumes the eigenvalue is isolated: for two of the family's eigenvalues a gap
     delta apart it is ~delta^2 |mix|^2 while the error is ~delta |mix|^2, so a mixed vector
     passes once delta^2 < rtol lambda. That happens only in the antisymmetric family near
-    nu = 4 at small twist (Euler loads 4 and nu; found 2026-12-04: 15 of 400 random family
+    nu = 4 at small twist (Euler loads 4 and nu; found 2026-12-04: 15 of 800 random family
     loads at n = 80, errors up to 2.0e-8 against the 40-digit family root, all with nu within
     2e-7 of 4 and |Omega(L)| < 3e-7; the other 785 agreed to <= 1e-11). There the
     symmetric family (p* ~ 1) is far lower, so :func:`spectral_rod.critical_load` stops the
