@@ -324,13 +324,14 @@ def lowest_eigenpair(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np
 
     The estimate assumes the eigenvalue is isolated: for two of the family's eigenvalues a gap
     delta apart it is ~delta^2 |mix|^2 while the error is ~delta |mix|^2, so a mixed vector
-    passes once delta^2 < rtol lambda. That happens only in the antisymmetric family near
-    nu = 4 at small twist (Euler loads 4 and nu; found 2026-12-04: 15 of 800 random family
+    passes once delta^2 < rtol lambda. Seen only in the antisymmetric family near nu = 4 at
+    small twist (Euler loads 4 and nu; found 2026-12-04: 15 of 800 random family
     loads at n = 80, errors up to 2.0e-8 against the 40-digit family root, all with nu within
     2e-7 of 4 and |Omega(L)| < 3e-7; the other 785 agreed to <= 1e-11). There the
     symmetric family (p* ~ 1) is far lower, so :func:`spectral_rod.critical_load` stops the
-    antisymmetric iteration at "above" and is unaffected; one family alone is solved by
-    :func:`lowest_gap` and :data:`ISOLATION_GAP`.
+    antisymmetric iteration at "above" and is unaffected; a family on its own
+    (:func:`.collocation.collocation_family_load`) is first checked by :func:`lowest_gap`
+    against :data:`ISOLATION_GAP`.
 
     The right and left solves are separate calls. Stacking them in one (2, points, k) array,
     with [S^{-1}, S^{-T}] stored (half the numpy calls), was measured on 2026-12-02 against this
