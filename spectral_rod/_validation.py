@@ -14,12 +14,14 @@ def real_array(value: ArrayLike, name: str) -> NDArray[np.float64]:
     if isinstance(value, (str, bytes)) or value is None:
         raise TypeError(f"{name} must be a real number or an array of real numbers, "
                         f"got {type(value).__name__}")
+    if isinstance(value, np.ma.MaskedArray) and np.ma.is_masked(value):
+        raise TypeError(f"{name}: masked arrays are not supported (the mask would be ignored); "
+                        f"pass the unmasked entries only")
     try:
         arr = np.asarray(value)
     except Exception as exc:  # pragma: no cover - numpy raises many things here
         raise TypeError(f"{name} must be a real number or array, got {value!r}") from exc
-    if arr.dtype == object or np.issubdtype(arr.dtype, np.bool_) \
-            or not np.issubdtype(arr.dtype, np.number):
+    if arr.dtype == object or arr.dtype.kind not in "iufc":  # bool, str, datetime, timedelta
         raise TypeError(f"{name} must be a real number or an array of real numbers, "
                         f"got dtype {arr.dtype}")
     if np.iscomplexobj(arr):

@@ -129,10 +129,12 @@ def solve_points(tw: NDArray[np.float64], nv: NDArray[np.float64], methods: NDAr
 
 def apply_bounds(res: PointResults, nv: NDArray[np.float64]) -> None:
     """Project p* onto its rigorous bounds [1, (1 + nu)/2] and cap the error estimate by the
-    bounds' width (in place): the truth lies in the bounds, so neither can make p* worse."""
+    bounds' width (in place): the truth lies in the bounds, so neither can make p* worse.
+    The width is widened by eps, the rounding of (1 + nu)/2 (at nu = 1 + 2^-52 it rounds to 1,
+    a width of 0, while p* - 1 = 1.1e-16)."""
     lo, hi = 1.0, (1.0 + nv) / 2.0
     res.p_star[:] = np.clip(res.p_star, lo, hi)
-    res.error_estimate[:] = np.minimum(res.error_estimate, (hi - lo) / lo)
+    res.error_estimate[:] = np.minimum(res.error_estimate, (hi - lo) / lo + _EPS)
 
 
 def warn_unconverged(where: str, converged: NDArray[np.bool_], res: PointResults,

@@ -88,6 +88,12 @@ __all__ = ["INCREMENT_MAX_TWIST", "critical_load_increment", "galerkin_increment
 INCREMENT_MAX_TWIST = 1.0e3
 #: Above this gain p* - 1 is taken from the double-precision characteristic equation.
 DIRECT_THRESHOLD = 1.0e-3
+#: Below this |Omega(L)| the increment is solved at it and scaled by (Omega / QUADRATIC_TWIST)^2:
+#: p* - 1 is even and analytic in Omega, c(nu) Omega^2 (1 + O(nu^2 Omega^2)), so the scaling is
+#: exact to ~1e-192, whereas the moments' products underflow from |Omega| ~ 1e-142 on (measured
+#: 2026-12-04, nu - 1 = 1e-14: 8.8e-8 relative at 1e-144, -3.7e-4 at 1e-146, 0.0 at 1e-148;
+#: nu = 101 at 1e-160: -1.8e-320, i.e. a negative p* - 1).
+QUADRATIC_TWIST = 1.0e-100
 _MAX_NEWTON = 60
 #: Up to this nu - 1 the complement is solved by a fixed-point iteration (see
 #: :func:`_newton_fixed_point`; contraction <= 1.3 (nu - 1)), beyond it by Cholesky.
@@ -238,6 +244,9 @@ def galerkin_increments(twist: NDArray[np.float64], nu: NDArray[np.float64]
     (['3.182881e-08', '4.995668e-04'], ['symmetric', 'symmetric'], [56, 72])
     """
     om, e = np.abs(twist), nu - 1.0
+    tiny = (om > 0) & (om < QUADRATIC_TWIST)  # solved at QUADRATIC_TWIST, scaled at the end
+    scale = np.where(tiny, (om / QUADRATIC_TWIST) ** 2, 1.0)
+    om = np.where(tiny, QUADRATIC_TWIST, om)
     d = np.zeros(om.size)
     fam = np.full(om.size, "symmetric", dtype=FAMILY_DTYPE)
     sizes = BUCKET * np.ceil((np.ceil(2 * om / np.pi) + 48) / BUCKET).astype(int)  # bucket()
@@ -250,7 +259,7 @@ def galerkin_increments(twist: NDArray[np.float64], nu: NDArray[np.float64]
         for i in range(0, sel.size, per):
             part = sel[i:i + per]
             d[part], fam[part] = _bucket_increments(om[part], e[part], n)
-    return d, fam, sizes
+    return d * scale, fam, sizes
 
 
 def _bucket_increments(om: NDArray[np.float64], e: NDArray[np.float64], n: int

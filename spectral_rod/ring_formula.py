@@ -79,15 +79,16 @@ def _crit2(N, nu: float, e_ratio: float):
 
 
 def crit2(N: ArrayLike, nu: object, e_ratio: object = 1.0):
-    """Eq. ``crit2``, q_cr R^3/(E1 I1), as a function of a *real* N >= 0 (an array for smooth
-    curves; the ring closes only for integer N, see :func:`ring_formula_load`).
+    """Eq. ``crit2``, q_cr R^3/(E1 I1), as a function of a *real* N in [0, MAX_TWIST] (an array
+    for smooth curves; the ring closes only for integer N, see :func:`ring_formula_load`).
 
     >>> crit2([0.0, 1.5], 1.5).tolist()
     [3.5, 2.9375]
     """
     n = real_array(N, "N")
-    if np.any(n < 0):
-        raise ValueError(f"N must be >= 0, got min N = {np.min(n):g}")
+    if np.any(n < 0) or np.any(n > MAX_TWIST):
+        raise ValueError(f"N (turns of the cross-section) must be in [0, {MAX_TWIST}], "
+                         f"got min {np.min(n):g}, max {np.max(n):g}")
     out = _crit2(n, check_scalar_nu(nu), check_e_ratio(e_ratio))
     return float(out) if out.ndim == 0 else out
 

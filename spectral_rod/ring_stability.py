@@ -63,6 +63,7 @@ A3 = e (1 + nu) in these units.
 from __future__ import annotations
 
 import math
+import warnings
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from typing import TypeVar
@@ -81,7 +82,7 @@ from spectral_rod._validation import (
     check_real,
     real_array,
 )
-from spectral_rod.errors import RingConvergenceError
+from spectral_rod.errors import ConvergenceWarning, RingConvergenceError
 from spectral_rod.ring_formula import check_e_ratio, check_scalar_nu, check_twist_count
 
 RING_LOADS = ("hydrostatic", "axis")
@@ -459,12 +460,14 @@ def ring_buckling(N: object, nu: object, *, e_ratio: object = 1.0, load: object 
 
     Truncations are refined (frequencies 0..M with M = 2N + 12, then in steps of max(4, 2N), so
     every family gains members) until two successive critical loads agree to ``tol``
-    relatively.  With ``max_frequency`` given, only that truncation is solved (``converged`` is
-    then False, ``rel_change`` nan).  ``subspace`` restricts the unknowns: "all" (default),
+    relatively.  With ``max_frequency`` given, only that truncation is solved: ``converged`` is
+    then False, ``rel_change`` nan, and a :class:`spectral_rod.ConvergenceWarning` says that the
+    load is unchecked (an upper bound of the converged one).  ``subspace`` restricts the unknowns: "all" (default),
     "in-plane" (y_phi only) or "out-of-plane" (y_z, alpha only); for N = 0 or nu = 1 the
     problem decouples and these give the exact in-plane and out-of-plane loads, otherwise they
     are upper bounds (Rayleigh-Ritz on a subspace).
-    Raises :class:`RingConvergenceError` if not converged and ``raise_on_failure``.
+    Raises :class:`RingConvergenceError` if the refinement did not converge and
+    ``raise_on_failure`` (a fixed ``max_frequency`` warns instead: nothing was refined).
     """
     n_turns = check_twist_count(N, maximum=MAX_SOLVER_TWIST)
     v = check_scalar_nu(nu)
@@ -488,6 +491,10 @@ def ring_buckling(N: object, nu: object, *, e_ratio: object = 1.0, load: object 
         raise RingConvergenceError(
             f"ring critical load not converged for N={n_turns}, nu={v}, e={e}, load={ld}: "
             f"relative change {rel:.2e} > tol {tol:.1e} at max_frequency {history[-1][0]}")
+    if max_frequency is not None:
+        warnings.warn(f"ring_buckling at the fixed truncation max_frequency={max_frequency}: "
+                      f"convergence not checked (converged=False; the load is a Rayleigh-Ritz "
+                      f"upper bound of the converged one)", ConvergenceWarning, stacklevel=2)
     frac = sol.in_plane_fraction()
     kind = ("in-plane" if frac > 1 - KIND_TOL else "out-of-plane" if frac < KIND_TOL
             else "coupled")

@@ -29,7 +29,11 @@ from numpy.typing import ArrayLike, NDArray
 
 from spectral_rod._validation import broadcast_points, check_nu, check_twist, real_array
 
-__all__ = ["beta_difference", "characteristic_roots", "critical_wavenumbers"]
+__all__ = ["P_STAR_MAX", "beta_difference", "characteristic_roots", "critical_wavenumbers"]
+
+#: The largest load accepted (as :func:`spectral_rod.characteristic_determinant`'s): far above
+#: any critical load (p* <= nu <= 1e4) and far below where (lambda - mu)^2 overflows (p ~ 1e153).
+P_STAR_MAX = 1.0e8
 
 
 def characteristic_roots(lam: Any, mu: Any, twist_angle: Any,
@@ -47,8 +51,9 @@ def characteristic_roots(lam: Any, mu: Any, twist_angle: Any,
 def _loads(p_star: ArrayLike, twist_angle: ArrayLike, nu: ArrayLike
            ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
     p = real_array(p_star, "p_star")
-    if np.any(p <= 0):
-        raise ValueError(f"p_star must be positive, got min {np.min(p):g}")
+    if np.any(p <= 0) or np.any(p > P_STAR_MAX):
+        raise ValueError(f"p_star must be in (0, {P_STAR_MAX:g}], got min {np.min(p):g}, "
+                         f"max {np.max(p):g}")
     om, nv = np.abs(check_twist(twist_angle)), check_nu(nu)
     broadcast_points(p_star=p, twist_angle=om, nu=nv)
     lam = np.pi**2 * p

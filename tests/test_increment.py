@@ -133,3 +133,19 @@ def test_relative_accuracy_of_a_stack(twist):
     got = critical_load_increment(np.full(nu.size, twist), nu)
     ref = np.repeat([ref_increment(twist, 1 + e) for e in small], 2)
     assert np.max(np.abs(got / ref - 1)) <= 1e-12
+
+
+@pytest.mark.parametrize(("twist", "nu"), [(1e-144, 1 + 1e-14), (1e-146, 1 + 1e-14),
+                                           (1e-148, 1 + 1e-14), (1e-153, 1e4), (1e-159, 1e4),
+                                           (1e-160, 101.0), (1e-101, 101.0)])
+def test_increment_at_vanishing_twist_is_quadratic(twist, nu):
+    """Far below any validated twist p* - 1 = c(nu) Omega^2 (p* is even and analytic in Omega;
+    the quartic term is ~1e-12 relative at 1e-6): the reference is c from the mpmath
+    characteristic equation at Omega(L) = 1e-6. Down to the subnormal range (where the spacing
+    of doubles, 4.9e-324, limits any answer) the increment keeps it, and it is never negative
+    (before 2026-12-04: -3.7e-4 relative at 1e-146, 0.0 at 1e-148, -1.7e-316 at 1e-159)."""
+    c = ref_increment(1e-6, nu, dps=80) / 1e-12
+    ref = c * twist * twist
+    got = critical_load_increment(twist, nu)
+    assert got >= 0.0
+    assert abs(got - ref) <= 1e-9 * ref + 8 * 5e-324, (got, ref)

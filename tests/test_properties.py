@@ -47,7 +47,7 @@ def test_even_in_twist(om, nu):
 @SETTINGS
 @given(twists)
 def test_isotropic_section_is_euler(om):
-    # accuracy target 1e-12 (issue 6); eps (8 + Omega/2) on the characteristic route
+    # accuracy target 1e-12 (issue 6); eps (8 + |Omega|) on the characteristic route
     tol = max(1e-12, double_error_estimate(np.array(om)))
     assert abs(_quiet(critical_load, om, 1.0) - 1.0) <= tol
 

@@ -13,6 +13,7 @@ import pytest
 import sympy as sp
 
 import spectral_rod.derivations.ring_linearisation as ring_linearisation
+from spectral_rod.errors import ConvergenceWarning
 from spectral_rod.ring_closed_forms import (
     homogenised_limit,
     in_plane_untwisted,
@@ -197,6 +198,7 @@ def test_small_asymmetry_perturbation_theory(N: int, order: int) -> None:
     assert all(abs(r - 2**order) < 0.15 * 2**order for r in ratios)
 
 
+@pytest.mark.filterwarnings("ignore:ring_buckling at the fixed truncation")
 @pytest.mark.parametrize(("N", "nu"), [(1, 4.0), (2, 2.0), (3, 4.0), (6, 1.5)])
 def test_spectral_convergence(N: int, nu: float) -> None:
     ref = ring_buckling(N, nu, max_frequency=20 * N + 40).load
@@ -339,3 +341,14 @@ def test_destabilisation_threshold_checks_twists_against_the_chosen_method() -> 
     with pytest.raises(ValueError, match=rf"\[0, {MAX_TWIST}\]"):  # before any solve
         destabilisation_threshold(1.0, "hydrostatic", [1.5, 2.0], twists=[0, MAX_TWIST + 1],
                                   method="munder")
+
+
+def test_fixed_truncation_warns_and_is_flagged() -> None:
+    """A fixed max_frequency refines nothing: the load comes with converged=False and a
+    ConvergenceWarning, and it is an upper bound of the converged load (M = 4 is 1.8 % high at
+    N = 3, nu = 1.5)."""
+    with pytest.warns(ConvergenceWarning, match="max_frequency=4"):
+        r = ring_buckling(3, 1.5, max_frequency=4)
+    ref = ring_buckling(3, 1.5)
+    assert not r.converged and math.isnan(r.rel_change) and ref.converged
+    assert r.load > ref.load * (1 + 1e-3)
