@@ -462,8 +462,9 @@ def ring_buckling(N: object, nu: object, *, e_ratio: object = 1.0, load: object 
     every family gains members) until two successive critical loads agree to ``tol``
     relatively.  With ``max_frequency`` given, only that truncation is solved: ``converged`` is
     then False, ``rel_change`` nan, and a :class:`spectral_rod.ConvergenceWarning` says that the
-    load is unchecked (an upper bound of the converged one).  ``subspace`` restricts the unknowns: "all" (default),
-    "in-plane" (y_phi only) or "out-of-plane" (y_z, alpha only); for N = 0 or nu = 1 the
+    load is unchecked (an upper bound of the converged one).  ``subspace`` restricts the
+    unknowns: "all" (default), "in-plane" (y_phi only) or "out-of-plane" (y_z, alpha only);
+    for N = 0 or nu = 1 the
     problem decouples and these give the exact in-plane and out-of-plane loads, otherwise they
     are upper bounds (Rayleigh-Ritz on a subspace).
     Raises :class:`RingConvergenceError` if the refinement did not converge and
