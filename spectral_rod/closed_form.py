@@ -176,7 +176,20 @@ def mode_fields(root: CharacteristicRoot, twist_angle: float, nu: float, s: Arra
     if twist_angle == 0.0:
         raise ValueError("twist_angle must be non-zero for the closed-form mode (at zero twist "
                          "the mode is Euler's planar sin(pi s))")
+    _check_root_is_of(root, twist_angle, nu)
     return fields_at_load(root.family, root.p_star, twist_angle, nu, s, dps)
+
+
+def _check_root_is_of(root: CharacteristicRoot, twist_angle: float, nu: float) -> None:
+    """ValueError unless ``root`` was computed at (twist_angle, nu): its X_+ (stored with it)
+    recomputed from root.p_star here (a sum of positive terms: no cancellation) must agree.
+    Before 2026-12-04 a root of another point was accepted and gave a mode that is not one
+    (x(1) = 0.017 instead of 0 for the root of (5, 1.5) used at (6, 1.5))."""
+    lam = math.pi**2 * float(root.p_star)
+    x_plus = characteristic_roots(lam, lam / nu, twist_angle, sqrt=math.sqrt)[1]
+    if abs(x_plus - float(root.x_plus)) > 1e-9 * x_plus:
+        raise ValueError(f"root (p* = {float(root.p_star):.12g}) is not a root at twist_angle="
+                         f"{twist_angle!r}, nu={nu!r}: pass the twist and nu it was computed at")
 
 
 def characteristic_mode(root: CharacteristicRoot, twist_angle: float, nu: float,

@@ -458,6 +458,10 @@ def test_exempt_calls():
             sr.characteristic_mode(bad, 5.0, 1.5)
     with pytest.raises(ValueError, match="points"):
         sr.characteristic_mode(root, 5.0, 1.5, points=1)
+    for twist, nu in ((6.0, 1.5), (5.0, 3.0)):  # a root of another point: accepted before
+        with pytest.raises(ValueError, match="not a root at"):
+            sr.characteristic_mode(root, twist, nu)
+    assert finite(sr.characteristic_mode(root, -5.0, 1.5, points=11).x1)  # p* is even in it
     with pytest.raises(TypeError, match="crossing"):
         sr.crossing_wavenumbers(root, 1.5)
     with pytest.raises(TypeError, match="points"):
@@ -468,4 +472,6 @@ def test_exempt_calls():
         sr.ring_formulation_row(munder, ring)
     with pytest.raises(ValueError, match="different rings"):
         sr.ring_formulation_row(sr.ring_buckling(2, 1.5), munder)
+    with pytest.raises(ValueError, match="load models"):  # accepted before 2026-12-04
+        sr.ring_formulation_row(sr.ring_buckling(1, 1.5, load="axis"), munder)
     assert sr.ring_formulation_row(ring, munder)["rel_diff"] < 1e-9

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 import spectral_rod.ring_munder as rm
-from spectral_rod import RingConvergenceError
+from spectral_rod import RingConvergenceError, ring_buckling
 from spectral_rod.ring_closed_forms import in_plane_untwisted, out_of_plane_untwisted
 from spectral_rod.ring_munder import (
     AGREEMENT_CASES,
@@ -345,3 +345,18 @@ def test_munder_mode_kind_agrees_near_circular_sections(N, nu, e, load) -> None:
     got = rm.munder_buckling(N, nu, e_ratio=e, load=load)
     assert ref.kind == "out-of-plane"
     assert got.kind == ref.kind
+
+
+@pytest.mark.parametrize(("nu", "e", "load"), [(1.0, 1e-5, "axis"), (1.0, 1e4, "hydrostatic"),
+                                               (100.0, 1e-4, "hydrostatic"), (1e4, 1e-6, "axis")])
+def test_mode_kind_where_the_shifted_pencil_is_exactly_singular(nu: float, e: float,
+                                                                load: str) -> None:
+    """Untwisted rings whose shifted pencil J0 + q (1 + 1e-13) J1 has an exactly zero pivot
+    (the offset is below its round-off): the critical mode is out-of-plane at frequency 2 (the
+    Timoshenko-Gere load), as the second variation says. Before 2026-12-04 the inverse
+    iteration's inf/nan left no unknown in the mode and the kind came out "in-plane" with no
+    frequencies (22 of 96 such grid rings)."""
+    mb = munder_buckling(0, nu, e_ratio=e, load=load)
+    ref = ring_buckling(0, nu, e_ratio=e, load=load)
+    assert mb.kind == ref.kind == "out-of-plane" and mb.frequencies == (2,)
+    assert abs(mb.load / ref.load - 1) <= 1e-8
