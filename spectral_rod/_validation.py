@@ -3,6 +3,7 @@ that names the argument and its allowed range."""
 
 from __future__ import annotations
 
+import math
 import numbers
 
 import numpy as np
@@ -84,7 +85,10 @@ def check_tol(tol: object, name: str = "tol") -> float:
     """A relative tolerance in TOL_RANGE = [1e-14, 1e-2]."""
     if isinstance(tol, bool) or not isinstance(tol, numbers.Real):
         raise TypeError(f"{name} must be a real number, got {type(tol).__name__}")
-    tol = float(tol)
+    try:
+        tol = float(tol)
+    except OverflowError:  # an int beyond the float range
+        tol = math.inf
     if not (TOL_RANGE[0] <= tol <= TOL_RANGE[1]):
         raise ValueError(f"{name} must be in [{TOL_RANGE[0]:g}, {TOL_RANGE[1]:g}], "
                          f"got {tol!r}")
@@ -118,7 +122,11 @@ def check_real(value: object, name: str, lo: float = -np.inf, hi: float = np.inf
                                                                           np.ndarray))
                 else type(value).__name__)
         raise TypeError(f"{name} must be a scalar real number in {rng}, got {what}")
-    v = float(value)
+    try:
+        v = float(value)
+    except OverflowError:  # an int beyond the float range
+        raise ValueError(f"{name} must be in {rng}, got an integer of "
+                         f"{len(str(abs(value)))} digits") from None
     if not np.isfinite(v):
         raise ValueError(f"{name} must be finite, in {rng}, got {v!r}")
     if v < lo or v > hi or (lo_open and v == lo) or (hi_open and v == hi):

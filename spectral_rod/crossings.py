@@ -51,7 +51,7 @@ class FamilyCrossing:
     dp/dOmega of each family's root curve; left/right: the family that is critical just below /
     above the crossing; kind: 'corner maximum' when p* rises into the crossing and falls out of it
     (p* = min of two smooth branches has a concave corner there, not a smooth maximum), else
-    'corner' (a kink on a monotone stretch).
+    'corner' (a kink on a monotone stretch); nu: the nu it was computed at.
     """
 
     twist: mp.mpf
@@ -60,6 +60,7 @@ class FamilyCrossing:
     left: str
     right: str
     kind: str
+    nu: float | None = None
 
 
 def _check_on_lowest_branches(p_c: mp.mpf, om_c: mp.mpf, nu: float, dps: int,
@@ -98,7 +99,9 @@ def family_crossing(twist_guess: float, nu: float, *, p_guess: float | None = No
 
         try:
             p_c, om_c = mp.findroot(system, (mp.mpf(p_guess), mp.mpf(twist_guess)))
-        except ValueError as exc:  # mpmath: "Could not find root within given tolerance"
+        except (ValueError, ZeroDivisionError) as exc:
+            # mpmath: "Could not find root within given tolerance", or a singular Jacobian
+            # ("matrix is numerically singular", e.g. at nu = 1, where p* = 1 at every twist)
             raise RootNotFoundError(f"no family crossing found from twist_guess={twist_guess}, "
                                     f"nu={nu} ({exc})") from None
         _check_on_lowest_branches(p_c, om_c, nu, dps, twist_guess)
@@ -106,7 +109,7 @@ def family_crossing(twist_guess: float, nu: float, *, p_guess: float | None = No
         left = max(slopes, key=lambda f: slopes[f])   # steeper rise => lower just to the left
         right = min(slopes, key=lambda f: slopes[f])
         kind = "corner maximum" if slopes[left] > 0 > slopes[right] else "corner"
-        return FamilyCrossing(om_c, p_c, slopes, left, right, kind)
+        return FamilyCrossing(om_c, p_c, slopes, left, right, kind, nu)
 
 
 @dataclass(frozen=True)
@@ -222,10 +225,13 @@ def _mp_difference(p: mp.mpf, om: mp.mpf, nu: mp.mpf) -> mp.mpf:
 def crossing_wavenumbers(crossing: FamilyCrossing, nu: float, dps: int = 30
                          ) -> CrossingWavenumbers:
     """beta_1 L, beta_2 L and beta_2 - beta_1 at a crossing, with the slopes of beta_2 - beta_1
-    along both branches (chain rule with :attr:`FamilyCrossing.slopes`)."""
+    along both branches (chain rule with :attr:`FamilyCrossing.slopes`). ``nu`` must be the
+    crossing's own (ValueError otherwise)."""
     if not isinstance(crossing, FamilyCrossing):
         raise TypeError(f"crossing must be a FamilyCrossing, got {type(crossing).__name__}")
     nu, dps = scalar_nu(nu), check_int(dps, "dps", *DPS_RANGE)
+    if crossing.nu is not None and nu != crossing.nu:  # else numbers of a point that is none
+        raise ValueError(f"nu={nu!r} is not the nu of the crossing ({crossing.nu!r})")
     with mp.workdps(dps):
         nuv, p, om = mp.mpf(nu), crossing.p_star, crossing.twist
         lam = mp.pi**2 * p

@@ -145,6 +145,8 @@ def _read_table(path: Path) -> pd.DataFrame:
     if not path.exists():
         raise FileNotFoundError(f"reference data file {path} is missing; regenerate it with "
                                 f"`python reference_data/extract_figure1.py`")
+    if path.is_dir():
+        raise ReferenceDataError(f"{path} is a directory, not the CSV file of Figure 1")
     try:
         df = pd.read_csv(path, dtype=str, keep_default_na=False)
     except pd.errors.EmptyDataError as exc:
@@ -237,6 +239,8 @@ def load_figure1(path: str | Path | None = None) -> pd.DataFrame:
     """
     if path is not None and not isinstance(path, (str, os.PathLike)):
         raise TypeError(f"path must be None, a str or a path, got {type(path).__name__}")
+    if isinstance(path, str) and not path.strip():
+        raise ValueError("path must name a CSV file (or be None for the packaged one), got ''")
     path = figure1_path() if path is None else Path(path)
     num = _numeric(_read_table(path), path)
     _check_consistency(num, path)

@@ -28,6 +28,10 @@ def _curve(name_a: str, a: ArrayLike, name_b: str, b: ArrayLike, minimum: int = 
     if x.ndim != 1 or y.shape != x.shape or x.size < minimum:
         raise ValueError(f"{name_a} and {name_b} must be 1-D of equal length >= {minimum}, got "
                          f"shapes {x.shape} and {y.shape}")
+    if name_a == "grid" and np.any(np.diff(x) <= 0):  # the measures read order as grid order
+        i = int(np.flatnonzero(np.diff(x) <= 0)[0])
+        raise ValueError(f"grid must be strictly increasing, got grid[{i}] = {x[i]:g} >= "
+                         f"grid[{i + 1}] = {x[i + 1]:g}")
     return x, y
 
 
@@ -80,16 +84,18 @@ def observed_order(x: ArrayLike, err: ArrayLike) -> float:
     (negative for an error that decays as x grows, e.g. -2 for an O(x^-2) remainder; for a
     discretisation error against the number of intervals, minus the order of accuracy).
 
-    `x` positive and not all equal, `err` non-zero, both 1-D of the same length >= 2. The slope
-    is a fit, not a limit: it measures the order only over a range where one power dominates.
+    `x` positive and spread (max/min > 1 + 1e-8), `err` non-zero, both 1-D of the same length
+    >= 2. The slope is a fit, not a limit: it measures the order only over a range where one
+    power dominates.
 
     >>> x = np.array([10.0, 20.0, 40.0])
     >>> round(observed_order(x, 3.0 / x**2), 12)
     -2.0
     """
     a, e = _curve("x", x, "err", err, 2)
-    if np.any(a <= 0) or np.ptp(a) == 0:
-        raise ValueError(f"x must be positive and not all equal, got {a!r}")
+    # a spread of log x at round-off level leaves the slope undetermined (numpy's RankWarning)
+    if np.any(a <= 0) or np.ptp(np.log(a)) <= 1e-8:
+        raise ValueError(f"x must be positive and spread (max/min > 1 + 1e-8), got {a!r}")
     e = np.abs(e)
     if np.any(e == 0):
         raise ValueError(f"err must be non-zero (its logarithm is fitted), got {e!r}")

@@ -44,7 +44,12 @@ def check_twist_count(N: object, name: str = "N", maximum: int = MAX_TWIST) -> i
     if isinstance(N, bool) or not isinstance(N, numbers.Real):
         raise TypeError(f"{name} (number of turns of the cross-section) must be an integer in "
                         f"[0, {maximum}], got {type(N).__name__}")
-    value = float(N)
+    try:
+        value = float(N)
+    except OverflowError:  # an int beyond the float range
+        raise ValueError(f"{name} (number of turns of the cross-section) must be an integer in "
+                         f"[0, {maximum}], got an integer of {len(str(abs(N)))} digits"
+                         ) from None
     if not math.isfinite(value) or value != math.floor(value):
         raise ValueError(f"{name} (number of turns of the cross-section) must be an integer in "
                          f"[0, {maximum}] (the ring closes only for whole turns), got {N!r}")

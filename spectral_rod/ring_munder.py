@@ -770,6 +770,10 @@ def _case(c: Mapping[str, object] | tuple) -> tuple[object, object, object, obje
     if isinstance(c, Mapping):
         if "N" not in c or "nu" not in c:
             raise ValueError(f"cases: a dict case needs keys 'N' and 'nu', got {sorted(c)}")
+        unknown = sorted(set(c) - {"N", "nu", "e_ratio", "load"})
+        if unknown:  # a misspelt key would silently run the default
+            raise ValueError(f"cases: unknown key(s) {unknown}; a dict case has 'N', 'nu' and "
+                             f"optionally 'e_ratio', 'load'")
         return c["N"], c["nu"], c.get("e_ratio", 1.0), c.get("load", "hydrostatic")
     if not isinstance(c, (tuple, list)) or not 2 <= len(c) <= 4:
         raise TypeError(f"cases: each case must be (N, nu[, e_ratio[, load]]) or a dict, got "
@@ -792,6 +796,9 @@ def ring_formulation_agreement(cases: Iterable[Mapping[str, object] | tuple] = A
 
     rows = []
     tol = _check_tol(tol)
+    if isinstance(cases, (str, bytes, Mapping)) or not isinstance(cases, Iterable):
+        raise TypeError(f"cases must be an iterable of (N, nu[, e_ratio[, load]]) tuples or "
+                        f"dicts, got {type(cases).__name__}")
     for i, c in enumerate(cases):
         N, nu, e, ld = _case(c)
         try:  # validate the case before any solve; errors say which case

@@ -128,6 +128,10 @@ TOL = real(1e-14, 1e-2, 0.0, 0.5)
 METHOD_AUTO = choice("auto", invalid=NOT_STR)
 ARRAYS = Arg(st.lists(st.floats(0.0, 60.0), min_size=1, max_size=5).map(np.array),
              [([1.0, NAN], ValueError), (["a"], TypeError)])
+#: Grids of the measures: strictly increasing (an unsorted one is refused since 2026-12-04).
+GRIDS = Arg(st.lists(st.floats(0.0, 60.0), min_size=1, max_size=5, unique=True)
+            .map(lambda v: np.array(sorted(v))),
+            [([1.0, NAN], ValueError), (["a"], TypeError), ([2.0, 1.0], ValueError)])
 
 SPECS: dict[str, Spec] = {
     "critical_load": Spec(
@@ -310,24 +314,25 @@ SPECS: dict[str, Spec] = {
                           lambda r, a: 0 <= r <= 1, positional=("x1", "x2"),
                           derived={"x2": lambda a: [0.5 * v for v in a["x1"]]
                                    if isinstance(a["x1"], list) else [1.0, 2.0, 3.0]}),
-    "local_maxima": Spec(sr.local_maxima, {"grid": ARRAYS}, lambda r, a: finite(r),
+    "local_maxima": Spec(sr.local_maxima, {"grid": GRIDS}, lambda r, a: finite(r),
                          positional=("grid", "values"),
                          derived={"values": lambda a: np.sin(np.asarray(a["grid"], float))}),
-    "family_switches": Spec(sr.family_switches, {"grid": ARRAYS}, lambda r, a: finite(r),
+    "family_switches": Spec(sr.family_switches, {"grid": GRIDS}, lambda r, a: finite(r),
                             positional=("grid", "family"), derived={"family": lambda a: np.where(
                                 np.asarray(a["grid"], float) > 30, "symmetric", "anti")}),
-    "increasing_up_to": Spec(sr.increasing_up_to, {"grid": ARRAYS, "end": real(0.0, 60.0)},
+    "increasing_up_to": Spec(sr.increasing_up_to, {"grid": GRIDS, "end": real(0.0, 60.0)},
                              lambda r, a: isinstance(r, bool),
                              positional=("grid", "values", "end"),
                              derived={"values": lambda a: np.cos(np.asarray(a["grid"], float))}),
-    "settling_point": Spec(sr.settling_point, {"grid": ARRAYS,
+    "settling_point": Spec(sr.settling_point, {"grid": GRIDS,
                                                "level": real(1e-6, 10.0, 0.0, -1.0)},
                            lambda r, a: r is None or math.isfinite(r),
                            positional=("grid", "gap", "level"),
                            derived={"gap": lambda a: np.exp(-np.asarray(a["grid"], float))}),
     "observed_order": Spec(sr.observed_order,
                            {"x": Arg(st.lists(st.floats(0.1, 60.0), min_size=2, max_size=6,
-                                              unique=True).map(np.array),
+                                              unique=True).filter(lambda v: max(v) > 1.001 * min(v))
+                                     .map(np.array),
                                      [([1.0, NAN], ValueError), (["a"], TypeError),
                                       ([-1.0, 2.0], ValueError), ([2.0, 2.0], ValueError)])},
                            lambda r, a: math.isfinite(r), positional=("x", "err"),
@@ -464,6 +469,12 @@ def test_exempt_calls():
     assert finite(sr.characteristic_mode(root, -5.0, 1.5, points=11).x1)  # p* is even in it
     with pytest.raises(TypeError, match="crossing"):
         sr.crossing_wavenumbers(root, 1.5)
+    crossing = sr.family_crossing(2 * math.pi, 1.5)  # before 2026-12-04: any nu was accepted
+    with pytest.raises(ValueError, match="not the nu of the crossing"):
+        sr.crossing_wavenumbers(crossing, 3.0)
+    assert abs(sr.crossing_wavenumbers(crossing, 1.5).resonance_gap) < 1e-12
+    with pytest.raises(sr.RootNotFoundError, match=r"nu=1\.0"):  # a ZeroDivisionError before
+        sr.family_crossing(2 * math.pi, 1.0)
     with pytest.raises(TypeError, match="points"):
         sr.analyse_figure1("table")
     assert finite(sr.characteristic_mode(root, 5.0, 1.5, points=11).x1)

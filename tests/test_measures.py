@@ -27,7 +27,8 @@ def test_observed_order_is_the_least_squares_slope_of_the_logs() -> None:
 @pytest.mark.parametrize(("x", "err", "match"), [
     ([1.0, 2.0], [1.0, 0.0], "err must be non-zero"),
     ([0.0, 2.0], [1.0, 0.5], "x must be positive"),
-    ([2.0, 2.0], [1.0, 0.5], "not all equal"),
+    ([2.0, 2.0], [1.0, 0.5], "spread"),
+    ([10.0, 10.0 * (1 + 1e-15)], [1.0, 2.0], "spread"),  # a RankWarning and slope 0.075 before
     ([1.0], [1.0], "length >= 2"),
     ([1.0, 2.0, 3.0], [1.0, 0.5], "equal length"),
 ])

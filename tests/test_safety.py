@@ -109,6 +109,22 @@ def test_increment_at_large_twist_is_bounded(monkeypatch):
     (lambda: sr.ring_buckling(2, 1.5, max_frequency=np.float64(30.0)), "max_frequency"),
     (lambda: sr.critical_load([1.0, 2.0], [1.1, 1.2, 1.3]), "twist_angle, nu"),
     (lambda: sr.critical_wavenumbers(1.1, [1.0, 2.0], [1.5, 1.6, 1.7]), "p_star"),
+    # found by the hunt of 2026-12-04: each gave an internal error, nan/inf or a silent answer
+    (lambda: sr.critical_wavenumbers(1e160, 5.0, 1.5), "p_star"),
+    (lambda: sr.beta_difference(1e160, 5.0, 1.5), "p_star"),
+    (lambda: sr.crit2(1e200, 1.5), "N"),
+    (lambda: sr.ring_formula_load(10**400, 2.0), "N"),
+    (lambda: sr.ring_critical_load(1, 2.0, tol=10**400), "tol"),
+    (lambda: sr.critical_load(5.0, 1.5, tol=10**400), "tol"),
+    (lambda: sr.out_of_plane_untwisted(10**400, 1.0), "A"),
+    (lambda: sr.critical_load(np.timedelta64(5), 1.5), "twist_angle"),
+    (lambda: sr.critical_load(np.ma.masked_array([1.0, 2.0], [False, True]), 1.5),
+     "twist_angle"),
+    (lambda: sr.load_figure1(""), "path"),
+    (lambda: sr.ring_formulation_agreement(None), "cases"),
+    (lambda: sr.ring_formulation_agreement([dict(N=1, nu=1.3, e_raito=2.0)]), "e_raito"),
+    (lambda: sr.increasing_up_to([2.0, 1.0, 0.0], [1.0, 2.0, 3.0], 1.0), "grid"),
+    (lambda: sr.settling_point([0.0, 2.0, 1.0], [1.0, 2.0, 3.0], 1.0), "grid"),
 ])
 def test_errors_name_the_argument(call, name):
     with pytest.raises((ValueError, TypeError), match=name):
@@ -244,3 +260,8 @@ def test_a_non_finite_closed_form_mode_raises(monkeypatch):
     monkeypatch.setattr(cf, "mode_fields", lambda *a, **k: (np.zeros(size), np.zeros(size)))
     with pytest.raises(sr.ConvergenceError, match="no finite nonzero mode"):
         cf.characteristic_mode(root, 5.0, 1.5, points=2)
+
+
+def test_a_directory_is_not_the_figure_data(tmp_path):
+    with pytest.raises(sr.ReferenceDataError, match="is a directory"):  # IsADirectoryError before
+        sr.load_figure1(tmp_path)
