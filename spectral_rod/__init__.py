@@ -125,6 +125,7 @@ _EXPORTS = {
     "non_planarity": "measures", "local_maxima": "measures", "family_switches": "measures",
     "increasing_up_to": "measures", "settling_point": "measures", "observed_order": "measures",
     "ring_buckling": "ring_stability", "ring_critical_load": "ring_stability",
+    "ring_roundoff_floor": "ring_stability:roundoff_floor",
 }
 
 __all__ = sorted(_EXPORTS)

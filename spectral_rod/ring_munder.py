@@ -97,7 +97,14 @@ from numpy.typing import NDArray
 from spectral_rod._validation import check_bool, check_choice, check_int, check_real
 from spectral_rod.errors import ConvergenceWarning, RingConvergenceError
 from spectral_rod.ring_formula import check_e_ratio, check_scalar_nu, check_twist_count
-from spectral_rod.ring_stability import RingBuckling, check_load, refine, stiffnesses
+from spectral_rod.ring_stability import (
+    RingBuckling,
+    check_load,
+    check_reachable,
+    refine,
+    roundoff_floor,
+    stiffnesses,
+)
 
 #: Residual systems: the paper's Eq. ``Munder`` or the Kirchhoff vector balances.
 EQUATIONS = ("munder", "kirchhoff")
@@ -645,7 +652,7 @@ class MunderBuckling:
     max_frequency   final truncation M (frequencies 0..M per field)
     n_unknowns      size of the full linear system at M
     rel_change      |q(M) - q(previous M)| / q
-    converged       rel_change <= tol
+    converged       rel_change <= tol and ring_stability.roundoff_floor(e_ratio) <= tol
     history         [(M, q)] of the truncations tried
     max_imag        largest |Im q|/|q| of any finite eigenvalue at the final M
     """
@@ -701,6 +708,8 @@ def munder_buckling(N: object, nu: object, *, e_ratio: object = 1.0,
     tol = _check_tol(tol)
     check_choice(equations, "equations", EQUATIONS)
     raise_on_failure = check_bool(raise_on_failure, "raise_on_failure")
+    if raise_on_failure:
+        check_reachable(tol, e)
 
     def solve(M: int) -> tuple[tuple[BlockLoad, float], float]:
         bl, worst = block_loads(n_turns, v, e, ld, M, equations)
@@ -709,11 +718,13 @@ def munder_buckling(N: object, nu: object, *, e_ratio: object = 1.0,
 
     (best, worst), history, rel = refine(_truncations(n_turns), solve, tol)
     M = history[-1][0]
-    converged = bool(rel <= tol)
+    floor = roundoff_floor(e)  # successive truncations do not see it (ring_stability)
+    converged = bool(rel <= tol and floor <= tol)
     if not converged and raise_on_failure:
         raise RingConvergenceError(
             f"Munder ring load not converged for N={n_turns}, nu={v}, e={e}, load={ld}: "
-            f"relative change {rel:.2e} > tol {tol:.1e} at max_frequency {M}")
+            f"relative change {rel:.2e}, round-off floor {floor:.1e} (tol {tol:.1e}) at "
+            f"max_frequency {M}")
     if worst > REAL_TOL:
         warnings.warn(f"non-real eigenvalues (|Im q|/|q| up to {worst:.1e}) for N={n_turns}, "
                       f"nu={v}, e={e}, load={ld}: unexpected for conservative loads",

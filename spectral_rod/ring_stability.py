@@ -385,7 +385,7 @@ class RingBuckling:
     max_frequency      Fourier truncation (frequencies 0..max_frequency of each field)
     n_modes            real Fourier coefficients per field (2 max_frequency + 1)
     rel_change         |q(max_frequency) - q(previous truncation)| / q, the convergence estimate
-    converged          rel_change <= tol
+    converged          rel_change <= tol and :func:`roundoff_floor` (e_ratio) <= tol
     history            [(max_frequency, q)] of the truncations tried
     min_load_over_q    smallest 1/q over every family (>= 0: no eigenvalue at q <= 0)
     """
@@ -414,6 +414,37 @@ class RingBuckling:
         s = np.linspace(0.0, 2.0 * np.pi, 256, endpoint=False) if s is None else np.asarray(s)
         Q = _quantities(_Basis(self.basis_labels), s)
         return {"s": s, **{k: Q[k] @ self.coefficients for k in ("y_r", "y_phi", "y_z", "alpha")}}
+
+
+#: Round-off floor of a ring load, relative: ROUNDOFF eps max(e, 1/e) (empirical). An extreme
+#: torsional stiffness makes the pencils ill-conditioned in a way successive truncations do not
+#: see (their change stays ~1e-15): against the closed forms at nu = 1 (N = 0, 2, 5, both
+#: formulations, e = 1e-6..1e6; 2026-12-04) the error reached 2.0 eps max(e, 1/e) here and 2.5
+#: in :mod:`spectral_rod.ring_munder` (2.75e-10 and 5.7e-10 at e = 1e6, 4.3e-11 and 1.1e-10 at
+#: 1e-6), up to 7 eps at e = 1; a tol below the floor is not met.
+ROUNDOFF = 8.0
+
+
+def roundoff_floor(e_ratio: object) -> float:
+    """ROUNDOFF eps max(e, 1/e): the relative accuracy a ring load can reach at e = E2/E1
+    (both formulations; a ``tol`` below it is reported not converged).
+
+    >>> f"{roundoff_floor(1e6):.1e}"
+    '1.8e-09'
+    """
+    e = check_e_ratio(e_ratio)
+    return ROUNDOFF * float(np.finfo(float).eps) * max(e, 1.0 / e)
+
+
+def check_reachable(tol: float, e_ratio: float) -> None:
+    """RingConvergenceError before any solve if ``tol`` is below :func:`roundoff_floor`: the
+    refinement would end unconverged anyway, after its most expensive truncations (minutes for
+    the Munder form at N = 20, nu = 1e4, e = 1e-6)."""
+    floor = roundoff_floor(e_ratio)
+    if tol < floor:
+        raise RingConvergenceError(f"tol {tol:.1e} is below the round-off floor {floor:.1e} of "
+                                   f"a ring load at e_ratio={e_ratio!r} (8 eps max(e, 1/e)); "
+                                   f"ask for tol >= {floor:.1e}")
 
 
 def _truncations(N: int, max_frequency: int | None) -> list[int]:
@@ -479,6 +510,8 @@ def ring_buckling(N: object, nu: object, *, e_ratio: object = 1.0, load: object 
         max_frequency = check_int(max_frequency, "max_frequency", 4, 2000)
     tol = check_real(tol, "tol", *TOL_RANGE)
     raise_on_failure = check_bool(raise_on_failure, "raise_on_failure")
+    if raise_on_failure and max_frequency is None:
+        check_reachable(tol, e)
 
     def solve(M: int) -> tuple[tuple[FamilySolution, int, float], float]:
         sols = solve_families(n_turns, v, e, ld, {
@@ -487,11 +520,13 @@ def ring_buckling(N: object, nu: object, *, e_ratio: object = 1.0, load: object 
         return (sols[k], k, min(sol.min_mu for sol in sols.values())), sols[k].load
 
     (sol, fam, min_mu), history, rel = refine(_truncations(n_turns, max_frequency), solve, tol)
-    converged = bool(rel <= tol)
+    floor = roundoff_floor(e)
+    converged = bool(rel <= tol and floor <= tol)
     if not converged and raise_on_failure and max_frequency is None:
         raise RingConvergenceError(
             f"ring critical load not converged for N={n_turns}, nu={v}, e={e}, load={ld}: "
-            f"relative change {rel:.2e} > tol {tol:.1e} at max_frequency {history[-1][0]}")
+            f"relative change {rel:.2e}, round-off floor {floor:.1e} (tol {tol:.1e}) at "
+            f"max_frequency {history[-1][0]}")
     if max_frequency is not None:
         warnings.warn(f"ring_buckling at the fixed truncation max_frequency={max_frequency}: "
                       f"convergence not checked (converged=False; the load is a Rayleigh-Ritz "

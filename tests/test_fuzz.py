@@ -337,6 +337,8 @@ SPECS: dict[str, Spec] = {
                                       ([-1.0, 2.0], ValueError), ([2.0, 2.0], ValueError)])},
                            lambda r, a: math.isfinite(r), positional=("x", "err"),
                            derived={"err": lambda a: 1.0 + np.asarray(a["x"], float) ** -2}),
+    "ring_roundoff_floor": Spec(sr.ring_roundoff_floor, {"e_ratio": E_RATIO},
+                                lambda r, a: 0 < r < 1e-8, positional=("e_ratio",)),
     "out_of_plane_supremum": Spec(sr.out_of_plane_supremum, {"A": real(1e-6, 1e6, 0.0)},
                                   lambda r, a: r > 0, positional=("A",)),
     "baseline_sweep": Spec(sr.baseline_sweep, {"twist": ARRAYS, "nu": real(1.0, 100.0, 0.5)},

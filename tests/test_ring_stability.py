@@ -131,11 +131,14 @@ def test_untwisted_in_plane(load: str, expected: float) -> None:
 @pytest.mark.parametrize("load", ["hydrostatic", "axis"])
 def test_untwisted_out_of_plane_timoshenko(e: float, load: str) -> None:
     A3 = 2 * e
-    r = ring_buckling(0, 1.0, e_ratio=e, load=load, subspace="out-of-plane")
+    from spectral_rod.ring_stability import roundoff_floor
+
+    tol = max(1e-12, 2 * roundoff_floor(e))  # 3.6e-12 at e = 1e3
+    r = ring_buckling(0, 1.0, e_ratio=e, load=load, subspace="out-of-plane", tol=tol)
     assert r.load == pytest.approx(out_of_plane_untwisted(1.0, A3), rel=1e-12)
     assert r.kind == "out-of-plane"
     # the full solver returns the lower of in-plane and out-of-plane and names it
-    full = ring_buckling(0, 1.0, e_ratio=e, load=load)
+    full = ring_buckling(0, 1.0, e_ratio=e, load=load, tol=tol)
     assert full.load == pytest.approx(isotropic_ring(1.0, A3, load), rel=1e-12)
     assert full.kind == "out-of-plane"
 
@@ -352,3 +355,35 @@ def test_fixed_truncation_warns_and_is_flagged() -> None:
     ref = ring_buckling(3, 1.5)
     assert not r.converged and math.isnan(r.rel_change) and ref.converged
     assert r.load > ref.load * (1 + 1e-3)
+
+
+@pytest.mark.parametrize("e", [1e-6, 1e-4, 1e4, 1e6])
+def test_extreme_torsional_stiffness_meets_only_its_roundoff_floor(e: float) -> None:
+    """nu = 1 (any N): q = min(3, 9/(4 + 1/(2 e))) in closed form. At extreme e the error
+    (2.75e-10 at e = 1e6, 4.3e-11 at 1e-6) exceeds the default tol while successive
+    truncations agree to ~1e-15: before 2026-12-04 this was reported converged. Now the load
+    is within roundoff_floor(e) of the closed form, and a tol below that floor is not met."""
+    from spectral_rod.ring_stability import RingConvergenceError, roundoff_floor
+
+    exact = min(in_plane_untwisted(1.0, "hydrostatic"), out_of_plane_untwisted(1.0, 2.0 * e))
+    floor = roundoff_floor(e)
+    for N in (0, 2):
+        r = ring_buckling(N, 1.0, e_ratio=e, tol=2 * floor)
+        assert r.converged and abs(r.load / exact - 1) <= floor
+    assert floor > 1e-12
+    with pytest.raises(RingConvergenceError, match="round-off floor"):
+        ring_buckling(0, 1.0, e_ratio=e)
+    unflagged = ring_buckling(0, 1.0, e_ratio=e, raise_on_failure=False)
+    assert not unflagged.converged and unflagged.load == pytest.approx(exact, rel=floor)
+
+
+def test_an_unreachable_tol_is_refused_before_solving() -> None:
+    """The Munder form at N = 20, nu = 1e4, e = 1e-6 ran for minutes before ending unconverged
+    (found 2026-12-04); its tol 1e-10 is below the floor 1.8e-9, so it is refused at once."""
+    from spectral_rod.ring_munder import munder_buckling
+    from spectral_rod.ring_stability import RingConvergenceError
+
+    with pytest.raises(RingConvergenceError, match="below the round-off floor"):
+        munder_buckling(20, 1e4, e_ratio=1e-6)
+    with pytest.raises(RingConvergenceError, match="below the round-off floor"):
+        ring_buckling(20, 1e4, e_ratio=1e-6)
