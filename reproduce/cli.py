@@ -64,9 +64,14 @@ def _scene_names(parser: argparse.ArgumentParser, targets: list[str]) -> list[st
 def main(argv: list[str] | None = None) -> int:
     """Run the command line with `argv` (default ``sys.argv[1:]``); return the exit status."""
     parser = _parser()
-    args = parser.parse_args(argv)
+    args = parser.parse_intermixed_args(argv)  # 'check --against DIR figure1' too
     targets: list[str] = args.targets
-    if targets == ["list"]:
+    if targets[0] == "list":
+        if len(targets) > 1 or args.out is not None or args.against is not None:
+            parser.print_usage(sys.stderr)
+            print(f"{PROG}: error: 'list' takes no scene names, --out or --against",
+                  file=sys.stderr)
+            return 2
         for name in SCENE_MODULES:
             print(f"{name:12s} {load_scene(name).SUMMARY}")
         return 0

@@ -582,7 +582,8 @@ def _max_twist(method: str) -> int:
 
 
 def _check_twists(twists: object, maximum: int = MAX_SOLVER_TWIST) -> tuple[int, ...]:
-    if isinstance(twists, (str, bytes)) or not hasattr(twists, "__iter__"):
+    if isinstance(twists, (str, bytes)) or not hasattr(twists, "__iter__") or (
+            isinstance(twists, np.ndarray) and twists.ndim == 0):  # iterating a 0-d array fails
         raise TypeError(f"twists must be a sequence of integers N >= 0 including 0, got "
                         f"{type(twists).__name__}")
     out = tuple(check_twist_count(N, "twists", maximum)
@@ -648,9 +649,11 @@ def _check_grid_loads(loads: object, shape: tuple[int, int]) -> NDArray[np.float
     if loads is None:
         return None
     arr = real_array(loads, "loads")  # type: ignore[arg-type]
-    if arr.shape != shape or np.any(arr <= 0):
-        raise ValueError(f"loads must be positive critical loads of shape (len(nus), "
-                         f"len(twists)) = {shape}, got shape {arr.shape}")
+    if arr.shape != shape:
+        raise ValueError(f"loads must be critical loads of shape (len(nus), len(twists)) = "
+                         f"{shape}, got shape {arr.shape}")
+    if np.any(arr <= 0):
+        raise ValueError(f"loads must be positive critical loads, got min {np.min(arr):g}")
     return arr
 
 

@@ -176,7 +176,8 @@ __all__ = [
     "ritz_critical_load",
 ]
 
-#: Degree range of y_tt (even): n + 1 unknowns per family.
+#: Degree range of y_tt (even): n + 1 unknowns per family. A forced n costs ~n^3: measured
+#: 2026-12-04 (one point, a shared 2-core machine) 0.14 s at n = 320, 0.7 s at 640, 5.5 s at 1280.
 N_MIN, N_MAX = 4, 1280
 #: |Omega(L)| limit, by cost: n ~ |Omega| + 66 at tol 1e-12, ~0.5 s per point at 1000.
 RITZ_MAX_TWIST = 1000.0

@@ -31,6 +31,20 @@ def test_bad_option_prints_usage_and_exits_2(capsys, argv):
     assert "usage:" in capsys.readouterr().err
 
 
+@pytest.mark.parametrize("argv", [["list", "figure1"], ["list", "--out", "x"],
+                                  ["list", "--against", "x"]])
+def test_list_takes_nothing_else(capsys, argv):
+    # exited 0 ignoring the option, or blamed the target 'list' (before 2026-12-04)
+    assert cli.main(argv) == 2
+    assert "'list' takes no scene names" in capsys.readouterr().err
+
+
+def test_options_before_scene_names(capsys, tmp_path):
+    # argparse's 'unrecognized arguments: figure1' before 2026-12-04
+    assert cli.main(["check", "--against", str(tmp_path / "none"), "figure1"]) == 2
+    assert "no committed outputs to check against" in capsys.readouterr().err
+
+
 def test_list_is_ok(capsys):
     assert cli.main(["list"]) == 0
     assert "extremes" in capsys.readouterr().out

@@ -125,6 +125,15 @@ def test_increment_at_large_twist_is_bounded(monkeypatch):
     (lambda: sr.ring_formulation_agreement([dict(N=1, nu=1.3, e_raito=2.0)]), "e_raito"),
     (lambda: sr.increasing_up_to([2.0, 1.0, 0.0], [1.0, 2.0, 3.0], 1.0), "grid"),
     (lambda: sr.settling_point([0.0, 2.0, 1.0], [1.0, 2.0, 3.0], 1.0), "grid"),
+    (lambda: sr.destabilisation_threshold(1.0, "axis", [2.0, 4.0], twists=np.array(2.0)),
+     "twists"),
+    (lambda: sr.destabilisation_threshold(1.0, "hydrostatic", [2.0, 4.0], twists=(0, 1),
+                                          loads=np.array([[-3.0, 2.0], [-3.0, 3.5]])),
+     "positive critical loads, got min -3"),
+    (lambda: sr.ring_formulation_row(None, None), "ref must be a RingBuckling"),
+    (lambda: sr.analyse_figure1(sr.load_figure1(), p_star_fn=lambda t, n: np.full(np.shape(t),
+                                                                                  np.nan)),
+     "p_star_fn must return finite"),
 ])
 def test_errors_name_the_argument(call, name):
     with pytest.raises((ValueError, TypeError), match=name):

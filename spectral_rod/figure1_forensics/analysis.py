@@ -367,6 +367,20 @@ def _crossings(nu: float, twist_max: float) -> list[dict]:
     return out
 
 
+def _checked(p_star_fn: Callable[[NDArray, NDArray], NDArray]
+             ) -> Callable[[NDArray, NDArray], NDArray]:
+    """A caller's p_star_fn whose every answer must be finite, one value per point (else a
+    ValueError naming it, not an all-NaN warning and a RuntimeError deep in the analysis)."""
+    def fn(twist: NDArray, nu: NDArray) -> NDArray:
+        p = np.asarray(p_star_fn(twist, nu), dtype=float)
+        if p.shape != np.shape(twist) or not np.all(np.isfinite(p)):
+            raise ValueError(f"p_star_fn must return finite p*, one per point (shape "
+                             f"{np.shape(twist)}), got shape {p.shape}, "
+                             f"{int(np.sum(~np.isfinite(p)))} non-finite")
+        return p
+    return fn
+
+
 def analyse_figure1(points: pd.DataFrame, lines: pd.DataFrame | None = None, *,
                     p_true: NDArray[np.float64] | None = None,
                     p_star_fn: Callable[[NDArray, NDArray], NDArray] | None = None) -> Forensics:
@@ -393,7 +407,7 @@ def analyse_figure1(points: pd.DataFrame, lines: pd.DataFrame | None = None, *,
                              f"{p_true.shape}")
     if p_star_fn is not None and not callable(p_star_fn):
         raise TypeError(f"p_star_fn must be callable, got {type(p_star_fn).__name__}")
-    p_star_fn = p_star_fn or _default_p_star
+    p_star_fn = _checked(p_star_fn) if p_star_fn is not None else _default_p_star
     pts = points.reset_index(drop=True).rename(columns={"p_star": "p_digitised"})
     t, nu, y = (pts[c].to_numpy() for c in ("twist_angle", "nu", "picture_y"))
     pts["p_true"] = p_star_fn(t, nu) if p_true is None else np.asarray(p_true, dtype=float)
