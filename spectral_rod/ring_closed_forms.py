@@ -45,7 +45,7 @@ def out_of_plane_untwisted(A: float, A3: float) -> float:
     """Timoshenko & Gere: A (n^2 - 1)^2/(n^2 + A/A3) (both load models), increasing in n, so
     the critical n = 2 value 9 A/(4 + A/A3) (module docstring)."""
     A, A3 = _stiffness(A, "A"), _stiffness(A3, "A3")
-    return 9.0 * A / (4.0 + A / A3)
+    return 9.0 * A * A3 / (4.0 * A3 + A)  # = 9 A/(4 + A/A3) without overflow of A/A3
 
 
 def out_of_plane_supremum(A: float) -> float:

@@ -34,6 +34,8 @@ def test_in_plane_hand_values(A: float, load: str, expected: float) -> None:
     (1.0, 1.0, 1.8),        # A3 = A: 9/5
     (2.0, 0.5, 18 / 8),     # A/A3 = 4: 18/8
     (1.0, 1e12, 2.25),      # torsionally rigid: the supremum 9/4
+    (1.0, 1e-300, 9e-300),  # torsionally soft: 9 A3 (A/A3 overflowed to 0.0 before 2026-12-04)
+    (1e12, 1e-300, 9e-300),
 ])
 def test_out_of_plane_hand_values(A: float, A3: float, expected: float) -> None:
     assert out_of_plane_untwisted(A, A3) == pytest.approx(expected, rel=1e-12)
