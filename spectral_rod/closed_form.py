@@ -177,7 +177,10 @@ def mode_fields(root: CharacteristicRoot, twist_angle: float, nu: float, s: Arra
         raise ValueError("twist_angle must be non-zero for the closed-form mode (at zero twist "
                          "the mode is Euler's planar sin(pi s))")
     _check_root_is_of(root, twist_angle, nu)
-    return fields_at_load(root.family, root.p_star, twist_angle, nu, s, dps)
+    xi, eta = fields_at_load(root.family, root.p_star, twist_angle, nu, s, dps)
+    # -Omega is the mirror image (omega2 -> -omega2), as in buckling_mode; before 2026-12-04
+    # the +|Omega| mode was returned, which does not solve inst1 at -Omega (residual ~1e3)
+    return xi, (-eta if twist_angle < 0 else eta)
 
 
 def _check_root_is_of(root: CharacteristicRoot, twist_angle: float, nu: float) -> None:
@@ -202,7 +205,7 @@ def characteristic_mode(root: CharacteristicRoot, twist_angle: float, nu: float,
     npts = check_int(points, "points", 2, 100_000)
     s = np.concatenate([np.linspace(0.0, 1.0, npts), np.linspace(0.0, 1.0, SCALE_POINTS)])
     xi, eta = mode_fields(root, twist_angle, nu, s, dps)
-    om = abs(float(twist_angle))
+    om = float(twist_angle)
     x1 = xi * np.cos(om * s) - eta * np.sin(om * s)
     x2 = xi * np.sin(om * s) + eta * np.cos(om * s)
     scale = float(np.max(np.hypot(x1, x2)))

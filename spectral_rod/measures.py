@@ -40,7 +40,11 @@ def non_planarity(x1: ArrayLike, x2: ArrayLike) -> float:
     the centreline lies in one plane through the rod's axis (a plane containing both hinged ends
     must contain the axis), up to 1 for a circular helix-like spread."""
     a, b = _curve("x1", x1, "x2", x2)
-    sv = np.linalg.svd(np.column_stack([a, b]), compute_uv=False)
+    m = max(np.abs(a).max(), np.abs(b).max())
+    if m == 0.0:
+        return 0.0
+    # scaled first: the SVD of entries ~1e308 overflows (it returned 0.0, "planar", before)
+    sv = np.linalg.svd(np.column_stack([a / m, b / m]), compute_uv=False)
     return float(sv[-1] / sv[0]) if sv[0] > 0 else 0.0
 
 

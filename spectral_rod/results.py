@@ -61,9 +61,12 @@ class CriticalLoad(_ShortRepr):
 class BucklingMode(_ShortRepr):
     """The critical mode of the hinged twisted rod on a uniform grid s/L in [0, 1].
 
-    omega1, omega2: curvatures in the body frame (u0, v0), scaled so that max |omega| = 1 (the
-    largest entry positive); x1, x2: the centreline displacement in the fixed frame (e1, e2),
-    x'' = R(Omega s) omega with x = 0 at both ends (units of L when omega is in units of 1/L);
+    omega1, omega2: curvatures in the body frame (u0, v0), scaled so that max |omega| = 1 on a
+    fixed fine grid of s <= 1/2 (SCALE_POINTS in [0, 1]), the largest entry there positive:
+    the same normalisation whatever the output grid (whose own maximum differs from 1 by the
+    fixed grid's sampling: 0.5 % at Omega(L) = 53, nu = 273); x1, x2: the centreline
+    displacement in the fixed frame (e1, e2), x'' = R(Omega s) omega with x = 0 at both ends
+    (units of L when omega is in units of 1/L);
     p_star, method, n, error_estimate, converged: as in :class:`CriticalLoad` (the mode is
     computed by the method that computed p*, see :func:`spectral_rod.buckling_mode`); beta1,
     beta2: the critical wavenumbers times L (beta1 complex when imaginary); family: 'symmetric'

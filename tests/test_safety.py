@@ -274,3 +274,40 @@ def test_a_non_finite_closed_form_mode_raises(monkeypatch):
 def test_a_directory_is_not_the_figure_data(tmp_path):
     with pytest.raises(sr.ReferenceDataError, match="is a directory"):  # IsADirectoryError before
         sr.load_figure1(tmp_path)
+
+
+def test_characteristic_mode_at_negative_twist_is_the_mirror_image():
+    """-Omega: omega2 -> -omega2, x2 -> -x2 (as buckling_mode, by collocation, says); before
+    2026-12-04 the +|Omega| mode came back, with x2 1.2 away from collocation's."""
+    root = sr.characteristic_critical_load(-5.0, 1.5)
+    cm = sr.characteristic_mode(root, -5.0, 1.5, points=401)
+    m = sr.buckling_mode(-5.0, 1.5, points=401)
+    a, b = np.r_[cm.x1, cm.x2], np.r_[m.x1, m.x2]
+    a, b = a / np.abs(a).max(), b / np.abs(b).max()
+    assert min(np.abs(a - b).max(), np.abs(a + b).max()) < 1e-10
+    plus = sr.characteristic_mode(sr.characteristic_critical_load(5.0, 1.5), 5.0, 1.5, points=401)
+    assert np.abs(plus.x1 - cm.x1).max() < 1e-14 and np.abs(plus.x2 + cm.x2).max() < 1e-14
+
+
+@pytest.mark.parametrize(("twist", "nu"), [(-20.763326807332717, 915.8630331677332),
+                                           (53.37, 273.4)])
+def test_buckling_mode_normalisation_does_not_depend_on_the_grid(twist, nu):
+    """Sign and scale from a fixed grid only: the mid-span value is the same at 5 and 20,001
+    points (its sign flipped, or its scale moved 0.5 %, before 2026-12-04)."""
+    a = sr.buckling_mode(twist, nu, points=5)
+    b = sr.buckling_mode(twist, nu, points=20001)
+    assert a.x1[2] == pytest.approx(b.x1[10000], rel=1e-12, abs=1e-15)
+    assert a.omega2[2] == pytest.approx(b.omega2[10000], rel=1e-12, abs=1e-15)
+
+
+def test_wrong_p_true_for_the_forensics_is_a_value_error():
+    pts = sr.load_figure1()
+    p = sr.critical_load(pts.twist_angle.to_numpy(), pts.nu.to_numpy())
+    with pytest.raises(ValueError, match="p_true"):  # a bare RuntimeError before 2026-12-04
+        sr.analyse_figure1(pts, p_true=p + 1e-8)
+
+
+def test_non_planarity_of_huge_samples():
+    # 0.0 ("planar") through the SVD's overflow before 2026-12-04
+    big = sr.non_planarity([1e308, -1e308, 1e308], [1e308, 1e308, -1e308])
+    assert big == pytest.approx(sr.non_planarity([1.0, -1.0, 1.0], [1.0, 1.0, -1.0]), rel=1e-14)

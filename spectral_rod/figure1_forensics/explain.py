@@ -72,9 +72,10 @@ def site_physics(sites: pd.DataFrame, runs: dict[str, Hypothesis]) -> pd.DataFra
     out["p_sym"], out["p_anti"] = family_loads(t, nu)
     gap = np.abs(np.fmin(out["p_sym"], out["p_anti"]) - p)
     if not (gap < _P_STAR_AGREEMENT).all():  # two independent routes to p* must agree
-        raise RuntimeError(f"family loads disagree with p_true at "
-                           f"{(~(gap < _P_STAR_AGREEMENT)).sum()} sites (max "
-                           f"{np.nanmax(gap):.1e})")
+        raise ValueError(f"p_true (or p_star_fn's values) must be the converged p* to "
+                         f"{_P_STAR_AGREEMENT:g}: it disagrees with the characteristic "
+                         f"equation's family loads at {(~(gap < _P_STAR_AGREEMENT)).sum()} "
+                         f"sites (max {np.nanmax(gap):.1e})")
     for r, h in runs.items():
         out[f"{r}_double_root"] = _same_step(out["p_sym"].to_numpy(), out["p_anti"].to_numpy(),
                                              t, nu, h.variable, h.step)
