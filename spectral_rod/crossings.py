@@ -99,9 +99,12 @@ def family_crossing(twist_guess: float, nu: float, *, p_guess: float | None = No
 
         try:
             p_c, om_c = mp.findroot(system, (mp.mpf(p_guess), mp.mpf(twist_guess)))
-        except (ValueError, ZeroDivisionError) as exc:
-            # mpmath: "Could not find root within given tolerance", or a singular Jacobian
-            # ("matrix is numerically singular", e.g. at nu = 1, where p* = 1 at every twist)
+        except (ValueError, ZeroDivisionError, TypeError) as exc:
+            # mpmath: "Could not find root within given tolerance", a singular Jacobian
+            # ("matrix is numerically singular", e.g. at nu = 1, where p* = 1 at every twist),
+            # or Newton iterates that left the real axis (the determinant compares a complex
+            # X: "no ordering relation is defined for complex numbers", e.g. from pi at
+            # nu = 1e4, where there is no crossing)
             raise RootNotFoundError(f"no family crossing found from twist_guess={twist_guess}, "
                                     f"nu={nu} ({exc})") from None
         _check_on_lowest_branches(p_c, om_c, nu, dps, twist_guess)

@@ -477,6 +477,8 @@ def test_exempt_calls():
     assert abs(sr.crossing_wavenumbers(crossing, 1.5).resonance_gap) < 1e-12
     with pytest.raises(sr.RootNotFoundError, match=r"nu=1\.0"):  # a ZeroDivisionError before
         sr.family_crossing(2 * math.pi, 1.0)
+    with pytest.raises(sr.RootNotFoundError, match="complex"):  # a TypeError before
+        sr.family_crossing(math.pi, 1e4)
     with pytest.raises(TypeError, match="points"):
         sr.analyse_figure1("table")
     assert finite(sr.characteristic_mode(root, 5.0, 1.5, points=11).x1)
