@@ -113,7 +113,7 @@ Error estimate at degree n: the Ritz mode's energy-orthogonal projection onto th
 degree n - Delta (Delta = :func:`estimate_gap`, 4 ... 14 as Omega grows, keeping the gain over
 Delta >= 25) has a Rayleigh quotient p_coarse >= p(n - Delta) >= p(n), and
 
-    error_estimate = max((p_coarse - p(n))/p(n), roundoff_floor(nu)),
+    error_estimate = max((p_coarse - p(n))/p(n), roundoff_floor(nu, Omega)),
 
 (p_coarse is itself the quotient of a trial function, so also an upper bound of the load).
 This bounds the true error of p(n) as long as e(n) <= e(n - Delta)/2 (measured). It is used
@@ -140,8 +140,9 @@ the eigen-solve are O(n^3)); with the default multi-threaded BLAS on the busy 2-
 anywhere from the same to 10-40x slower (thread contention; the measurements scatter).
 
 Where it stops: |Omega(L)| <= :data:`RITZ_MAX_TWIST` = 1000 by cost (n ~ |Omega| + 66, time
-~ |Omega|^3), not by accuracy; a tol below the round-off floor eps (8 + 2 sqrt(nu)) (e.g. 1e-14
-for nu > ~340) cannot be met and is reported as such (ConvergenceWarning, no useless raise).
+~ |Omega|^3), not by accuracy; a tol below the round-off floor eps (8 + 2 sqrt(nu) +
+|Omega|/40) (e.g. 1e-14 for nu > ~340 at small twist) cannot be met and is reported as such
+(ConvergenceWarning, no useless raise).
 """
 
 from __future__ import annotations
@@ -352,16 +353,20 @@ def family_ritz_value(twist_angle: float, nu: float, n: int, family: str
 # Resolution control
 # ---------------------------------------------------------------------------------------------
 
-def roundoff_floor(nu: float) -> float:
-    """Round-off part of the estimate, eps (8 + 2 sqrt(nu)) (relative).
+def roundoff_floor(nu: float, twist_angle: float = 0.0) -> float:
+    """Round-off part of the estimate, eps (8 + 2 sqrt(nu) + |Omega|/40) (relative).
 
     Measured: the largest error of converged values (degree initial_degree(Omega, 1e-14) and
     up to 60 above) against the mpmath reference over Omega in [0, 200] (14 values), both
     families, was 4 eps at nu = 2, 12.5 eps at 100, 31 eps at 1e3, 99 eps at 1e4, i.e.
     ~ eps sqrt(nu) (the QR's backward error relative to the mode's energy); the model has a
-    safety factor 2. Example: ``roundoff_floor(1e4)`` is 4.6e-14.
+    safety factor 2. Example: ``roundoff_floor(1e4)`` is 4.6e-14. The |Omega|/40 term: at large
+    twist the round-off grows with it (measured 2026-12-04 at nu - 1 = 1e-7..1e-5: up to 6 eps
+    for |Omega(L)| < 400, 12 eps in [400, 700), 17-24 eps in [700, 1000], where the floor
+    without it, ~10 eps, was exceeded by up to 2.4 times in a third of the points; the worst
+    ratio to this floor 0.7).
     """
-    return EPS * (8.0 + 2.0 * math.sqrt(nu))
+    return EPS * (8.0 + 2.0 * math.sqrt(nu) + abs(twist_angle) / 40.0)
 
 
 def initial_degree(twist_angle: float, tol: float) -> int:
@@ -388,7 +393,7 @@ def _estimate(p: float, p_coarse: float, n: int, twist_angle: float, nu: float) 
     """Relative error estimate of p(n): inf on the plateau (n - Delta < |Omega|)."""
     if math.isnan(p_coarse) or n - estimate_gap(twist_angle) < abs(twist_angle):
         return math.inf
-    return max((p_coarse - p) / p, roundoff_floor(nu))
+    return max((p_coarse - p) / p, roundoff_floor(nu, twist_angle))
 
 
 def resolve_family(twist_angle: float, nu: float, family: str, tol: float,
@@ -400,7 +405,7 @@ def resolve_family(twist_angle: float, nu: float, family: str, tol: float,
         p, p_coarse = family_ritz_value(om, nu, deg, family)
         est = _estimate(p, p_coarse, deg, om, nu)
         # at the round-off floor a higher degree cannot help
-        if n is not None or est <= max(tol, roundoff_floor(nu)) or deg >= N_MAX:
+        if n is not None or est <= max(tol, roundoff_floor(nu, om)) or deg >= N_MAX:
             return p, deg, est
         deg = _raise_degree(deg)
 

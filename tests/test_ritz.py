@@ -323,3 +323,18 @@ def test_subnormal_twist_quietly():
         assert ritz.chebyshev_degree(5e-324, 1.5, 20) == ritz.chebyshev_degree(1e-300, 1.5, 20)
         p = ritz.ritz_point(5e-324, 1.5, None, 1e-12, None)
     assert p == ritz.ritz_point(0.0, 1.5, None, 1e-12, None) and abs(p[0] - 1.0) < 1e-15
+
+
+@pytest.mark.parametrize(("twist", "nu", "family"), [
+    (988.722915799012, 1.0000007008737712, "symmetric"),
+    (925.8316467260903, 1.00000068960196, "antisymmetric"),
+    (636.7979306325542, 1.032136560231916, "symmetric"),
+])
+def test_roundoff_floor_grows_with_the_twist(twist, nu, family):
+    """At large twist the Ritz round-off exceeded eps (8 + 2 sqrt(nu)) (5.4e-15 against 2.2e-15
+    at 988.7, found 2026-12-04; below the reference by 1.1-1.5 floors at 636.8): with the
+    |Omega|/40 term the error is inside both the estimate and, below the reference, the floor."""
+    res = ritz_critical_load(twist, nu, family=family, full_output=True)
+    ref = float(family_critical_load(family, twist, nu, dps=60).p_star)
+    err = res.p_star / ref - 1
+    assert -roundoff_floor(nu, twist) <= err <= res.error_estimate, (err, res.error_estimate)
