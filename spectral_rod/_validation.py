@@ -3,7 +3,6 @@ that names the argument and its allowed range."""
 
 from __future__ import annotations
 
-import math
 import numbers
 
 import numpy as np
@@ -31,6 +30,16 @@ def real_array(value: ArrayLike, name: str) -> NDArray[np.float64]:
     if not np.all(np.isfinite(arr)):
         raise ValueError(f"{name} must be finite (no NaN or inf), got {value!r}")
     return arr
+
+
+def as_float(value: numbers.Real, name: str, allowed: str) -> float:
+    """float(value), with a ValueError naming `name` and the `allowed` range for an integer
+    beyond the float range (float() raises OverflowError there)."""
+    try:
+        return float(value)
+    except OverflowError:
+        raise ValueError(f"{name} must be {allowed}, got an integer of "
+                         f"{len(str(abs(int(value))))} digits") from None
 
 
 def check_choice(value: object, name: str, choices: tuple[str, ...]) -> str:
@@ -85,10 +94,7 @@ def check_tol(tol: object, name: str = "tol") -> float:
     """A relative tolerance in TOL_RANGE = [1e-14, 1e-2]."""
     if isinstance(tol, bool) or not isinstance(tol, numbers.Real):
         raise TypeError(f"{name} must be a real number, got {type(tol).__name__}")
-    try:
-        tol = float(tol)
-    except OverflowError:  # an int beyond the float range
-        tol = math.inf
+    tol = as_float(tol, name, f"in [{TOL_RANGE[0]:g}, {TOL_RANGE[1]:g}]")
     if not (TOL_RANGE[0] <= tol <= TOL_RANGE[1]):
         raise ValueError(f"{name} must be in [{TOL_RANGE[0]:g}, {TOL_RANGE[1]:g}], "
                          f"got {tol!r}")
@@ -122,11 +128,7 @@ def check_real(value: object, name: str, lo: float = -np.inf, hi: float = np.inf
                                                                           np.ndarray))
                 else type(value).__name__)
         raise TypeError(f"{name} must be a scalar real number in {rng}, got {what}")
-    try:
-        v = float(value)
-    except OverflowError:  # an int beyond the float range
-        raise ValueError(f"{name} must be in {rng}, got an integer of "
-                         f"{len(str(abs(value)))} digits") from None
+    v = as_float(value, name, f"in {rng}")
     if not np.isfinite(v):
         raise ValueError(f"{name} must be finite, in {rng}, got {v!r}")
     if v < lo or v > hi or (lo_open and v == lo) or (hi_open and v == hi):

@@ -48,12 +48,12 @@ Scan steps (empirical): 1/128 in mpmath, 1/256 in double precision; one family's
 O(1) apart in p on the ranges tested (tests/test_extremes.py, test_two_solvers.py).
 
 Double precision: the relative error of p* is ~ eps |Omega| (the slow phase sqrt(X_+) - sqrt(X_-)
-is a difference of two phases of size ~Omega); measured <= 6.5e-14 at Omega(L) = 1000 (500
-random nu) and <= 7e-13 at 1e4 (tests/test_extremes.py), and <= 0.59 eps |Omega| on ~24,000
-random points (Omega(L) in [50, 1e4], nu in [1, 1e4]; 2026-12-04), bounded by
-:func:`double_error_estimate` = eps (8 + |Omega|). (Its earlier eps (8 + |Omega|/2) was exceeded
-by up to 1.17 times at 0.03-0.13 % of such points, e.g. Omega(L) = 8775.08, nu = 2.2524: error
-1.15e-12 against 9.8e-13, so reported converged at tol 1e-12.)
+is a difference of two phases of size ~Omega); measured <= 7e-13 at 1e4 (tests/test_extremes.py)
+and <= 0.58 eps |Omega| on 3,000 random points (Omega(L) log-uniform in [50, 1e4], nu in
+[1, 1e4], against 40-digit roots; 2026-12-04, tests/bench/measure_error_floors.py): at most
+0.53 of :func:`double_error_estimate` = eps (8 + |Omega|), 8.4e-14 for Omega(L) <= 1000. (Its earlier eps (8 + |Omega|/2) was exceeded
+by up to 1.17 times, e.g. Omega(L) = 8775.08, nu = 2.2524: error 1.15e-12 against 9.8e-13, so
+reported converged at tol 1e-12; tests/test_extremes.py keeps six such points.)
 """
 
 from __future__ import annotations
@@ -487,7 +487,7 @@ def family_double_batch(twist: NDArray[np.float64], nu: NDArray[np.float64]
 
 def double_error_estimate(twist_angle: ArrayLike) -> NDArray[np.float64]:
     """Relative error bound eps (8 + |Omega|) of :func:`characteristic_double` (empirical: the
-    measured error is <= 0.59 eps |Omega|, module docstring)."""
+    measured error is <= 0.58 eps |Omega|, module docstring)."""
     return _EPS * (8.0 + np.abs(np.asarray(twist_angle, dtype=float)))
 
 

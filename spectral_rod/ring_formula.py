@@ -27,7 +27,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike
 
-from spectral_rod._validation import check_nu, real_array
+from spectral_rod._validation import as_float, check_nu, real_array
 
 #: Largest twist (number of turns N) accepted by the ring functions.
 MAX_TWIST = 1000
@@ -44,12 +44,8 @@ def check_twist_count(N: object, name: str = "N", maximum: int = MAX_TWIST) -> i
     if isinstance(N, bool) or not isinstance(N, numbers.Real):
         raise TypeError(f"{name} (number of turns of the cross-section) must be an integer in "
                         f"[0, {maximum}], got {type(N).__name__}")
-    try:
-        value = float(N)
-    except OverflowError:  # an int beyond the float range
-        raise ValueError(f"{name} (number of turns of the cross-section) must be an integer in "
-                         f"[0, {maximum}], got an integer of {len(str(abs(N)))} digits"
-                         ) from None
+    value = as_float(N, f"{name} (number of turns of the cross-section)",
+                     f"an integer in [0, {maximum}]")
     if not math.isfinite(value) or value != math.floor(value):
         raise ValueError(f"{name} (number of turns of the cross-section) must be an integer in "
                          f"[0, {maximum}] (the ring closes only for whole turns), got {N!r}")

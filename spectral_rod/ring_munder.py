@@ -570,8 +570,8 @@ def _mode_support(J0: NDArray, J1: NDArray, q: float) -> NDArray[np.bool_]:
             x = scipy.linalg.lu_solve(lu, x / np.abs(x).max(), check_finite=False)
     if not (np.all(np.isfinite(x)) and np.abs(x).max() > 0):
         # an exactly zero pivot: the offset q 1e-13 is below the round-off of the O(1) entries
-        # (seen at N = 0, e <= 3e-4 or e >= 3e3, nu = 1: 34 of 232 grid rings, whose modes were
-        # then called in-plane with no frequencies); the smallest right singular vector instead
+        # (at N = 0, nu 1..1e4, e 1e-6..3e4: 22 of 96 grid rings, whose modes were then called
+        # in-plane with no frequencies, 2026-12-04); the smallest right singular vector instead
         x = scipy.linalg.svd(a, check_finite=False)[2][-1]
     x = np.abs(x * _scales(J0, J1)[1])  # the physical unknowns: J0 (c y) = (J0 c) y
     return x > MODE_SUPPORT_TOL * x.max()

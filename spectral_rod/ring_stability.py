@@ -443,8 +443,8 @@ def check_reachable(tol: float, e_ratio: float) -> None:
     floor = roundoff_floor(e_ratio)
     if tol < floor:
         raise RingConvergenceError(f"tol {tol:.1e} is below the round-off floor {floor:.1e} of "
-                                   f"a ring load at e_ratio={e_ratio!r} (8 eps max(e, 1/e)); "
-                                   f"ask for tol >= {floor:.1e}")
+                                   f"a ring load at e_ratio={e_ratio!r} ({ROUNDOFF:g} eps "
+                                   f"max(e, 1/e)); ask for tol >= {floor:.1e}")
 
 
 def _truncations(N: int, max_frequency: int | None) -> list[int]:

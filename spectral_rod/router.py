@@ -7,14 +7,15 @@ characteristic equation (tests/test_extremes.py and the ``extremes`` scene):
 * an explicit degree ``n``: Chebyshev collocation everywhere (``n`` is its parameter);
 * |Omega(L)| >= :data:`TWIST_ROUTE` = 50: the characteristic equation in double precision
   (:func:`spectral_rod.characteristic.characteristic_double`): its cost does not grow with the
-  twist and its relative error is ~eps |Omega| (up to 6.5e-14 at Omega(L) = 1000, 7e-13 at 1e4),
+  twist and its relative error is ~eps |Omega| (<= 0.58 eps |Omega|: 1.3e-13 at 1000, 7e-13 at 1e4),
   whereas collocation needs n ~ |Omega|/2 + 4.5 |Omega|^(1/3) + 10 at tol 1e-12 (n capped at 512;
   :func:`spectral_rod.straight_rod.resolution.initial_degree`) and loses accuracy to
   round-off (1e-12 at Omega(L) = 200);
 * nu - 1 <= :data:`NEAR_DEGENERATE` = 1e-3 (and |Omega(L)| < 50): p* = 1 + the increment of
   :mod:`spectral_rod.increment` (the lowest eigenvalue is nearly double there and collocation's
-  p* - 1 loses its relative accuracy; the increment keeps p* - 1 to <= 6.1e-13 relative, <= 2.3e-14
-  for nu - 1 <= 1e-5: 3,000 random points, Omega(L) in [1e-4, 50], nu - 1 in [1e-14, 1e-3]);
+  p* - 1 loses its relative accuracy; the increment keeps p* - 1 to 1e-12 relative on the grid of
+  tests/test_increment.py; a hunt of 3,000 random points, Omega(L) in [1e-4, 50], nu - 1 in
+  [1e-14, 1e-3], measured <= 6.1e-13, <= 2.3e-14 for nu - 1 <= 1e-5);
 * otherwise Chebyshev collocation (:mod:`spectral_rod.straight_rod`, <= ~3e-14 relative).
 
 A method can also be forced (``method=`` one of :data:`ROD_METHODS`), e.g. to cross-check:
