@@ -51,9 +51,10 @@ Double precision: the relative error of p* is ~ eps |Omega| (the slow phase sqrt
 is a difference of two phases of size ~Omega); measured <= 7e-13 at 1e4 (tests/test_extremes.py)
 and <= 0.58 eps |Omega| on 3,000 random points (Omega(L) log-uniform in [50, 1e4], nu in
 [1, 1e4], against 40-digit roots; 2026-12-04, tests/bench/measure_error_floors.py): at most
-0.53 of :func:`double_error_estimate` = eps (8 + |Omega|), 8.4e-14 for Omega(L) <= 1000. (Its earlier eps (8 + |Omega|/2) was exceeded
-by up to 1.17 times, e.g. Omega(L) = 8775.08, nu = 2.2524: error 1.15e-12 against 9.8e-13, so
-reported converged at tol 1e-12; tests/test_extremes.py keeps six such points.)
+0.53 of :func:`double_error_estimate` = eps (8 + |Omega|), 8.4e-14 for Omega(L) <= 1000.
+(Its earlier eps (8 + |Omega|/2) was exceeded by up to 1.17 times, e.g. Omega(L) = 8775.08, nu =
+2.2524: error 1.15e-12 against 9.8e-13, so reported converged at tol 1e-12; tests/test_extremes.py
+keeps six such points.)
 """
 
 from __future__ import annotations

@@ -363,8 +363,9 @@ def roundoff_floor(nu: float, twist_angle: float = 0.0) -> float:
     safety factor 2. Example: ``roundoff_floor(1e4)`` is 4.6e-14. The |Omega|/40 term: at large
     twist the round-off grows with it: on 1,589 random values (Omega(L) in [400, 1000], nu - 1
     in [1e-7, 1e-5], either family, against 50-digit family roots; 2026-12-04,
-    tests/bench/measure_error_floors.py) the error reached 29 eps, 2.9 times the floor without the term; with it the error is <= 0.84 of the estimate
-    and a value below the reference is short by <= 0.57 of the floor.
+    tests/bench/measure_error_floors.py) the error reached 29 eps, 2.9 times the floor without
+    the term; with it the error is <= 0.84 of the estimate and a value below the reference is
+    short by <= 0.57 of the floor.
     """
     return EPS * (8.0 + 2.0 * math.sqrt(nu) + abs(twist_angle) / 40.0)
 
