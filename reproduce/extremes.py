@@ -189,7 +189,10 @@ def draw(grid: pd.DataFrame, inc: pd.DataFrame, res: pd.DataFrame, route: pd.Dat
         ax.loglog(sub["twist_angle"], np.maximum(sub["char_rel_error"], 1e-17), "s--", ms=3,
                   label=f"characteristic eq. (double), ν={nu:g}")
     om = np.asarray(ROUTE_TWISTS)
-    ax.loglog(om, 2.2e-16 * (8 + om / 2), "k:", lw=1, label="ε (8 + Ω/2): stated bound")
+    # the route's own estimate (eps (8 + |Omega|) since 2026-12-04), not a copy of its formula
+    est = critical_load(om, np.full(om.size, 1.5), method="characteristic",
+                        full_output=True).error_estimate
+    ax.loglog(om, est, "k:", lw=1, label="characteristic eq.: its error estimate")
     ax.axvline(TWIST_ROUTE, color="r", lw=1)
     ax.text(TWIST_ROUTE * 1.05, 3e-11, "routed to the\ncharacteristic eq. →", color="r",
             fontsize=7, va="top")
