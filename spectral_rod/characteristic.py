@@ -61,6 +61,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import partial
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -74,7 +75,7 @@ from spectral_rod._validation import (
 )
 from spectral_rod.errors import RootNotFoundError
 from spectral_rod.families import FAMILIES, check_family, euler_loads
-from spectral_rod.sign_scan import bracketed_roots, lowest_root, lowest_roots
+from spectral_rod.sign_scan import bracketed_root, bracketed_roots, lowest_root, lowest_roots
 from spectral_rod.wavenumbers import characteristic_roots
 
 if TYPE_CHECKING:  # mpmath is imported where it is used: the double-precision route needs none
@@ -103,23 +104,38 @@ SCAN_MARGIN = 1e-6
 #: passes waste fewer evaluations on low roots but cost more passes. Measured on 1,000 points,
 #: Omega(L) in [50, 1000], nu in [1, 100]: 33/65/129/257 -> 36/30/30/34 us a point.
 DOUBLE_CHUNK = 129
+#: Grid points per pass for a few points: one pass reaches p = 2, above the large-twist limit
+#: 2 nu/(1 + nu) (1 or 2 passes of DOUBLE_CHUNK, 71 us each, took 1.8 on average on 30 random
+#: large-twist points; measured 2026-12-05).
+ONE_POINT_CHUNK = 257
+#: Up to this many brackets the double-precision refinement runs in Python floats
+#: (:func:`~spectral_rod.sign_scan.bracketed_root` on :func:`determinant` with ``lib=math``,
+#: 1.1 us an evaluation), above it on numpy arrays: on one-element arrays numpy's per-call cost
+#: made a scalar call at large twist take 1.2 ms (measured 2026-12-05).
+FEW_BRACKETS = 4
 _EPS = float(np.finfo(float).eps)
 #: The precisions of :func:`determinants` (those of :func:`entire_cs_double`).
 _DTYPES = (np.dtype(np.float64), np.dtype(np.float32))
 
 
-def entire_cs(x: mp.mpf, t: mp.mpf | None = None) -> tuple[mp.mpf, mp.mpf]:
-    """cos(sqrt(X) t) and sin(sqrt(X) t)/sqrt(X) (t = 1/2 by default), entire in X (mpmath)."""
-    import mpmath as mp
+def entire_cs(x: Any, t: Any = None, lib: Any = None) -> tuple[Any, Any]:
+    """cos(sqrt(X) t) and sin(sqrt(X) t)/sqrt(X) (t = 1/2 by default), entire in X: mpmath
+    numbers, or Python floats with ``lib=math``.
 
-    t = mp.mpf(1) / 2 if t is None else t
+    >>> entire_cs(0.0, lib=math), entire_cs(-4.0, 1.0, lib=math)[0] == math.cosh(2.0)
+    ((1.0, 0.5), True)
+    """
+    if lib is None:
+        import mpmath as lib
+    if t is None:
+        t = 0.5 if lib is math else lib.mpf(1) / 2
     if x > 0:
-        b = mp.sqrt(x)
-        return mp.cos(b * t), mp.sin(b * t) / b
+        b = lib.sqrt(x)
+        return lib.cos(b * t), lib.sin(b * t) / b
     if x < 0:
-        k = mp.sqrt(-x)
-        return mp.cosh(k * t), mp.sinh(k * t) / k
-    return mp.mpf(1), t
+        k = lib.sqrt(-x)
+        return lib.cosh(k * t), lib.sinh(k * t) / k
+    return (1.0 if lib is math else lib.mpf(1)), t
 
 
 def entire_cs_double(x: ArrayLike, t: ArrayLike = 0.5
@@ -154,15 +170,21 @@ def combine_determinant(family: str, lam: Any, mu: Any, om2: Any, roots: tuple[A
     return (mu - om2 - xp) * sp * cm - (mu - om2 - xm) * sm * cp
 
 
-def determinant(family: str, lam: mp.mpf, om: mp.mpf, nu: mp.mpf) -> mp.mpf:
-    """D_sym or D_anti (mpmath) at the load lambda = pi^2 p, twist Omega, nu; valid at Omega = 0."""
-    import mpmath as mp
+def determinant(family: str, lam: Any, om: Any, nu: Any, lib: Any = None) -> Any:
+    """D_sym or D_anti at the load lambda = pi^2 p, twist Omega, nu; valid at Omega = 0. In
+    mpmath, or in Python floats with ``lib=math`` (one point of the double-precision route:
+    numpy's per-call cost would be most of an evaluation).
 
+    >>> abs(determinant("symmetric", math.pi**2, 0.0, 1.5, lib=math)) < 1e-16  # Euler's load
+    True
+    """
+    if lib is None:
+        import mpmath as lib
     check_family(family)
     mu = lam / nu
-    roots = characteristic_roots(lam, mu, om, sqrt=mp.sqrt)
-    cs = (entire_cs(roots[0]), entire_cs(roots[1]))
-    return combine_determinant(family, lam, mu, om**2, roots, cs)
+    roots = characteristic_roots(lam, mu, om, sqrt=lib.sqrt)
+    cs = (entire_cs(roots[0], lib=lib), entire_cs(roots[1], lib=lib))
+    return combine_determinant(family, lam, mu, om * om, roots, cs)
 
 
 def determinants(p: ArrayLike, twist_angle: ArrayLike, nu: ArrayLike, *,
@@ -404,6 +426,11 @@ def _close_pair_root(family: str, twist_angle: float, nu: float, dps: int, step:
     return None
 
 
+def _float_determinant(family: str, om: float, nu: float, p: float) -> float:
+    """D_sym or D_anti at p in Python floats (the refinement of a few brackets)."""
+    return determinant(family, math.pi**2 * p, om, nu, lib=math)
+
+
 def characteristic_double(twist_angle: float, nu: float) -> tuple[float, str]:
     """Lowest root p* of the two determinants in double precision, and its family (one point
     of :func:`characteristic_double_batch`).
@@ -433,13 +460,20 @@ def _double_scan(om: NDArray[np.float64], nv: NDArray[np.float64], top: NDArray[
     def refine(points, k, a, b):
         fam = k if family is None else family[points]
 
+        if points.size <= FEW_BRACKETS:  # in Python floats, one bracket at a time
+            return np.array([bracketed_root(partial(_float_determinant, FAMILIES[fam[j]],
+                                                    float(om[i]), float(nv[i])),
+                                            float(a[j]), float(b[j]))
+                             for j, i in enumerate(points.tolist())])
+
         def f(j, x):
             d = _determinants(x, om[points[j]], nv[points[j]], np.float64, False)
             return np.where(fam[j] == 0, d[0], d[1])
         return bracketed_roots(f, a, b)
 
     return lowest_roots(values, refine, np.full(om.size, SCAN_START), top,
-                        np.full(om.size, DOUBLE_SCAN_STEP), chunk=DOUBLE_CHUNK)
+                        np.full(om.size, DOUBLE_SCAN_STEP),
+                        chunk=DOUBLE_CHUNK if om.size > FEW_BRACKETS else ONE_POINT_CHUNK)
 
 
 def characteristic_double_batch(twist: NDArray[np.float64], nu: NDArray[np.float64]

@@ -153,16 +153,18 @@ def warn_unconverged(where: str, converged: NDArray[np.bool_], res: PointResults
 
 def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: object,
                full_output: object):
-    """The scalar fast path: p* (or its CriticalLoad) for one collocation point given as Python
-    or numpy floats, or None wherever the general path must answer (any other input, a
-    non-collocation route, a forced degree, a point the lean solver does not accept or whose
-    estimate misses tol). The computation is the general path's for one point, without its
-    array bookkeeping: it calls :func:`spectral_rod.straight_rod.few_points.solve_one` with
-    Python floats (measured 2026-12-02 at Omega = 3, nu = 1.5: 58-59 us a scalar call, 67 us
-    before solve_one, 210 us a one-point array call; `python -m pytest -m bench` measures the
-    scalar loop)."""
+    """The scalar fast path: p* (or its CriticalLoad) for one point given as Python or numpy
+    floats on the collocation or the large-twist route, or None wherever the general path must
+    answer (any other input, the increment route, a forced degree, a point the lean solver does
+    not accept or whose estimate misses tol). The computation is the general path's for one
+    point, without its array bookkeeping: collocation calls
+    :func:`spectral_rod.straight_rod.few_points.solve_one` with Python floats (measured
+    2026-12-02 at Omega = 3, nu = 1.5: 58-59 us a scalar call, 67 us before solve_one, 210 us a
+    one-point array call), the large-twist route :func:`_one_characteristic`; `python -m pytest
+    -m bench` measures both scalar loops."""
     if not (isinstance(twist_angle, (float, int)) and isinstance(nu, (float, int))
-            and isinstance(tol, float) and n is None and method in ("auto", "collocation")
+            and isinstance(tol, float) and n is None
+            and method in ("auto", "collocation", "characteristic")
             and isinstance(full_output, (bool, np.bool_))) or isinstance(twist_angle, bool) \
             or isinstance(nu, bool):
         return None
@@ -170,9 +172,13 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
         om, nv = abs(float(twist_angle)), float(nu)
     except OverflowError:  # an int beyond float range: the general path names it
         return None
-    if not (om <= TWIST_MAX and 1.0 <= nv <= NU_MAX and TOL_RANGE[0] <= tol <= TOL_RANGE[1]) \
-            or route_point(om, nv, None, method) != "collocation":
+    if not (om <= TWIST_MAX and 1.0 <= nv <= NU_MAX and TOL_RANGE[0] <= tol <= TOL_RANGE[1]):
         return None  # includes NaN: the general path names the bad argument
+    chosen = route_point(om, nv, None, method)
+    if chosen == "characteristic":
+        return _one_characteristic(om, nv, tol, full_output)
+    if chosen != "collocation":
+        return None
     deg = initial_degree_scalar(om, tol)
     if error_estimate_scalar(0.0, om) >= tol:
         return None  # tol below the round-off floor: unconverged, the general path flags it
@@ -198,6 +204,25 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
         return p
     return CriticalLoad(p, "collocation", deg, min(err, hi - 1.0), FAMILIES[best],
                         converged=True, tol=tol)
+
+
+def _one_characteristic(om: float, nv: float, tol: float, full_output: bool):
+    """:func:`_one_point` on the large-twist route: the characteristic equation in double
+    precision for one point (its refinement in Python floats: 0.19 ms a call against 1.2 ms by
+    the array path, measured 2026-12-05 on 30 random points, Omega(L) in [50, 1000]), bounds and
+    estimate as :func:`solve_points` and :func:`apply_bounds` give them; None where the estimate
+    misses tol (the general path warns and flags)."""
+    from spectral_rod.characteristic import characteristic_double, double_error_estimate
+
+    hi = (1.0 + nv) / 2.0
+    err = min(float(double_error_estimate(om)), (hi - 1.0) + _EPS)
+    if err > tol:
+        return None
+    p, family = characteristic_double(om, nv)
+    p = min(max(p, 1.0), hi)
+    if not full_output:
+        return p
+    return CriticalLoad(p, "characteristic", 0, err, family, converged=True, tol=tol)
 
 
 def _one_element(twist_angle: object, nu: object, n: object, tol: object, method: object,

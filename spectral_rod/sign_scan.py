@@ -6,7 +6,9 @@ guarantees the *lowest* root (a root finder started anywhere else may converge t
 The guarantee holds when no two roots of one component lie within one step; the callers' steps
 are chosen for that (see them). :func:`lowest_roots` scans a batch of functions f_p (one per
 point p) together, each on its own grid; :func:`bracketed_roots` refines brackets of a batch at
-once (the double-precision refinement).
+once (the double-precision refinement), :func:`bracketed_root` one bracket in Python floats (the
+same iteration, for a caller with only a few brackets, where numpy's per-call cost on arrays of
+one or two entries would be most of the time).
 
 >>> import math
 >>> lowest_root(lambda g: [[math.cos(x) for x in g]], lambda k, a, b: math.pi / 2, 0.0, 3.0, 0.25)
@@ -21,7 +23,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-__all__ = ["MAX_SCAN_POINTS", "bracketed_roots", "lowest_root", "lowest_roots"]
+__all__ = ["MAX_SCAN_POINTS", "bracketed_root", "bracketed_roots", "lowest_root", "lowest_roots"]
 
 #: Largest number of grid points a scan may evaluate per point before it gives up (a bound on
 #: its cost; the scans stop at the first root, which for the characteristic equation lies
@@ -158,4 +160,33 @@ def bracketed_roots(f: Callable[[NDArray[np.int_], NDArray[np.float64]], NDArray
         out[active] = c
         done = (fc == 0) | (np.abs(c - aa) <= 1e-16 + 2 * rtol * np.abs(c))
         active = active[~done]
+    return out
+
+
+def bracketed_root(f: Callable[[float], float], a: float, b: float, rtol: float = 4 * _EPS,
+                   max_iter: int = 200) -> float:
+    """:func:`bracketed_roots` for one function of Python floats: the same Anderson-Bjorck
+    iteration and stopping rule, without arrays (``tests/test_speed_paths.py`` checks that the
+    two agree).
+
+    >>> abs(bracketed_root(lambda x: float(np.cos(x)), 1.0, 2.0) - np.pi / 2) < 1e-15
+    True
+    """
+    fa, fb = f(a), f(b)
+    if fa == 0:
+        return a
+    out = b
+    if fb == 0:
+        return out
+    for _ in range(max_iter):
+        c = b - fb * (b - a) / (fb - fa)
+        fc = f(c)
+        if fc * fb < 0:  # the root is between b and c: b becomes the other end
+            a, fa = b, fb
+        else:  # the kept end's value is scaled down (Anderson-Bjorck)
+            m = 1.0 - fc / fb
+            fa *= m if m > 0 else 0.5
+        b, fb, out = c, fc, c
+        if fc == 0 or abs(c - a) <= 1e-16 + 2 * rtol * abs(c):
+            break
     return out

@@ -77,7 +77,8 @@ def test_one_element_arrays_take_the_scalar_path_with_the_general_output(
     def arg(value, shape):
         return value if shape is None else np.reshape(np.asarray(value, dtype=dtype), shape)
 
-    for om, nu in ((0.0, 1.5), (3.0, 1.3), (9.0, 100.0), (45.0, 1.1), (-7.0, 4.0)):
+    for om, nu in ((0.0, 1.5), (3.0, 1.3), (9.0, 100.0), (45.0, 1.1), (-7.0, 4.0),
+                   (80.0, 1.5), (-640.0, 30.0), (50.0, 1.0 + 1e-12)):  # the last 3: large twist
         args = arg(om, twist_shape), arg(nu, nu_shape)
         with monkeypatch.context() as m:  # the general path must not run
             m.setattr(critical, "solve_points", None)
@@ -90,11 +91,9 @@ def test_one_element_arrays_take_the_scalar_path_with_the_general_output(
 
 
 def test_one_element_arrays_outside_the_scalar_path_take_the_general_path():
-    # a forced degree, a large twist, nu - 1 near zero, a bool array: the general path answers
-    # (or rejects), as for arrays of any size
+    # a forced degree, nu - 1 near zero, a bool array: the general path answers (or rejects),
+    # as for arrays of any size
     assert critical_load(np.array([3.0]), 1.5, n=30, full_output=True).n.tolist() == [30]
-    assert critical_load(np.array([80.0]), 1.5, full_output=True).method.tolist() == [
-        "characteristic"]
     assert critical_load(np.array([3.0]), np.array([1.0 + 1e-6]), full_output=True
                          ).method.tolist() == ["increment"]
     with pytest.raises(TypeError, match="twist_angle"):
@@ -282,6 +281,68 @@ def test_no_root_is_reported_as_such():
                                lambda *args: None, np.zeros(2), np.ones(2), np.full(2, 0.1),
                                chunk=4)
     assert comp.tolist() == [-1, -1] and np.isnan(roots).all()
+
+
+def test_scalar_large_twist_path(monkeypatch, reference):
+    """A scalar call on the large-twist route (auto, or the characteristic method forced) takes
+    the scalar path, gives the general path's answer bit for bit, meets the reference, and
+    hands a tol it cannot meet to the general path, which warns and flags it."""
+    import spectral_rod.critical as critical
+
+    cases = [(80.0, 1.5, "auto"), (999.0, 1.0 + 1e-9, "auto"), (3.0, 1.5, "characteristic"),
+             (-250.0, 1e4, "auto")]
+    for om, nu, method in cases:
+        with monkeypatch.context() as m:  # the general path must not run
+            m.setattr(critical, "solve_points", None)
+            fast = critical_load(om, nu, method=method, full_output=True)
+        with monkeypatch.context() as m:
+            m.setattr(critical, "_one_point", lambda *a: None)
+            general = critical_load(np.array([om]), nu, method=method, full_output=True)
+        assert fast.method == "characteristic" and fast.converged
+        assert (fast.p_star, fast.family, fast.error_estimate) == (
+            float(general.p_star[0]), str(general.family[0]), float(general.error_estimate[0]))
+        assert abs(fast.p_star / reference(abs(om), nu) - 1) <= max(1e-13, fast.error_estimate)
+    with pytest.warns(ConvergenceWarning, match="tol=1e-14 not met"):
+        res = critical_load(5000.0, 1.5, tol=1e-14, full_output=True)
+    assert not res.converged and res.error_estimate > 1e-14
+
+
+def test_few_brackets_in_floats_agree_with_the_array_refinement(reference):
+    """The refinement of a few brackets in Python floats (characteristic.FEW_BRACKETS) and of
+    many on numpy arrays find the same roots to within the route's error estimate, and both
+    meet the reference."""
+    from spectral_rod.characteristic import FEW_BRACKETS, double_error_estimate
+
+    rng = np.random.default_rng(11)
+    tw = rng.uniform(50.0, 1000.0, 2 * FEW_BRACKETS + 1)
+    nv = np.exp(rng.uniform(0.0, np.log(1e3), tw.size))
+    p_many, fam_many = characteristic_double_batch(tw, nv)
+    for i in range(tw.size):
+        p_one, fam_one = characteristic_double_batch(tw[i:i + 1], nv[i:i + 1])
+        assert fam_one[0] == fam_many[i]
+        assert abs(p_one[0] / p_many[i] - 1) <= float(double_error_estimate(tw[i]))
+        assert abs(p_one[0] / reference(float(tw[i]), float(nv[i])) - 1) <= 1e-13
+
+
+@settings(max_examples=200, deadline=None)
+@given(roots=st.lists(st.floats(-3.0, 3.0), min_size=1, max_size=3),
+       lo=st.floats(-4.0, 0.0), width=st.floats(1e-3, 8.0))
+def test_scalar_bracketed_root_is_the_array_iteration(roots, lo, width):
+    """bracketed_root (Python floats) takes the iterates of bracketed_roots (arrays): on the
+    same polynomial, bit for bit."""
+    from spectral_rod.sign_scan import bracketed_root
+
+    def poly(x):
+        out = x - roots[0]
+        for r in roots[1:]:
+            out = out * (x - r)
+        return out
+
+    hi = lo + width
+    if not poly(lo) * poly(hi) < 0:
+        return  # no bracket
+    many = bracketed_roots(lambda j, x: poly(x), np.full(3, lo), np.full(3, hi))
+    assert bracketed_root(poly, lo, hi) == float(many[0])
 
 
 def test_batched_characteristic_route_against_the_reference(reference):

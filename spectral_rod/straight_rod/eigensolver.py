@@ -40,6 +40,7 @@ from spectral_rod.straight_rod.discretisation import (
     term_coefficients,
 )
 from spectral_rod.straight_rod.resolution import mode_tails
+from spectral_rod.straight_rod.stacked_inverse import stacked_inverse
 
 __all__ = ["CALIBRATED_TOL", "ISOLATION_GAP", "ModalFamily", "iteration_allowance",
            "iteration_rtol", "lowest_eigenpair", "lowest_gap", "modal_family",
@@ -260,7 +261,7 @@ class _ShiftedModal:
         schur = ((-a * b * r_e) @ mf.outer).reshape(-1, k_s, k_s)
         schur[:, np.arange(k_s), np.arange(k_s)] += d_s - SHIFT
         return cls(elim, kept, r_e, a, b, g_es, g_se,
-                   np.linalg.inv(schur))  # LinAlgError if singular
+                   stacked_inverse(schur))  # LinAlgError if singular
 
     def take(self, idx: NDArray[np.int_]) -> _ShiftedModal:
         """The points `idx` only."""

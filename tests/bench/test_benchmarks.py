@@ -50,6 +50,8 @@ FLOORS = {
     "batches of 10": 2.5, "scalar loop": 2.0, "one-point arrays": 2.0, "brentq search": 2.0,
     "map collocation part": 3.0, "map colloc., equal n": 10.0, "map all points": 3.0,
     "large twist": 20.0, "near-degenerate": 20.0,
+    # first measured 2026-12-05: 6-7 and 16-17 (scalar calls against the same yardsticks)
+    "large twist, scalar": 3.0, "near-degenerate, scalar": 6.0,
 }
 TOL = 1e-12
 
@@ -401,6 +403,7 @@ def test_large_twist_pre_change(benchmark, large_twist, reference, bench_registr
     _yardstick(benchmark, bench_registry, "large twist",
                lambda: [pre_change_characteristic(a, b) for a, b in zip(tw, nv, strict=True)],
                tw.size, rounds=3)
+    bench_registry["large twist, scalar"] = dict(bench_registry["large twist"])
     benchmark.extra_info.update(sample="first 50 of the 1,000 points, per-point time")
 
 
@@ -414,6 +417,19 @@ def test_large_twist(benchmark, large_twist, reference, bench_registry):
          tw.size, {"max_rel_error_sampled": err}, "pre-change per-point route")
 
 
+@pytest.mark.benchmark(group="large twist")
+def test_large_twist_scalar_loop(benchmark, large_twist, reference, bench_registry):
+    # a loop of scalar calls (e.g. a root finder at large twist) over the yardstick's 50 points
+    tw, nv = (v[:50].tolist() for v in large_twist)
+    res = [critical_load(a, b, tol=TOL, full_output=True) for a, b in zip(tw, nv, strict=True)]
+    p = np.array([r.p_star for r in res])
+    err = _max_error(p, np.array(tw), np.array(nv), reference, sample=10)
+    assert all(r.method == "characteristic" and r.converged for r in res) and err <= 1e-13
+    _new(benchmark, bench_registry, "large twist, scalar",
+         lambda: [critical_load(a, b, tol=TOL) for a, b in zip(tw, nv, strict=True)], len(tw),
+         {"max_rel_error_sampled": err}, "pre-change per-point route")
+
+
 @pytest.mark.benchmark(group="near-degenerate")
 def test_near_degenerate_pre_change(benchmark, near_degenerate, bench_registry):
     from spectral_rod.characteristic import characteristic_critical_load
@@ -425,6 +441,7 @@ def test_near_degenerate_pre_change(benchmark, near_degenerate, bench_registry):
     _yardstick(benchmark, bench_registry, "near-degenerate",
                lambda: [pre_change_increment(a, b) for a, b in zip(tw, nv, strict=True)],
                tw.size, rounds=3)
+    bench_registry["near-degenerate, scalar"] = dict(bench_registry["near-degenerate"])
     benchmark.extra_info.update(sample="first 20 of the 1,000 points, per-point time")
 
 
@@ -445,6 +462,21 @@ def test_near_degenerate(benchmark, near_degenerate, reference, bench_registry):
     _new(benchmark, bench_registry, "near-degenerate", lambda: critical_load(tw, nv, tol=TOL),
          tw.size, {"max_rel_error_sampled": err, "max_rel_error_of_increment": err_gain},
          "pre-change per-point route")
+
+
+@pytest.mark.benchmark(group="near-degenerate")
+def test_near_degenerate_scalar_loop(benchmark, near_degenerate, bench_registry):
+    from spectral_rod.characteristic import characteristic_critical_load
+
+    tw, nv = (v[:20].tolist() for v in near_degenerate)  # the yardstick's 20 points
+    res = [critical_load(a, b, tol=TOL, full_output=True) for a, b in zip(tw, nv, strict=True)]
+    idx = range(0, len(tw), 5)
+    err = max(abs(res[i].p_star / float(characteristic_critical_load(tw[i], nv[i], dps=50).p_star)
+                  - 1) for i in idx)
+    assert all(r.method == "increment" and r.converged for r in res) and err <= 1e-13
+    _new(benchmark, bench_registry, "near-degenerate, scalar",
+         lambda: [critical_load(a, b, tol=TOL) for a, b in zip(tw, nv, strict=True)], len(tw),
+         {"max_rel_error_of_increment_sampled": err}, "pre-change per-point route")
 
 
 # --- import and the first (cold) call, in fresh interpreters ------------------------------
