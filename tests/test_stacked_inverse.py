@@ -9,8 +9,7 @@ import pytest
 
 from spectral_rod.straight_rod import eigensolver
 from spectral_rod.straight_rod.stacked_inverse import (
-    BLOCK_MIN,
-    LARGE_STACK,
+    BLOCK_ENTRIES,
     block_inverse,
     stacked_inverse,
     uses_blocks,
@@ -46,10 +45,13 @@ def test_block_inverse_of_the_engines_schur_complements_is_lapacks(n, family):
 def test_a_zero_or_tiny_leading_pivot_falls_back_to_lapack():
     rng = np.random.default_rng(3)
     k = 12
-    a = rng.standard_normal((5, k, k)) + 4 * np.eye(k)
-    a[1, 0, 0] = 0.0  # block recursion divides by it: inf/nan
-    a[3, :2, :2] = [[3.1e-13, 0.7], [0.9, 1.3]]  # finite, but growth ~1e13: a large error
-    a[3, 0, 2:] = a[3, 1, 2:] = a[3, 2:, 0] = a[3, 2:, 1] = 0.0  # keep a well-conditioned matrix
+    count = BLOCK_ENTRIES // (k * k) + 1  # enough for the block recursion (uses_blocks)
+    a = rng.standard_normal((count, k, k)) + 4 * np.eye(k)
+    # the recursion's leading 3 x 3 block (12 -> 6 -> 3): singular (inf/nan) and nearly
+    # singular (finite, but growth ~1e13: a large error); both matrices stay well-conditioned
+    a[1, :3, :3] = [[1.0, 2.0, 3.0], [2.0, 4.0, 6.0], [1.0, 1.0, 1.0]]
+    a[3, :3, :3] = [[1.0, 2.0, 3.0], [2.0, 4.0, 6.0 + 3.1e-13], [1.0, 1.0, 1.0]]
+    assert np.linalg.cond(a[1]) < 1e4 and np.linalg.cond(a[3]) < 1e4
     with np.errstate(all="ignore"):
         raw = block_inverse(a)
     assert not np.isfinite(raw[1]).all()
@@ -58,8 +60,8 @@ def test_a_zero_or_tiny_leading_pivot_falls_back_to_lapack():
     assert np.allclose(got @ a, np.eye(k), atol=1e-12)
     for i in (1, 3):  # those two are LAPACK's, the others the block recursion's
         assert np.array_equal(got[i], np.linalg.inv(a[i]))
-    for i in (0, 2, 4):
-        assert np.array_equal(got[i], raw[i])
+    others = np.setdiff1d(np.arange(count), [1, 3])
+    assert np.array_equal(got[others], raw[others])
 
 
 def test_a_singular_matrix_raises_as_lapack_does():
@@ -69,10 +71,10 @@ def test_a_singular_matrix_raises_as_lapack_does():
         stacked_inverse(a)
 
 
-def test_small_or_few_matrices_go_to_lapack_unchanged():
+def test_small_stacks_go_to_lapack_unchanged():
     rng = np.random.default_rng(5)
-    for k, count in ((BLOCK_MIN[1] - 1, LARGE_STACK), (BLOCK_MIN[0] - 1, LARGE_STACK - 1)):
-        assert not uses_blocks(k, count)
+    for k in (4, 10, 30):
+        count = (BLOCK_ENTRIES - 1) // (k * k)
+        assert not uses_blocks(k, count) and uses_blocks(k, count + 1)
         a = rng.standard_normal((count, k, k)) + 3 * np.eye(k)
         assert np.array_equal(stacked_inverse(a), np.linalg.inv(a))
-    assert uses_blocks(BLOCK_MIN[0], 1) and uses_blocks(BLOCK_MIN[1], LARGE_STACK)

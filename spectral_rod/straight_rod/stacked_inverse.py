@@ -8,19 +8,22 @@ products of whole stacks, by the 2 x 2 block (Schur complement) formula
     [[P, Q], [R, T]]^{-1} = [[P^-1 + X S^-1 Y, -X S^-1], [-S^-1 Y, S^-1]],
     X = P^-1 Q,  Y = R P^-1,  S = T - R X,
 
-recursively down to 2 x 2 blocks, which are inverted in closed form. There is no pivoting:
-the matrices it is given are Schur complements of K - SHIFT with SHIFT below every physical
-eigenvalue (:class:`.eigensolver._ShiftedModal`), whose leading blocks are far from singular.
+recursively down to blocks of 3 x 3 or smaller, which are inverted in closed form. There is no
+pivoting: the matrices it is given are Schur complements of K - SHIFT with SHIFT below every
+physical eigenvalue (:class:`.eigensolver._ShiftedModal`), whose leading blocks are far from
+singular.
 :func:`stacked_inverse` checks every result anyway (one product with a fixed probe vector) and
 redoes any matrix whose backward error is not small by LAPACK, with partial pivoting.
 
-Measured 2026-12-05 (interleaved minima, one BLAS thread, random well-conditioned stacks), the
-time per matrix relative to ``numpy.linalg.inv``: k = 10: 0.84, 0.74, 0.66 at 100, 300, 1,200
-matrices; k = 14: 0.77, 0.65, 0.66; k = 22: 0.74, 0.60, 0.63; k = 27: 0.63, 0.52, 0.59; k = 7-9:
-0.97-1.14 at 100 matrices but 0.65-0.84 from 300 on; k = 6: 1.27 at 100, hence
-:func:`uses_blocks`. The check adds 10-25 % of the block inverse's time. In the engine (15
-interleaved rounds, 2026-12-05): the Figure 1 batch 0.95 of its time with LAPACK's inverse, one
-call per curve 0.90, the (Omega, nu) map's collocation points 0.90, batches of 100 unchanged. On
+Measured 2026-12-05 (minima of 25 interleaved rounds, one BLAS thread, the engine's Schur
+complements at Figure 1's and random points), the time per matrix of :func:`stacked_inverse`,
+check included, relative to ``numpy.linalg.inv`` at 100, 300 and 1,200 matrices: k = 5:
+1.44, 0.98, 0.75; k = 6: 1.62, 1.04, 0.80; k = 8: 1.42, 1.06, 0.98; k = 9: 1.16, 0.88, 0.86;
+k = 10: 1.08, 0.80, 0.78; k = 12: 1.02, 0.71, 0.74; k = 14: 0.91, 0.74, 0.77; k = 19: 0.78,
+0.68, 0.74; k = 27: 0.63, 0.58, 0.69 (the check is 10-25 % of it), hence
+:data:`BLOCK_ENTRIES`. In the engine (15 interleaved rounds): the Figure 1 batch 0.95 of its
+time with LAPACK's inverse, one call per curve 0.92, the (Omega, nu) map's collocation points
+0.90, batches of 100 unchanged. On
 the engine's own Schur complements (n = 8..128, both families, 400 random points each,
 Omega(L) up to 50, nu up to 1e4, condition numbers up to 5e8) it agreed with LAPACK's inverse
 to <= 4.3e-14 relative, with backward errors <= 5.5e-16.
@@ -33,13 +36,12 @@ from functools import lru_cache
 import numpy as np
 from numpy.typing import NDArray
 
-__all__ = ["BACKWARD_TOL", "BLOCK_MIN", "LARGE_STACK", "block_inverse", "stacked_inverse",
-           "uses_blocks"]
+__all__ = ["BACKWARD_TOL", "BLOCK_ENTRIES", "block_inverse", "stacked_inverse", "uses_blocks"]
 
-#: :func:`stacked_inverse` uses :func:`block_inverse` from size BLOCK_MIN[0] on, and from size
-#: BLOCK_MIN[1] on in stacks of at least LARGE_STACK matrices (measured crossovers, module
-#: docstring); LAPACK below.
-BLOCK_MIN, LARGE_STACK = (10, 7), 300
+#: :func:`stacked_inverse` uses :func:`block_inverse` for stacks of at least this many matrix
+#: entries (count k^2), LAPACK below: the block recursion's cost is mostly numpy calls per
+#: stack, LAPACK's a call per matrix (the measured crossovers of the module docstring).
+BLOCK_ENTRIES = 25_000
 #: A block inverse X of S is accepted where |S (X v) - v| <= BACKWARD_TOL d |X v| (max norms,
 #: v a fixed probe vector, d the largest |diagonal entry| of S, which is <= |S|: the test is at
 #: least as strict as one relative to |S| |X v|): a backward error far above a pivoted LU's
@@ -58,7 +60,7 @@ def block_inverse(a: NDArray[np.float64]) -> NDArray[np.float64]:
     True
     """
     k = a.shape[-1]
-    if k <= 2:
+    if k <= 3:
         return _small_inverse(a)
     h = k // 2
     p_inv = block_inverse(a[..., :h, :h])
@@ -75,20 +77,36 @@ def block_inverse(a: NDArray[np.float64]) -> NDArray[np.float64]:
 
 
 def _small_inverse(a: NDArray[np.float64]) -> NDArray[np.float64]:
-    """Closed-form inverse of 1 x 1 or 2 x 2 matrices (a stack)."""
-    if a.shape[-1] == 1:
+    """Closed-form inverse (adjugate over determinant) of 1 x 1, 2 x 2 or 3 x 3 matrices (a
+    stack)."""
+    k = a.shape[-1]
+    if k == 1:
         return 1.0 / a
-    p, q, r, t = a[..., 0, 0], a[..., 0, 1], a[..., 1, 0], a[..., 1, 1]
-    det = 1.0 / (p * t - q * r)
     out = np.empty_like(a)
-    out[..., 0, 0], out[..., 0, 1] = t * det, -q * det
-    out[..., 1, 0], out[..., 1, 1] = -r * det, p * det
+    if k == 2:
+        p, q, r, t = a[..., 0, 0], a[..., 0, 1], a[..., 1, 0], a[..., 1, 1]
+        det = 1.0 / (p * t - q * r)
+        out[..., 0, 0], out[..., 0, 1] = t * det, -q * det
+        out[..., 1, 0], out[..., 1, 1] = -r * det, p * det
+        return out
+    m = np.moveaxis(a, (-2, -1), (0, 1))  # m[i][j]: the stack of entries (i, j)
+    for i in range(3):
+        for j in range(3):  # cofactor of entry (j, i) = adjugate entry (i, j)
+            r0, r1 = (j + 1) % 3, (j + 2) % 3
+            c0, c1 = (i + 1) % 3, (i + 2) % 3
+            out[..., i, j] = m[r0][c0] * m[r1][c1] - m[r0][c1] * m[r1][c0]
+    det = 1.0 / (m[0][0] * out[..., 0, 0] + m[0][1] * out[..., 1, 0] + m[0][2] * out[..., 2, 0])
+    out *= det[..., None, None]
     return out
 
 
 def uses_blocks(k: int, count: int) -> bool:
-    """Whether :func:`stacked_inverse` inverts `count` matrices of size k by blocks."""
-    return k >= BLOCK_MIN[0] or (k >= BLOCK_MIN[1] and count >= LARGE_STACK)
+    """Whether :func:`stacked_inverse` inverts `count` matrices of size k by blocks.
+
+    >>> uses_blocks(10, 100), uses_blocks(10, 300), uses_blocks(27, 40)
+    (False, True, True)
+    """
+    return count * k * k >= BLOCK_ENTRIES
 
 
 @lru_cache(maxsize=64)
