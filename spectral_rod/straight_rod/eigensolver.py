@@ -211,20 +211,22 @@ class _ShiftedModal:
     In block form K - SHIFT = [[D_e - SHIFT, a G_es], [b G_se, D_s - SHIFT]] with D_e diagonal
     (the eliminated block), so (K - SHIFT)^{-1} needs only the inverse of
 
-        S = D_s - SHIFT - a b G_se (D_e - SHIFT)^{-1} G_es   (one LAPACK inverse per point).
+        S = D_s - SHIFT - a b G_se (D_e - SHIFT)^{-1} G_es   (one inverse per point).
 
     Block 1 (omega1) has a = 2 c1_1 (4 nu Omega for ``inst1``) in front of G12, block 2 has
     2 c1_2 (-4 Omega) in front of G21.
     Vectors are rows of one array (points x (k1 + k2)), omega1 block first.
 
-    The per-point inverse (``numpy.linalg.inv``, LAPACK per matrix) is 34 % (tol 1e-4) and 39 %
-    (tol 1e-12) of the Figure 1 batch's instructions (callgrind, 2026-12-02; 38.5 % on
+    The per-point inverse was, with ``numpy.linalg.inv`` (LAPACK per matrix), 34 % (tol 1e-4) and
+    39 % (tol 1e-12) of the Figure 1 batch's instructions (callgrind, 2026-12-02; 38.5 % on
     2026-12-04 by ``tests/bench/instruction_counts.py --inverse-share``), so even a free inverse
     would leave the batch 43.4 times below the baseline in instructions, not the 50 of issue 14.
-    Against it on 800
-    matrices of k = 6..32: a Gauss-Jordan inversion with partial pivoting vectorised over the
-    points took 1.5-3 times as long (points-last layout; 2.3-5.5 times points-first), and
-    ``scipy.linalg.inv`` on the stack 1.7-2.4 times; no faster batched alternative was found.
+    Against it on 800 matrices of k = 6..32: a Gauss-Jordan inversion with partial pivoting
+    vectorised over the points took 1.5-3 times as long (points-last layout; 2.3-5.5 times
+    points-first), and ``scipy.linalg.inv`` on the stack 1.7-2.4 times. Since 2026-12-05 large
+    stacks are inverted by a checked 2 x 2-block recursion instead
+    (:func:`.stacked_inverse.stacked_inverse`: 0.52-0.77 of LAPACK's time from k = 10 and a few
+    hundred matrices on; the Figure 1 batch 0.93 of its time).
     Forming (K - SHIFT)^{-1} itself from these blocks (three products with the shared G's), so
     that a step is one batched product, was measured on 2026-12-03 (:func:`lowest_eigenpair`,
     symmetric family, random Figure 1 points, n = 18, 22, 26, 9 interleaved rounds): a step took

@@ -11,8 +11,10 @@ operator assembly are excluded. Printed: instructions per point of the yardstick
 ``spectral_rod.baseline``, n = 24: its cost does not depend on the point; 40 Figure 1 points)
 and of ``critical_load`` at tol 1e-12 (as the benchmarks), and their ratio; and the Figure 1
 batch at tol 1e-4 as a fraction of tol 1e-12; with ``--inverse-share``, the Figure 1 batch's
-fraction inside numpy's per-matrix inverse (the Schur complements of the batched engine) and
-its ratio to the baseline were that inverse free. It is not a time
+fraction inside numpy's per-matrix inverse (the Schur complements of the batched engine that
+LAPACK inverts: since 2026-12-05 only small stacks and what the block recursion's check
+rejects, ``spectral_rod.straight_rod.stacked_inverse``) and its ratio to the baseline were that
+inverse free. It is not a time
 ratio: the baseline's dense LAPACK runs more instructions per cycle than numpy's per-call
 overhead, so the wall-clock ratios measured so far lie below these (2026-12-02, one machine:
 scalar loop 5.7 here, 3.8-7.4 in wall-clock runs; batches of 100 19.1 here, 13.9-22.9).
