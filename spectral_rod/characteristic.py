@@ -104,15 +104,16 @@ SCAN_MARGIN = 1e-6
 #: passes waste fewer evaluations on low roots but cost more passes. Measured on 1,000 points,
 #: Omega(L) in [50, 1000], nu in [1, 100]: 33/65/129/257 -> 36/30/30/34 us a point.
 DOUBLE_CHUNK = 129
-#: Grid points per pass for a few points: one pass reaches p = 2, above the large-twist limit
-#: 2 nu/(1 + nu) (1 or 2 passes of DOUBLE_CHUNK, 71 us each, took 1.8 on average on 30 random
+#: A few points (or brackets): up to this many, a double-precision scan takes passes of
+#: ONE_POINT_CHUNK grid points, and its refinement runs one bracket at a time in Python floats
+#: (:func:`~spectral_rod.sign_scan.bracketed_root` on :func:`determinant` with ``lib=math``,
+#: 1.1 us an evaluation), where numpy's per-call cost on arrays of one or two entries made a
+#: scalar call at large twist take 1.2 ms (measured 2026-12-05: 0.21 ms now).
+FEW_POINTS = 4
+#: One pass of this many grid points reaches p = 2, above the large-twist limit 2 nu/(1 + nu)
+#: (passes of DOUBLE_CHUNK, 71 us each for one point, took 1.8 a point on average on 30 random
 #: large-twist points; measured 2026-12-05).
 ONE_POINT_CHUNK = 257
-#: Up to this many brackets the double-precision refinement runs in Python floats
-#: (:func:`~spectral_rod.sign_scan.bracketed_root` on :func:`determinant` with ``lib=math``,
-#: 1.1 us an evaluation), above it on numpy arrays: on one-element arrays numpy's per-call cost
-#: made a scalar call at large twist take 1.2 ms (measured 2026-12-05).
-FEW_BRACKETS = 4
 _EPS = float(np.finfo(float).eps)
 #: The precisions of :func:`determinants` (those of :func:`entire_cs_double`).
 _DTYPES = (np.dtype(np.float64), np.dtype(np.float32))
@@ -460,7 +461,7 @@ def _double_scan(om: NDArray[np.float64], nv: NDArray[np.float64], top: NDArray[
     def refine(points, k, a, b):
         fam = k if family is None else family[points]
 
-        if points.size <= FEW_BRACKETS:  # in Python floats, one bracket at a time
+        if points.size <= FEW_POINTS:  # in Python floats, one bracket at a time
             return np.array([bracketed_root(partial(_float_determinant, FAMILIES[fam[j]],
                                                     float(om[i]), float(nv[i])),
                                             float(a[j]), float(b[j]))
@@ -473,7 +474,7 @@ def _double_scan(om: NDArray[np.float64], nv: NDArray[np.float64], top: NDArray[
 
     return lowest_roots(values, refine, np.full(om.size, SCAN_START), top,
                         np.full(om.size, DOUBLE_SCAN_STEP),
-                        chunk=DOUBLE_CHUNK if om.size > FEW_BRACKETS else ONE_POINT_CHUNK)
+                        chunk=DOUBLE_CHUNK if om.size > FEW_POINTS else ONE_POINT_CHUNK)
 
 
 def characteristic_double_batch(twist: NDArray[np.float64], nu: NDArray[np.float64]

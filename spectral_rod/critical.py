@@ -137,6 +137,17 @@ def apply_bounds(res: PointResults, nv: NDArray[np.float64]) -> None:
     res.error_estimate[:] = np.minimum(res.error_estimate, (hi - lo) / lo + _EPS)
 
 
+def bounded_point(p: float, err: float, nv: float) -> tuple[float, float]:
+    """:func:`apply_bounds` for one point in Python floats (the scalar paths'): p* projected
+    onto [1, (1 + nu)/2], the estimate capped by the width plus eps.
+
+    >>> bounded_point(1.3, 0.5, 1.5)
+    (1.25, 0.2500000000000002)
+    """
+    hi = (1.0 + nv) / 2.0
+    return min(max(p, 1.0), hi), min(err, (hi - 1.0) + _EPS)
+
+
 def warn_unconverged(where: str, converged: NDArray[np.bool_], res: PointResults,
                      tw: NDArray[np.float64], nv: NDArray[np.float64], tol: float) -> None:
     """One ConvergenceWarning naming the worst point, if any point missed `tol`."""
@@ -198,12 +209,10 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
         if deg >= N_MAX:
             return None  # unconverged: the general path warns and flags it
         deg = int(raised_degree(deg))
-    hi = (1.0 + nv) / 2.0
-    p = min(max(lam[best] / math.pi**2, 1.0), hi)
+    p, err = bounded_point(lam[best] / math.pi**2, err, nv)
     if not full_output:
         return p
-    return CriticalLoad(p, "collocation", deg, min(err, hi - 1.0), FAMILIES[best],
-                        converged=True, tol=tol)
+    return CriticalLoad(p, "collocation", deg, err, FAMILIES[best], converged=True, tol=tol)
 
 
 def _one_characteristic(om: float, nv: float, tol: float, full_output: bool):
@@ -214,12 +223,11 @@ def _one_characteristic(om: float, nv: float, tol: float, full_output: bool):
     misses tol (the general path warns and flags)."""
     from spectral_rod.characteristic import characteristic_double, double_error_estimate
 
-    hi = (1.0 + nv) / 2.0
-    err = min(float(double_error_estimate(om)), (hi - 1.0) + _EPS)
+    _, err = bounded_point(1.0, float(double_error_estimate(om)), nv)  # it does not need p*
     if err > tol:
         return None
     p, family = characteristic_double(om, nv)
-    p = min(max(p, 1.0), hi)
+    p, _ = bounded_point(p, err, nv)
     if not full_output:
         return p
     return CriticalLoad(p, "characteristic", 0, err, family, converged=True, tol=tol)

@@ -308,13 +308,13 @@ def test_scalar_large_twist_path(monkeypatch, reference):
 
 
 def test_few_brackets_in_floats_agree_with_the_array_refinement(reference):
-    """The refinement of a few brackets in Python floats (characteristic.FEW_BRACKETS) and of
+    """The refinement of a few brackets in Python floats (characteristic.FEW_POINTS) and of
     many on numpy arrays find the same roots to within the route's error estimate, and both
     meet the reference."""
-    from spectral_rod.characteristic import FEW_BRACKETS, double_error_estimate
+    from spectral_rod.characteristic import FEW_POINTS, double_error_estimate
 
     rng = np.random.default_rng(11)
-    tw = rng.uniform(50.0, 1000.0, 2 * FEW_BRACKETS + 1)
+    tw = rng.uniform(50.0, 1000.0, 2 * FEW_POINTS + 1)
     nv = np.exp(rng.uniform(0.0, np.log(1e3), tw.size))
     p_many, fam_many = characteristic_double_batch(tw, nv)
     for i in range(tw.size):

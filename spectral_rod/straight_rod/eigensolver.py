@@ -225,8 +225,8 @@ class _ShiftedModal:
     vectorised over the points took 1.5-3 times as long (points-last layout; 2.3-5.5 times
     points-first), and ``scipy.linalg.inv`` on the stack 1.7-2.4 times. Since 2026-12-05 large
     stacks are inverted by a checked 2 x 2-block recursion instead
-    (:func:`.stacked_inverse.stacked_inverse`: 0.52-0.77 of LAPACK's time from k = 10 and a few
-    hundred matrices on; the Figure 1 batch 0.93 of its time).
+    (:func:`.stacked_inverse.stacked_inverse`: 0.58-0.80 of LAPACK's time, its check included,
+    from k = 10 and a few hundred matrices on; the Figure 1 batch 0.93 of its time).
     Forming (K - SHIFT)^{-1} itself from these blocks (three products with the shared G's), so
     that a step is one batched product, was measured on 2026-12-03 (:func:`lowest_eigenpair`,
     symmetric family, random Figure 1 points, n = 18, 22, 26, 9 interleaved rounds): a step took

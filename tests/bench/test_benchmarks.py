@@ -50,7 +50,7 @@ FLOORS = {
     "batches of 10": 2.5, "scalar loop": 2.0, "one-point arrays": 2.0, "brentq search": 2.0,
     "map collocation part": 3.0, "map colloc., equal n": 10.0, "map all points": 3.0,
     "large twist": 20.0, "near-degenerate": 20.0,
-    # first measured 2026-12-05: 6-7 and 16-17 (scalar calls against the same yardsticks)
+    # first measured 2026-12-05: 6.6 and 13-21 (scalar calls against the same yardsticks)
     "large twist, scalar": 3.0, "near-degenerate, scalar": 6.0,
 }
 TOL = 1e-12
