@@ -27,15 +27,17 @@ from spectral_rod.straight_rod.discretisation import family_operator
 from spectral_rod.straight_rod.resolution import initial_degree
 
 
-def contraction(n: int, family: str, tw: np.ndarray, nv: np.ndarray) -> np.ndarray:
-    """(lambda_1 - SHIFT)/(lambda_2 - SHIFT) per point, from the full eig with the rule."""
+def contraction(n: int, family: str, tw: np.ndarray, nv: np.ndarray, j: int = 2
+                ) -> np.ndarray:
+    """(lambda_1 - SHIFT)/(lambda_j - SHIFT) per point, from the full eig with the rule (j = 3:
+    the contraction once the second eigenvector's component is removed)."""
     a, b = family_operator(n, family).pencil(tw, nv)
     theta = np.linalg.eigvals(np.linalg.solve(a, np.broadcast_to(b, a.shape)))
     out = []
     for row in theta:
         ok = (np.abs(row.imag) <= E.IMAG_REL * np.abs(row)) & (row.real > 0)
         lam = np.sort(1.0 / row.real[ok])
-        out.append((lam[0] - SHIFT) / (lam[1] - SHIFT))
+        out.append((lam[0] - SHIFT) / (lam[j - 1] - SHIFT))
     return np.array(out)
 
 
