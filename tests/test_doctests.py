@@ -20,8 +20,9 @@ CANDIDATES = sorted(
 
 
 def _has_examples(name: str) -> bool:
-    spec = importlib.util.find_spec(name)
-    return spec is not None and spec.origin is not None and ">>> " in Path(spec.origin).read_text()
+    spec = importlib.util.find_spec(name)  # a compiled module's origin is not Python source
+    return (spec is not None and spec.origin is not None and spec.origin.endswith(".py")
+            and ">>> " in Path(spec.origin).read_text())
 
 
 #: The modules with docstring examples (each must run at least one).

@@ -28,11 +28,13 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from functools import lru_cache
+from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import NDArray
 
 from spectral_rod.families import SHIFT
+from spectral_rod.straight_rod import modal_kernel
 from spectral_rod.straight_rod.discretisation import (
     INST1,
     FamilyOperator,
@@ -40,11 +42,12 @@ from spectral_rod.straight_rod.discretisation import (
     term_coefficients,
 )
 from spectral_rod.straight_rod.resolution import mode_tails
-from spectral_rod.straight_rod.stacked_inverse import stacked_inverse
+from spectral_rod.straight_rod.stacked_inverse import BACKWARD_TOL, stacked_inverse
 
-__all__ = ["CALIBRATED_TOL", "ISOLATION_GAP", "ModalFamily", "iteration_allowance",
-           "iteration_rtol", "lowest_eigenpair", "lowest_gap", "modal_family",
-           "pencil_rayleigh_quotient", "physical_eig", "solve_family", "solve_family_eig"]
+__all__ = ["CALIBRATED_TOL", "ISOLATION_GAP", "KERNEL_MAX_SCHUR", "ModalFamily", "ModalParts",
+           "iteration_allowance", "iteration_rtol", "lowest_eigenpair", "lowest_gap",
+           "modal_family", "modal_parts", "pencil_rayleigh_quotient", "physical_eig",
+           "solve_family", "solve_family_eig", "uses_kernel"]
 
 #: Eigenvalues with |Im| above this fraction of |lambda| are complex, i.e. not physical.
 IMAG_REL = 1.0e-8
@@ -204,6 +207,42 @@ def _real_eig(s: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.f
     return lam.real[order], u.real[:, order]
 
 
+class ModalParts(NamedTuple):
+    """K - SHIFT at a batch of points in the blocks of :class:`_ShiftedModal`, before its Schur
+    complement is formed: the columns of the eliminated (e) and Schur (s) blocks, r_e (P, k_e) =
+    1 / (D_e - SHIFT), the coupling factors a, b (P, 1), d_s (P, k_s) = D_s - SHIFT and the
+    shared G_es (k_e, k_s), G_se (k_s, k_e)."""
+
+    elim: slice
+    kept: slice
+    r_e: NDArray[np.float64]
+    a: NDArray[np.float64]
+    b: NDArray[np.float64]
+    d_s: NDArray[np.float64]
+    g_es: NDArray[np.float64]
+    g_se: NDArray[np.float64]
+
+    def take(self, idx: NDArray[np.int_]) -> ModalParts:
+        """The points `idx` only."""
+        return self._replace(r_e=self.r_e[idx], a=self.a[idx], b=self.b[idx],
+                             d_s=self.d_s[idx])
+
+
+def modal_parts(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np.float64]
+                ) -> ModalParts:
+    """:class:`ModalParts` of family `mf` at the points (twist, nu)."""
+    coef = term_coefficients(twist, nu)[:, :, None]  # (P, terms, 1)
+    (s1, z1, c1), (s2, z2, c2) = MODAL_TERMS
+    d1, d2 = coef[:, z1] - coef[:, s1] * mf.lam1, coef[:, z2] - coef[:, s2] * mf.lam2
+    a1, a2 = 2.0 * coef[:, c1], 2.0 * coef[:, c2]  # d/ds = 2 d/dx
+    k1 = mf.lam1.size
+    if mf.schur == 2:
+        return ModalParts(slice(0, k1), slice(k1, None), 1.0 / (d1 - SHIFT), a1, a2,
+                          d2 - SHIFT, mf.g12, mf.g21)
+    return ModalParts(slice(k1, None), slice(0, k1), 1.0 / (d2 - SHIFT), a2, a1, d1 - SHIFT,
+                      mf.g21, mf.g12)
+
+
 @dataclass(frozen=True)
 class _ShiftedModal:
     """K - SHIFT at a batch of points, factorised through a Schur complement.
@@ -247,22 +286,14 @@ class _ShiftedModal:
     @classmethod
     def at(cls, mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np.float64]
            ) -> _ShiftedModal:
-        coef = term_coefficients(twist, nu)[:, :, None]  # (P, terms, 1)
-        (s1, z1, c1), (s2, z2, c2) = MODAL_TERMS
-        d1, d2 = coef[:, z1] - coef[:, s1] * mf.lam1, coef[:, z2] - coef[:, s2] * mf.lam2
-        a1, a2 = 2.0 * coef[:, c1], 2.0 * coef[:, c2]  # d/ds = 2 d/dx
-        k1 = mf.lam1.size
-        if mf.schur == 2:
-            elim, kept, d_e, d_s, a, b, g_es, g_se = (slice(0, k1), slice(k1, None), d1, d2,
-                                                      a1, a2, mf.g12, mf.g21)
-        else:
-            elim, kept, d_e, d_s, a, b, g_es, g_se = (slice(k1, None), slice(0, k1), d2, d1,
-                                                      a2, a1, mf.g21, mf.g12)
-        r_e = 1.0 / (d_e - SHIFT)
-        k_s = d_s.shape[1]
-        schur = ((-a * b * r_e) @ mf.outer).reshape(-1, k_s, k_s)
-        schur[:, np.arange(k_s), np.arange(k_s)] += d_s - SHIFT
-        return cls(elim, kept, r_e, a, b, g_es, g_se,
+        return cls.from_parts(mf, modal_parts(mf, twist, nu))
+
+    @classmethod
+    def from_parts(cls, mf: ModalFamily, pt: ModalParts) -> _ShiftedModal:
+        k_s = pt.d_s.shape[1]
+        schur = ((-pt.a * pt.b * pt.r_e) @ mf.outer).reshape(-1, k_s, k_s)
+        schur[:, np.arange(k_s), np.arange(k_s)] += pt.d_s
+        return cls(pt.elim, pt.kept, pt.r_e, pt.a, pt.b, pt.g_es, pt.g_se,
                    stacked_inverse(schur))  # LinAlgError if singular
 
     def take(self, idx: NDArray[np.int_]) -> _ShiftedModal:
@@ -297,6 +328,18 @@ class _ShiftedModal:
         return self._assemble(u - self.b * (z_s @ self.g_se) * self.r_e, z_s)
 
 
+#: The C kernel (:mod:`.modal_kernel`) iterates where the Schur block has at most this many
+#: unknowns (degree n <= ~128); above, its unblocked loops lose to LAPACK's blocked ones
+#: (measured 2026-12-05, random points, tol 1e-12, kernel / numpy time a point: n = 22 0.19-0.33,
+#: 64 0.45-0.52, 100 0.50-0.60, 128 0.45-0.63, 144 0.55-0.68, 160 0.69-1.01; 0.8 at n = 256).
+KERNEL_MAX_SCHUR = 64
+
+
+def uses_kernel(k_s: int) -> bool:
+    """Whether :func:`lowest_eigenpair` iterates by the C kernel at Schur block size k_s."""
+    return k_s <= KERNEL_MAX_SCHUR and modal_kernel.available()
+
+
 def _rowdot(a: NDArray[np.float64], b: NDArray[np.float64]) -> NDArray[np.float64]:
     """Row-wise dot products (numpy >= 2.0 has ``np.vecdot``; this works on older numpy too)."""
     return np.einsum("ij,ij->i", a, b)
@@ -325,6 +368,12 @@ def lowest_eigenpair(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np
     needed to be shown higher than another family's eigenvalue: "above", lambda approximate).
     Points are dropped from the iteration as they finish.
 
+    Where the Schur block is small enough (:func:`uses_kernel`) the iteration is the C kernel's
+    (:mod:`.modal_kernel`: the same algorithm, 32 points side by side, 3-5 times faster at
+    Figure 1's degrees), with this function's numpy iteration (:func:`_iterate`) for any point
+    whose unpivoted factors the kernel rejects; elsewhere, and where the kernel is not
+    installed, the numpy iteration alone.
+
     The estimate assumes the eigenvalue is isolated: for two of the family's eigenvalues a gap
     delta apart it is ~delta^2 |mix|^2 while the error is ~delta |mix|^2, so a mixed vector
     passes once delta^2 < rtol lambda. Seen only in the antisymmetric family near nu = 4 at
@@ -336,30 +385,61 @@ def lowest_eigenpair(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np
     (:func:`.collocation.collocation_family_load`) is first checked by :func:`lowest_gap`
     against :data:`ISOLATION_GAP`.
 
-    The right and left solves are separate calls. Stacking them in one (2, points, k) array,
+    In the numpy iteration the right and left solves are separate calls. Stacking them in one (2, points, k) array,
     with [S^{-1}, S^{-T}] stored (half the numpy calls), was measured on 2026-12-02 against this
     code (symmetric family, tol 1e-12, 40 interleaved runs each): faster only at 10 points
     (0.82 of the time), where the lean solver answers anyway; 0.94 at 100 points and slower
     from 400 on (1.20 at 400, 1.27 at 1,200 points at n = 22, 1.36 at n = 40). The stored
     transpose doubles the memory each step reads.
     """
-    sk = _ShiftedModal.at(mf, twist, nu)
+    pt = modal_parts(mf, twist, nu)
     start = _start_vector(mf.lam1.size + mf.lam2.size)
-    x = np.broadcast_to(start / np.linalg.norm(start), (twist.size, start.size))
+    start = start / np.linalg.norm(start)
+    first = FIRST_CHECK if rtol < LOOSE_RTOL else LOOSE_FIRST_CHECK
+    if ceiling is not None:
+        first = min(first, 4)
+    if not uses_kernel(pt.d_s.shape[1]):
+        return _iterate(_ShiftedModal.from_parts(mf, pt), start, rtol, ceiling, first,
+                        max_steps)
+    res = modal_kernel.modal_lowest(pt.r_e, pt.a, pt.b, pt.d_s, pt.g_es, pt.g_se,
+                                    start[pt.elim], start[pt.kept], ceiling, shift=SHIFT,
+                                    rtol=rtol, first=first, max_steps=max_steps,
+                                    backward_tol=BACKWARD_TOL)
+    size = start.size
+    vec, left = np.empty((twist.size, size)), np.empty((twist.size, size))
+    vec[:, pt.elim], vec[:, pt.kept], left[:, pt.elim], left[:, pt.kept] = \
+        res.x_e, res.x_s, res.y_e, res.y_s
+    lam = res.lam
+    ok, above = res.status == modal_kernel.CONVERGED, res.status == modal_kernel.ABOVE
+    rejected = np.flatnonzero(res.status == modal_kernel.REJECTED)
+    if rejected.size:  # the numpy iteration, with LAPACK's pivoted inverse where needed
+        sub = _iterate(_ShiftedModal.from_parts(mf, pt.take(rejected)), start, rtol,
+                       None if ceiling is None else ceiling[rejected], first, max_steps)
+        lam[rejected], vec[rejected], left[rejected], ok[rejected], above[rejected] = sub
+    return lam, vec, left, ok, above
+
+
+def _iterate(sk: _ShiftedModal, start: NDArray[np.float64], rtol: float,
+             ceiling: NDArray[np.float64] | None, first: int, max_steps: int
+             ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64],
+                        NDArray[np.bool_], NDArray[np.bool_]]:
+    """The iteration of :func:`lowest_eigenpair` in numpy, from a unit start vector, with the
+    first test at step `first` (then every 2 steps)."""
+    points = sk.r_e.shape[0]
+    x = np.broadcast_to(start, (points, start.size))
     y = x
-    lam = np.full(twist.size, np.nan)
-    vec = np.zeros((twist.size, start.size))
+    lam = np.full(points, np.nan)
+    vec = np.zeros((points, start.size))
     left = np.zeros_like(vec)
-    ok = np.zeros(twist.size, dtype=bool)
-    above = np.zeros(twist.size, dtype=bool)
-    active = np.arange(twist.size)
+    ok = np.zeros(points, dtype=bool)
+    above = np.zeros(points, dtype=bool)
+    active = np.arange(points)
     for step in range(1, max_steps + 1):
         # each step scales by <= ~1/(0.05 pi^2) and >= ~1/lambda_max: normalising at the
         # checks (every 2 steps) keeps the vectors far from overflow and underflow
         x_prev, y_prev = x, y
         x, y = sk.solve(x), sk.solve_transposed(y)
-        first = FIRST_CHECK if rtol < LOOSE_RTOL else LOOSE_FIRST_CHECK
-        if step < (first if ceiling is None else min(first, 4)) or step % 2:
+        if step < first or step % 2:
             continue
         sx, sy = _unit_rows(x), _unit_rows(y)
         x, y = x * sx, y * sy

@@ -1,0 +1,336 @@
+/* The batched engine's lowest eigenpair of Eq. inst1 (modal form), LANES points at a time.
+
+   The same algorithm as the numpy code of spectral_rod/straight_rod/eigensolver.py
+   (_ShiftedModal and lowest_eigenpair; its docstrings explain it) for a stack of points:
+   the Schur complement S of K - SHIFT, its LU factors, shift-and-invert steps on right and
+   left vectors and the first-order convergence test. The arithmetic of LANES points runs side
+   by side: every array below is laid out [index][lane], so each inner loop is over the lanes
+   and the compiler vectorises it (points are independent; one point's own loops are short
+   and dependent, which is what made a loop per point no faster than numpy).
+
+   Differences from the numpy code, both checked per point: the LU has no pivoting (S is a
+   Schur complement of K - SHIFT with SHIFT below every physical eigenvalue, far from singular;
+   as spectral_rod/straight_rod/stacked_inverse.py, a probe's backward error accepts the
+   factors or rejects the point, status REJECTED, and the caller solves it by the numpy code),
+   and a finished point stays in its group of LANES until the group is done (its results are
+   taken when it finishes).
+
+   Loaded with ctypes by spectral_rod/straight_rod/modal_kernel.py; the Python module stub at
+   the end only makes the build an importable extension. */
+
+#define PY_SSIZE_T_CLEAN
+#include <Python.h> /* first, as Python's headers require; used only by the module stub */
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define LANES 32
+
+/* Where GCC and glibc allow it (ifunc), the kernel is compiled for three instruction sets and
+   the best one the CPU has is picked at load time; every helper is inlined into it. */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+#define CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#else
+#define CLONES
+#endif
+#if defined(__GNUC__)
+#define INLINE static inline __attribute__((always_inline))
+#else
+#define INLINE static inline
+#endif
+
+enum { NOT_CONVERGED = 0, CONVERGED = 1, ABOVE = 2, REJECTED = -1 };
+
+#define AT(m, i) ((m) + (size_t)(i) * LANES)
+
+/* S[r][c] = delta_rc d_s[r] - a b sum_j g_se[r][j] r_e[j] g_es[j][c], then S = L U in place
+   (unit L below the diagonal, 1/U_cc on it); a copy of S in s0 for the check. */
+INLINE void factorise(int ke, int ks, const double *re, const double *ab, const double *ds,
+                      const double *g_es, const double *g_se, double *s, double *s0) {
+  for (int r = 0; r < ks; r++) {
+    for (int c = 0; c < ks; c++) {
+      double *src = AT(s, r * ks + c);
+      for (int w = 0; w < LANES; w++) src[w] = 0.0;
+    }
+    for (int j = 0; j < ke; j++) {
+      double cw[LANES];
+      const double g = g_se[r * ke + j], *rj = AT(re, j), *gj = g_es + (size_t)j * ks;
+      for (int w = 0; w < LANES; w++) cw[w] = -ab[w] * g * rj[w];
+      for (int c = 0; c < ks; c++) {
+        double *src = AT(s, r * ks + c);
+        const double gc = gj[c];
+        for (int w = 0; w < LANES; w++) src[w] += cw[w] * gc;
+      }
+    }
+    double *srr = AT(s, r * ks + r);
+    const double *dr = AT(ds, r);
+    for (int w = 0; w < LANES; w++) srr[w] += dr[w];
+  }
+  memcpy(s0, s, sizeof(double) * LANES * ks * ks);
+  for (int c = 0; c < ks; c++) {
+    double *scc = AT(s, c * ks + c), inv[LANES];
+    for (int w = 0; w < LANES; w++) scc[w] = inv[w] = 1.0 / scc[w];
+    for (int r = c + 1; r < ks; r++) {
+      double *src = AT(s, r * ks + c), l[LANES];
+      for (int w = 0; w < LANES; w++) src[w] = l[w] = src[w] * inv[w];
+      for (int j = c + 1; j < ks; j++) {
+        double *srj = AT(s, r * ks + j);
+        const double *scj = AT(s, c * ks + j);
+        for (int w = 0; w < LANES; w++) srj[w] -= l[w] * scj[w];
+      }
+    }
+  }
+}
+
+/* t = S^{-1} t from the factors */
+INLINE void lu_solve(int ks, const double *s, double *t) {
+  for (int r = 1; r < ks; r++) {
+    double *tr = AT(t, r);
+    for (int j = 0; j < r; j++) {
+      const double *l = AT(s, r * ks + j), *tj = AT(t, j);
+      for (int w = 0; w < LANES; w++) tr[w] -= l[w] * tj[w];
+    }
+  }
+  for (int r = ks - 1; r >= 0; r--) {
+    double *tr = AT(t, r);
+    for (int j = r + 1; j < ks; j++) {
+      const double *u = AT(s, r * ks + j), *tj = AT(t, j);
+      for (int w = 0; w < LANES; w++) tr[w] -= u[w] * tj[w];
+    }
+    const double *d = AT(s, r * ks + r);
+    for (int w = 0; w < LANES; w++) tr[w] *= d[w];
+  }
+}
+
+/* t = S^{-T} t from the factors (S^T = U^T L^T) */
+INLINE void lu_solve_transposed(int ks, const double *s, double *t) {
+  for (int r = 0; r < ks; r++) {
+    double *tr = AT(t, r);
+    for (int j = 0; j < r; j++) {
+      const double *u = AT(s, j * ks + r), *tj = AT(t, j);
+      for (int w = 0; w < LANES; w++) tr[w] -= u[w] * tj[w];
+    }
+    const double *d = AT(s, r * ks + r);
+    for (int w = 0; w < LANES; w++) tr[w] *= d[w];
+  }
+  for (int r = ks - 1; r >= 0; r--) {
+    double *tr = AT(t, r);
+    for (int j = r + 1; j < ks; j++) {
+      const double *l = AT(s, j * ks + r), *tj = AT(t, j);
+      for (int w = 0; w < LANES; w++) tr[w] -= l[w] * tj[w];
+    }
+  }
+}
+
+INLINE double nan_max(double a, double b) { return (b > a || b != b) ? b : a; }
+
+/* Whether the factors pass the probe test of stacked_inverse.py, per lane:
+   |S0 x - v| <= tol max|diag S0| |x| (max norms), x = S^{-1} v; nan or inf fails. */
+INLINE void probe_check(int ks, const double *s, const double *s0, double tol, double *t,
+                        int *ok) {
+  double res[LANES], xmax[LANES], dmax[LANES];
+  for (int c = 0; c < ks; c++) {
+    const double v = (1.0 + (ks > 1 ? (double)c / (ks - 1) : 0.0)) * (c % 2 ? -1.0 : 1.0);
+    double *tc = AT(t, c);
+    for (int w = 0; w < LANES; w++) tc[w] = v;
+  }
+  lu_solve(ks, s, t);
+  for (int w = 0; w < LANES; w++) res[w] = xmax[w] = dmax[w] = 0.0;
+  for (int r = 0; r < ks; r++) {
+    const double v = (1.0 + (ks > 1 ? (double)r / (ks - 1) : 0.0)) * (r % 2 ? -1.0 : 1.0);
+    double acc[LANES];
+    for (int w = 0; w < LANES; w++) acc[w] = -v;
+    for (int c = 0; c < ks; c++) {
+      const double *a = AT(s0, r * ks + c), *tc = AT(t, c);
+      for (int w = 0; w < LANES; w++) acc[w] += a[w] * tc[w];
+    }
+    const double *d = AT(s0, r * ks + r), *tr = AT(t, r);
+    for (int w = 0; w < LANES; w++) {  /* maxima that keep a nan (fmax would drop it) */
+      res[w] = nan_max(res[w], fabs(acc[w]));
+      xmax[w] = nan_max(xmax[w], fabs(tr[w]));
+      dmax[w] = nan_max(dmax[w], fabs(d[w]));
+    }
+  }
+  for (int w = 0; w < LANES; w++)
+    ok[w] = isfinite(xmax[w]) && isfinite(dmax[w]) && res[w] <= tol * dmax[w] * xmax[w];
+}
+
+/* x = (K - SHIFT)^{-1} p (transposed: (K - SHIFT)^{-T}), in the modal blocks e and s:
+   u = p_e r_e; x_s = S^{-1} (p_s - b G_se u); x_e = u - a r_e G_es x_s (a and b, G_es and
+   G_se exchanged, S^{-T}, for the transpose) */
+INLINE void shifted_solve(int ke, int ks, const double *s, const double *re, const double *a,
+                          const double *b, const double *g_es, const double *g_se,
+                          int transposed, const double *pe, const double *ps, double *xe,
+                          double *xs) {
+  for (int j = 0; j < ke; j++) {
+    double *xj = AT(xe, j);
+    const double *pj = AT(pe, j), *rj = AT(re, j);
+    for (int w = 0; w < LANES; w++) xj[w] = pj[w] * rj[w];
+  }
+  for (int r = 0; r < ks; r++) {  /* (G u)_r: G_se u, or G_es^T u */
+    double acc[LANES] = {0.0};
+    for (int j = 0; j < ke; j++) {
+      const double g = transposed ? g_es[(size_t)j * ks + r] : g_se[(size_t)r * ke + j];
+      const double *xj = AT(xe, j);
+      for (int w = 0; w < LANES; w++) acc[w] += g * xj[w];
+    }
+    double *xr = AT(xs, r);
+    const double *pr = AT(ps, r), *c = transposed ? a : b;
+    for (int w = 0; w < LANES; w++) xr[w] = pr[w] - c[w] * acc[w];
+  }
+  if (transposed) lu_solve_transposed(ks, s, xs); else lu_solve(ks, s, xs);
+  for (int j = 0; j < ke; j++) {  /* (G x_s)_j: G_es x_s, or G_se^T x_s */
+    double acc[LANES] = {0.0};
+    for (int r = 0; r < ks; r++) {
+      const double g = transposed ? g_se[(size_t)r * ke + j] : g_es[(size_t)j * ks + r];
+      const double *xr = AT(xs, r);
+      for (int w = 0; w < LANES; w++) acc[w] += g * xr[w];
+    }
+    double *xj = AT(xe, j);
+    const double *rj = AT(re, j), *c = transposed ? b : a;
+    for (int w = 0; w < LANES; w++) xj[w] -= c[w] * acc[w] * rj[w];
+  }
+}
+
+INLINE double sum_sq(int k, const double *v, int w) {
+  double acc = 0.0;
+  for (int j = 0; j < k; j++) acc += AT(v, j)[w] * AT(v, j)[w];
+  return acc;
+}
+
+/* The convergence test of lowest_eigenpair at one lane: normalises x and y, returns the
+   two-sided quotient and sets the first-order error bound. */
+INLINE double lane_test(int ke, int ks, double shift, int w, double *xe, double *xs, double *ye,
+                        double *ys, const double *pe, const double *ps, const double *qe,
+                        const double *qs, double *bound) {
+  const double sx = 1.0 / sqrt(sum_sq(ke, xe, w) + sum_sq(ks, xs, w));
+  const double sy = 1.0 / sqrt(sum_sq(ke, ye, w) + sum_sq(ks, ys, w));
+  double yx = 0.0, ykx = 0.0, rx = 0.0, ry = 0.0;
+  for (int blk = 0; blk < 2; blk++) {
+    const int k = blk ? ks : ke;
+    double *x = blk ? xs : xe, *y = blk ? ys : ye;
+    const double *p = blk ? ps : pe;
+    for (int j = 0; j < k; j++) {
+      double *xj = AT(x, j) + w, *yj = AT(y, j) + w;
+      *xj *= sx;
+      *yj *= sy;
+      yx += *yj * *xj;
+      ykx += *yj * (shift * *xj + AT(p, j)[w] * sx);
+    }
+  }
+  const double rq = ykx / yx;
+  for (int blk = 0; blk < 2; blk++) {
+    const int k = blk ? ks : ke;
+    const double *x = blk ? xs : xe, *y = blk ? ys : ye, *p = blk ? ps : pe,
+                 *q = blk ? qs : qe;
+    for (int j = 0; j < k; j++) {
+      const double u = shift * AT(x, j)[w] + AT(p, j)[w] * sx - rq * AT(x, j)[w];
+      const double v = shift * AT(y, j)[w] + AT(q, j)[w] * sy - rq * AT(y, j)[w];
+      rx += u * u;
+      ry += v * v;
+    }
+  }
+  *bound = sqrt(rx * ry) / fabs(yx);
+  return rq;
+}
+
+INLINE void put_lane(int k, const double *v, int w, double *out) {
+  for (int j = 0; j < k; j++) out[j] = AT(v, j)[w];
+}
+
+/* One group of `count` <= LANES points starting at point i0 (lanes past count repeat the last
+   point and are ignored). */
+INLINE void solve_group(int i0, int count, int ke, int ks, const double *r_e, const double *a,
+                        const double *b, const double *d_s, const double *g_es,
+                        const double *g_se, const double *start_e, const double *start_s,
+                        const double *ceiling, double shift, double rtol, int first,
+                        int max_steps, double backward_tol, double *work, double *lam,
+                        double *x_e, double *x_s, double *y_e, double *y_s, int *status) {
+  double *s = work, *s0 = s + (size_t)LANES * ks * ks, *re = s0 + (size_t)LANES * ks * ks;
+  double *ds = re + (size_t)LANES * ke, *xe = ds + (size_t)LANES * ks;
+  double *ye = xe + (size_t)LANES * ke, *pe = ye + (size_t)LANES * ke;
+  double *qe = pe + (size_t)LANES * ke, *xs = qe + (size_t)LANES * ke;
+  double *ys = xs + (size_t)LANES * ks, *ps = ys + (size_t)LANES * ks;
+  double *qs = ps + (size_t)LANES * ks, *t = qs + (size_t)LANES * ks;
+  double al[LANES], bl[LANES], ab[LANES];
+  int done[LANES], ok[LANES];
+  for (int w = 0; w < LANES; w++) {
+    const int i = i0 + (w < count ? w : count - 1);
+    al[w] = a[i];
+    bl[w] = b[i];
+    ab[w] = a[i] * b[i];
+    for (int j = 0; j < ke; j++) AT(re, j)[w] = r_e[(size_t)i * ke + j];
+    for (int j = 0; j < ks; j++) AT(ds, j)[w] = d_s[(size_t)i * ks + j];
+  }
+  factorise(ke, ks, re, ab, ds, g_es, g_se, s, s0);
+  probe_check(ks, s, s0, backward_tol, t, ok);
+  for (int w = 0; w < LANES; w++) {
+    done[w] = w >= count || !ok[w];
+    if (w < count && !ok[w]) status[i0 + w] = REJECTED;
+  }
+  for (int j = 0; j < ke; j++)
+    for (int w = 0; w < LANES; w++) AT(xe, j)[w] = AT(ye, j)[w] = start_e[j];
+  for (int j = 0; j < ks; j++)
+    for (int w = 0; w < LANES; w++) AT(xs, j)[w] = AT(ys, j)[w] = start_s[j];
+  for (int step = 1; step <= max_steps; step++) {
+    memcpy(pe, xe, sizeof(double) * LANES * ke);
+    memcpy(ps, xs, sizeof(double) * LANES * ks);
+    memcpy(qe, ye, sizeof(double) * LANES * ke);
+    memcpy(qs, ys, sizeof(double) * LANES * ks);
+    shifted_solve(ke, ks, s, re, al, bl, g_es, g_se, 0, pe, ps, xe, xs);
+    shifted_solve(ke, ks, s, re, al, bl, g_es, g_se, 1, qe, qs, ye, ys);
+    if (step < first || step % 2) continue;
+    int all = 1;
+    for (int w = 0; w < LANES; w++) {
+      if (done[w]) continue;
+      double bound;
+      const double rq = lane_test(ke, ks, shift, w, xe, xs, ye, ys, pe, ps, qe, qs, &bound);
+      const int i = i0 + w;
+      const int conv = bound <= rtol * fabs(rq) && rq >= shift;
+      const int high = !conv && ceiling && rq - 100.0 * bound > ceiling[i];
+      if (conv || high || step + 2 > max_steps) {
+        done[w] = 1;
+        lam[i] = rq;
+        status[i] = conv ? CONVERGED : high ? ABOVE : NOT_CONVERGED;
+        put_lane(ke, xe, w, x_e + (size_t)i * ke);
+        put_lane(ks, xs, w, x_s + (size_t)i * ks);
+        put_lane(ke, ye, w, y_e + (size_t)i * ke);
+        put_lane(ks, ys, w, y_s + (size_t)i * ks);
+      } else {
+        all = 0;
+      }
+    }
+    if (all) break;
+  }
+}
+
+/* The lowest eigenpair of P points (arrays row-major, one row a point; see modal_kernel.py).
+   Returns 0, or -1 if the workspace could not be allocated (nothing is solved then). */
+CLONES int modal_lowest(int P, int ke, int ks, const double *r_e, const double *a, const double *b,
+                 const double *d_s, const double *g_es, const double *g_se,
+                 const double *start_e, const double *start_s, const double *ceiling,
+                 double shift, double rtol, int first, int max_steps, double backward_tol,
+                 double *lam, double *x_e, double *x_s, double *y_e, double *y_s,
+                 int *status) {
+  double *work = malloc(sizeof(double) * LANES * (2 * (size_t)ks * ks + 5 * (size_t)ke
+                                                  + 6 * (size_t)ks));
+  if (!work) return -1;
+  for (int i0 = 0; i0 < P; i0 += LANES)
+    solve_group(i0, P - i0 < LANES ? P - i0 : LANES, ke, ks, r_e, a, b, d_s, g_es, g_se,
+                start_e, start_s, ceiling, shift, rtol, first, max_steps, backward_tol, work,
+                lam, x_e, x_s, y_e, y_s, status);
+  free(work);
+  return 0;
+}
+
+int modal_lanes(void) { return LANES; }
+
+/* The module stub: the build is an importable extension (so that setuptools builds it on every
+   platform); the kernel itself is called through ctypes. */
+
+static struct PyModuleDef module = {
+    PyModuleDef_HEAD_INIT, "_modal_kernel",
+    "C kernel of the batched engine (loaded with ctypes).", -1, NULL, NULL, NULL, NULL, NULL};
+
+PyMODINIT_FUNC PyInit__modal_kernel(void) { return PyModule_Create(&module); }

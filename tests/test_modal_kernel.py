@@ -1,0 +1,119 @@
+"""The batched engine's C kernel (spectral_rod/straight_rod/modal_kernel.py) against the numpy
+iteration of the same algorithm (eigensolver._iterate), which is its reference and fallback."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from spectral_rod import load_figure1
+from spectral_rod.families import SHIFT
+from spectral_rod.straight_rod import eigensolver as E
+from spectral_rod.straight_rod import modal_kernel
+from spectral_rod.straight_rod.stacked_inverse import BACKWARD_TOL
+
+needs_kernel = pytest.mark.skipif(not modal_kernel.available(),
+                                  reason="the C kernel is not built here")
+
+
+def _points(n: int, count: int = 300, seed: int = 5):
+    rng = np.random.default_rng(seed + n)
+    return rng.uniform(0.0, max(1.0, 1.8 * (n - 16)), count), rng.uniform(1.0, 100.0, count)
+
+
+def _numpy_pair(mf, twist, nu, rtol, ceiling=None):
+    start = E._start_vector(mf.lam1.size + mf.lam2.size)
+    first = E.FIRST_CHECK if rtol < E.LOOSE_RTOL else E.LOOSE_FIRST_CHECK
+    if ceiling is not None:
+        first = min(first, 4)
+    return E._iterate(E._ShiftedModal.at(mf, twist, nu), start / np.linalg.norm(start), rtol,
+                      ceiling, first, E.POWER_STEPS)
+
+
+@needs_kernel
+@pytest.mark.parametrize("n", [12, 22, 32, 48, 64, 96])
+@pytest.mark.parametrize("family", ["symmetric", "antisymmetric"])
+@pytest.mark.parametrize("rtol", [E.POWER_RTOL, 1e-6])
+def test_kernel_agrees_with_the_numpy_iteration(n, family, rtol):
+    mf = E.modal_family(n, family)
+    twist, nu = _points(n)
+    assert E.uses_kernel(mf.lam2.size if mf.schur == 2 else mf.lam1.size) == (n <= 128)
+    lam, z, w, ok, above = E.lowest_eigenpair(mf, twist, nu, rtol=rtol)
+    ref_lam, ref_z, ref_w, ref_ok, _ = _numpy_pair(mf, twist, nu, rtol)
+    assert not above.any()
+    both = ok & ref_ok
+    assert both.sum() >= 0.97 * twist.size  # the two stop at the same step but for rounding
+    # the modal quotient carries K's round-off, eps n^4 (module docstring): compare to it
+    scale = max(rtol, 1e-16 * (n / 4.0) ** 4)
+    assert np.max(np.abs(lam[both] / ref_lam[both] - 1)) <= 50 * scale
+    # unit vectors (up to sign they are the same eigenvector)
+    for got, ref in ((z, ref_z), (w, ref_w)):
+        cos = np.abs(np.einsum("ij,ij->i", got[both], ref[both]))
+        assert np.allclose(np.linalg.norm(got[both], axis=1), 1.0)
+        assert np.min(cos) >= 1 - 1e-8
+
+
+@needs_kernel
+def test_kernel_ceiling_marks_the_same_points_above():
+    d = load_figure1()
+    twist, nu = d["twist_angle"].to_numpy(), d["nu"].to_numpy()
+    sym = E.modal_family(22, "symmetric")
+    anti = E.modal_family(22, "antisymmetric")
+    ceiling = E.lowest_eigenpair(sym, twist, nu)[0] * (1 + 1e-6)
+    lam, _, _, ok, above = E.lowest_eigenpair(anti, twist, nu, ceiling=ceiling)
+    ref_lam, _, _, ref_ok, ref_above = _numpy_pair(anti, twist, nu, E.POWER_RTOL, ceiling)
+    assert above.sum() > 100 and ok.sum() > 100  # both outcomes occur on Figure 1's points
+    assert np.array_equal(above, ref_above) and np.array_equal(ok, ref_ok)
+    assert np.max(np.abs(lam[ok] / ref_lam[ok] - 1)) <= 1e-13
+
+
+@needs_kernel
+def test_kernel_rejects_factors_it_cannot_trust():
+    # diagonal Schur complements (r_e = 0): one singular, one with a NaN, the rest fine
+    k_e, k_s, points = 5, 4, 40
+    d_s = np.tile(np.arange(1.0, k_s + 1.0), (points, 1)) * 10.0
+    d_s[3, 0], d_s[17, 2] = 0.0, np.nan
+    rng = np.random.default_rng(0)
+    res = modal_kernel.modal_lowest(
+        np.zeros((points, k_e)), np.ones(points), np.ones(points), d_s,
+        rng.standard_normal((k_e, k_s)), rng.standard_normal((k_s, k_e)), np.full(k_e, 0.3),
+        np.full(k_s, 0.3), None, shift=SHIFT, rtol=1e-14, first=6, max_steps=40,
+        backward_tol=BACKWARD_TOL)
+    rejected = np.flatnonzero(res.status == modal_kernel.REJECTED)
+    assert rejected.tolist() == [3, 17]
+    # K - SHIFT = diag(...) here: the lowest eigenvalue is SHIFT + 10 (d_s = 10, 20, ...)
+    fine = res.status == modal_kernel.CONVERGED
+    assert fine.sum() == points - 2
+    assert np.allclose(res.lam[fine], SHIFT + 10.0, rtol=1e-14, atol=0)
+
+
+@needs_kernel
+def test_rejected_points_are_solved_by_the_numpy_iteration(monkeypatch):
+    mf = E.modal_family(22, "symmetric")
+    twist, nu = _points(22, 64)
+    want = E.lowest_eigenpair(mf, twist, nu)[0]
+    real = modal_kernel.modal_lowest
+
+    def reject_some(*args, **kwargs):
+        res = real(*args, **kwargs)
+        res.status[::5] = modal_kernel.REJECTED
+        res.lam[::5] = np.nan
+        return res
+
+    monkeypatch.setattr(modal_kernel, "modal_lowest", reject_some)
+    lam, _, _, ok, _ = E.lowest_eigenpair(mf, twist, nu)
+    assert ok.all()
+    assert np.max(np.abs(lam / want - 1)) <= 1e-13
+
+
+def test_without_the_kernel_the_numpy_iteration_answers(monkeypatch):
+    from spectral_rod import critical_load
+
+    d = load_figure1()
+    twist, nu = d["twist_angle"].to_numpy()[::7], d["nu"].to_numpy()[::7]
+    with_kernel = critical_load(twist, nu)
+    monkeypatch.setattr(modal_kernel, "_library", lambda: None)
+    assert not modal_kernel.available() and not E.uses_kernel(10)
+    without = critical_load(twist, nu)
+    # the same quotient from vectors that agree to rounding: within the round-off model
+    assert np.max(np.abs(with_kernel / without - 1)) <= 1e-14
