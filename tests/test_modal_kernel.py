@@ -117,3 +117,38 @@ def test_without_the_kernel_the_numpy_iteration_answers(monkeypatch):
     without = critical_load(twist, nu)
     # the same quotient from vectors that agree to rounding: within the round-off model
     assert np.max(np.abs(with_kernel / without - 1)) <= 1e-14
+
+
+@needs_kernel
+@pytest.mark.parametrize("family", ["symmetric", "antisymmetric"])
+def test_double_double_terms_agree_with_longdouble_and_mpmath(family, monkeypatch):
+    # the pencil quotient at large twist, where its terms cancel to ~lambda/Omega^2: the
+    # kernel's double-double products against numpy's longdouble ones and 50-digit sums
+    import mpmath as mp
+
+    n = 56
+    mf = E.modal_family(n, family)
+    twist, nu = np.linspace(20.5, 49.5, 24), np.linspace(1.0, 90.0, 24)
+    _, z, w, ok, _ = E.lowest_eigenpair(mf, twist, nu)
+    x, y = mf.right_vectors(z[ok]), mf.left_vectors(w[ok])
+    op, tw, nv = mf.op, twist[ok], nu[ok]
+    got = E._rayleigh_sums(op, tw, nv, y, x, np.longdouble)
+    monkeypatch.setattr(modal_kernel, "_library", lambda: None)
+    longdouble = E._rayleigh_sums(op, tw, nv, y, x, np.longdouble)
+    assert np.max(np.abs(got / longdouble - 1)) <= 4 * np.finfo(float).eps
+    shape, mats = E._term_matrices(n, family)
+    with mp.workdps(50):
+        for i in (0, len(tw) // 2, len(tw) - 1):
+            terms = []
+            for e_off, m_e, f_off, m_f, start in shape.tolist():
+                mat = mats[start:start + m_e * m_f].reshape(m_e, m_f)
+                terms.append(mp.fsum(mp.mpf(float(y[i, e_off + r])) * mp.mpf(float(mat[r, c]))
+                                     * mp.mpf(float(x[i, f_off + c]))
+                                     for r in range(m_e) for c in range(m_f)))
+            om, nv_i = mp.mpf(float(tw[i])), mp.mpf(float(nv[i]))
+            coef = [t.coefficient(om, nv_i) for t in E.INST1]
+            exact = (mp.fsum(c * t for c, t in zip(coef, terms, strict=True))
+                     / mp.fsum(terms[j] for j in E._MASS_TERMS))
+            # the code's coefficients in longdouble carry ~1e-19 Omega^2: the result rounds
+            # to double
+            assert abs(float(got[i] / exact) - 1) <= 4 * np.finfo(float).eps

@@ -90,3 +90,19 @@ def test_console_script_and_version():
     assert proc.returncode == 0
     assert proc.stdout.strip() == f"spectral_rod {spectral_rod.__version__}"
     json.dumps(figure1_schema())  # the sidecar is plain JSON
+
+
+def test_the_c_kernel_is_built_where_a_compiler_is():
+    # setup.py builds it as optional (a failed build still installs the package, with the
+    # numpy engine alone): where a C compiler is on PATH a missing kernel is a build failure
+    import shutil
+    import sysconfig
+
+    from spectral_rod.straight_rod import modal_kernel
+
+    compiler = (sysconfig.get_config_var("CC") or "cc").split()[0]
+    if shutil.which(compiler) is None:
+        import pytest
+
+        pytest.skip(f"no C compiler ({compiler}) here")
+    assert modal_kernel.available()

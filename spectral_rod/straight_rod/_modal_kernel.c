@@ -326,6 +326,80 @@ CLONES int modal_lowest(int P, int ke, int ks, const double *r_e, const double *
 
 int modal_lanes(void) { return LANES; }
 
+/* The pencil's bilinear forms y_e^T M_t x_f in double-double, for the two-sided Rayleigh
+   quotient at large twist (eigensolver.pencil_rayleigh_quotient, Eq. inst1), where its terms
+   cancel to ~lambda/Omega^2.
+
+   Term t is the block `shape[t] = (e_off, m_e, f_off, m_f, data_off)`: the m_e x m_f matrix
+   at mats + data_off (row-major), between rows e_off.. of y and columns f_off.. of x (both
+   (P, m) row-major). Every product is split exactly (a b = p + e with p = fl(a b),
+   e = fma(a, b, -p)) and every sum exactly (TwoSum), the errors accumulated apart (Ogita, Rump
+   and Oishi's Dot2, 2005): hi + lo is the form as if computed in twice double precision.
+   These splittings hold only for products rounded on their own: GCC, which by default fuses
+   a product into a following sum, is told not to (clang fuses only within one expression,
+   MSVC not at all). */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC push_options
+#pragma GCC optimize("fp-contract=off")
+#endif
+
+INLINE void two_sum(double a, double b, double *s, double *err) {
+  const double x = a + b, z = x - a;
+  *s = x;
+  *err = (a - (x - z)) + (b - z);
+}
+
+CLONES int pencil_terms_dd(int P, int m, int T, const int *shape, const double *mats,
+                           const double *x, const double *y, double *hi, double *lo) {
+  double *xt = malloc(sizeof(double) * LANES * 2 * (size_t)m);
+  if (!xt) return -1;
+  double *yt = xt + (size_t)LANES * m;
+  for (int i0 = 0; i0 < P; i0 += LANES) {
+    const int count = P - i0 < LANES ? P - i0 : LANES;
+    for (int w = 0; w < LANES; w++) {
+      const int i = i0 + (w < count ? w : count - 1);
+      for (int k = 0; k < m; k++) {
+        AT(xt, k)[w] = x[(size_t)i * m + k];
+        AT(yt, k)[w] = y[(size_t)i * m + k];
+      }
+    }
+    for (int t = 0; t < T; t++) {
+      const int e_off = shape[5 * t], m_e = shape[5 * t + 1], f_off = shape[5 * t + 2];
+      const int m_f = shape[5 * t + 3];
+      const double *mat = mats + shape[5 * t + 4];
+      double acc[LANES] = {0.0}, acc_lo[LANES] = {0.0};
+      for (int j = 0; j < m_e; j++) {
+        double s[LANES] = {0.0}, c[LANES] = {0.0};
+        for (int k = 0; k < m_f; k++) {  /* (M x)_j = s + c */
+          const double a = mat[(size_t)j * m_f + k], *xk = AT(xt, f_off + k);
+          for (int w = 0; w < LANES; w++) {
+            const double p = a * xk[w], e = fma(a, xk[w], -p);
+            double err;
+            two_sum(s[w], p, &s[w], &err);
+            c[w] += err + e;
+          }
+        }
+        const double *yj = AT(yt, e_off + j);
+        for (int w = 0; w < LANES; w++) {  /* acc += y_j (s + c) */
+          const double p = yj[w] * s[w], e = fma(yj[w], s[w], -p);
+          double err;
+          two_sum(acc[w], p, &acc[w], &err);
+          acc_lo[w] += err + e + yj[w] * c[w];
+        }
+      }
+      for (int w = 0; w < count; w++) {
+        hi[(size_t)(i0 + w) * T + t] = acc[w];
+        lo[(size_t)(i0 + w) * T + t] = acc_lo[w];
+      }
+    }
+  }
+  free(xt);
+  return 0;
+}
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC pop_options
+#endif
+
 /* The module stub: the build is an importable extension (so that setuptools builds it on every
    platform); the kernel itself is called through ctypes. */
 

@@ -385,12 +385,12 @@ def lowest_eigenpair(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np
     (:func:`.collocation.collocation_family_load`) is first checked by :func:`lowest_gap`
     against :data:`ISOLATION_GAP`.
 
-    In the numpy iteration the right and left solves are separate calls. Stacking them in one (2, points, k) array,
-    with [S^{-1}, S^{-T}] stored (half the numpy calls), was measured on 2026-12-02 against this
-    code (symmetric family, tol 1e-12, 40 interleaved runs each): faster only at 10 points
-    (0.82 of the time), where the lean solver answers anyway; 0.94 at 100 points and slower
-    from 400 on (1.20 at 400, 1.27 at 1,200 points at n = 22, 1.36 at n = 40). The stored
-    transpose doubles the memory each step reads.
+    In the numpy iteration the right and left solves are separate calls. Stacking them in one
+    (2, points, k) array, with [S^{-1}, S^{-T}] stored (half the numpy calls), was measured on
+    2026-12-02 against this code (symmetric family, tol 1e-12, 40 interleaved runs each):
+    faster only at 10 points (0.82 of the time), where the lean solver answers anyway; 0.94 at
+    100 points and slower from 400 on (1.20 at 400, 1.27 at 1,200 points at n = 22, 1.36 at
+    n = 40). The stored transpose doubles the memory each step reads.
     """
     pt = modal_parts(mf, twist, nu)
     start = _start_vector(mf.lam1.size + mf.lam2.size)
@@ -504,16 +504,43 @@ def _rayleigh_sums(op: FamilyOperator, twist: NDArray[np.float64], nu: NDArray[n
                    left: NDArray[np.float64], right: NDArray[np.float64], dtype: type
                    ) -> NDArray[np.float64]:
     """y^T A x / y^T B x in `dtype` from the products y_e^T P_i x_f of A's nonzero blocks
-    (:attr:`FamilyOperator.term_blocks`; a quarter of the work of the full pieces)."""
-    k1 = op.sizes[0]
-    cols = (slice(0, k1), slice(k1, None))
-    x, y = right.astype(dtype), left.astype(dtype)
-    terms = np.empty((x.shape[0], len(INST1)), dtype=dtype)
-    for e, f, idx, blocks in _term_blocks(op.n, op.family, dtype):
-        px = (x[:, cols[f]] @ blocks).reshape(x.shape[0], len(idx), -1)
-        terms[:, idx] = np.einsum("pj,pij->pi", y[:, cols[e]], px)
+    (:attr:`FamilyOperator.term_blocks`; a quarter of the work of the full pieces).
+
+    In extended precision the products are the C kernel's double-double ones where it is
+    installed (:func:`.modal_kernel.pencil_terms`; 0.4-1.4 µs a point at n = 24-56 against
+    3.5-16 µs for numpy's ``longdouble`` products, measured 2026-12-05), summed in ``dtype``."""
+    if dtype is np.longdouble and modal_kernel.available():
+        hi, lo = modal_kernel.pencil_terms(*_term_matrices(op.n, op.family), right, left)
+        terms = hi.astype(dtype) + lo.astype(dtype)
+    else:
+        k1 = op.sizes[0]
+        cols = (slice(0, k1), slice(k1, None))
+        x, y = right.astype(dtype), left.astype(dtype)
+        terms = np.empty((x.shape[0], len(INST1)), dtype=dtype)
+        for e, f, idx, blocks in _term_blocks(op.n, op.family, dtype):
+            px = (x[:, cols[f]] @ blocks).reshape(x.shape[0], len(idx), -1)
+            terms[:, idx] = np.einsum("pj,pij->pi", y[:, cols[e]], px)
     coef = term_coefficients(twist.astype(dtype), nu.astype(dtype))
     return ((coef * terms).sum(axis=1) / terms[:, _MASS_TERMS].sum(axis=1)).astype(np.float64)
+
+
+@lru_cache(maxsize=128)
+def _term_matrices(n: int, family: str) -> tuple[NDArray[np.int32], NDArray[np.float64]]:
+    """Each term of INST1 as a block of the pencil, in the layout of
+    :func:`.modal_kernel.pencil_terms`: (row offset, rows, column offset, columns, data
+    offset) per term, in INST1's order, and the blocks' matrices concatenated."""
+    op = family_operator(n, family)
+    offset = (0, op.sizes[0])
+    shape = np.zeros((len(INST1), 5), dtype=np.int32)
+    mats, start = [], 0
+    for e, f, idx, blocks in op.term_blocks:
+        rows = blocks.shape[0] // len(idx)
+        for i, term in enumerate(idx):
+            block = blocks[i * rows:(i + 1) * rows]
+            shape[term] = (offset[e], rows, offset[f], block.shape[1], start)
+            mats.append(block.ravel())
+            start += block.size
+    return shape, np.concatenate(mats)
 
 
 def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np.float64],

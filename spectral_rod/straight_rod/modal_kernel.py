@@ -1,5 +1,5 @@
 r"""The batched engine's lowest eigenpair (Eq. ``inst1``, modal form) as a C kernel, 32 points
-side by side.
+side by side; and the pencil's Rayleigh-quotient terms in double-double.
 
 :func:`.eigensolver.lowest_eigenpair` is a fixed sequence of small dense operations per point:
 the Schur complement of K - SHIFT, its factors, ~7 shift-and-invert steps on right and left
@@ -19,6 +19,12 @@ has no pivoting, accepted by the probe test of :func:`.stacked_inverse.stacked_i
 solves it; and the arithmetic is done in another order, so results agree to rounding
 (``tests/test_modal_kernel.py`` compares the two).
 
+:func:`pencil_terms` gives the bilinear forms of the two-sided Rayleigh quotient of the pencil
+(:func:`.eigensolver.pencil_rayleigh_quotient`) in double-double, for |Omega(L)| > 20 where its
+terms cancel to ~lambda/Omega^2 and they were summed in numpy's ``longdouble`` (no BLAS there:
+3.5-18 µs a point at n = 24-56, against 0.6-2.1 µs here; the quotients agree to 4 eps and with
+50-digit sums, ``tests/test_modal_kernel.py``).
+
 The kernel is built at install (``setup.py``; optional: without a C compiler the package
 installs without it, and :func:`available` is False) and loaded with :mod:`ctypes` on first
 use (ctypes releases the GIL during the call; the kernel allocates its own workspace, so calls
@@ -36,7 +42,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 __all__ = ["ABOVE", "CONVERGED", "NOT_CONVERGED", "REJECTED", "KernelResult", "available",
-           "modal_lowest"]
+           "modal_lowest", "pencil_terms"]
 
 #: Status codes of a point (as in ``_modal_kernel.c``).
 NOT_CONVERGED, CONVERGED, ABOVE, REJECTED = 0, 1, 2, -1
@@ -68,6 +74,8 @@ def _library() -> ctypes.CDLL | None:
     lib.modal_lowest.argtypes = ([c_int] * 3 + [dbl] * 9 + [c_dbl, c_dbl, c_int, c_int, c_dbl]
                                  + [dbl] * 5 + [ctypes.POINTER(ctypes.c_int32)])
     lib.modal_lowest.restype = c_int
+    lib.pencil_terms_dd.argtypes = [c_int] * 3 + [ctypes.POINTER(ctypes.c_int32)] + [dbl] * 5
+    lib.pencil_terms_dd.restype = c_int
     return lib
 
 
@@ -116,3 +124,25 @@ def modal_lowest(r_e: NDArray[np.float64], a: NDArray[np.float64], b: NDArray[np
     if code != 0:
         raise MemoryError("the kernel could not allocate its workspace")
     return out
+
+
+def pencil_terms(shape: NDArray[np.int32], mats: NDArray[np.float64], x: NDArray[np.float64],
+                 y: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """The bilinear forms y_e^T M_t x_f of the pencil's terms per point in double-double
+    (hi + lo, each (P, T); see ``pencil_terms_dd`` in ``_modal_kernel.c``).
+
+    ``shape`` (T, 5) gives each term's (row offset, rows, column offset, columns, offset in
+    ``mats``), ``mats`` the terms' matrices (row-major, concatenated); x, y (P, m).
+    """
+    lib = _library()
+    if lib is None:
+        raise RuntimeError("the compiled kernel _modal_kernel is not installed")
+    x, y = _c_array(x), _c_array(y)
+    p, m = x.shape
+    count = shape.shape[0]
+    hi, lo = np.empty((p, count)), np.empty((p, count))
+    code = lib.pencil_terms_dd(p, m, count, _ptr(np.ascontiguousarray(shape, dtype=np.int32)),
+                               _ptr(_c_array(mats)), _ptr(x), _ptr(y), _ptr(hi), _ptr(lo))
+    if code != 0:
+        raise MemoryError("the kernel could not allocate its workspace")
+    return hi, lo
