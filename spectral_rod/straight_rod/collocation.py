@@ -59,7 +59,7 @@ class CollocationResult(NamedTuple):
 #: Up to FEW_POINTS points of one degree n <= 30 the lean solver (:mod:`.few_points`) is used,
 #: above it the batched engine (:mod:`.eigensolver`); the lean solver's cost grows faster with n,
 #: so the limit falls as n^-3 above n = 30 (see :func:`few_points_limit`).
-FEW_POINTS = 24
+FEW_POINTS = 12
 
 
 def few_points_limit(n: int) -> int:
@@ -83,7 +83,7 @@ def few_points_limit(n: int) -> int:
 #: decide best: with FIXED_COST 0.7, 1.4 or 2.3 ms (15 interleaved rounds, in one process) the
 #: Figure 1 batch took 20.2, 20.4, 21.4 ms at tol 1e-12 and 10.4, 9.9, 12.6 ms at 1e-4, one call
 #: per curve 24.9, 21.3, 21.5 ms, batches of 100 36.1, 36.9, 36.6 ms.
-FIXED_COST, POINT_COST, LEAN_FACTOR = 1.4e-3, 15e-6, 2.0
+FIXED_COST, POINT_COST, LEAN_FACTOR = 0.5e-3, 4.6e-6, 8.0
 
 
 def solve_cost(points: int, degree: int) -> float:

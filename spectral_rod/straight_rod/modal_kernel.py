@@ -70,11 +70,12 @@ def _library() -> ctypes.CDLL | None:
         lib = ctypes.CDLL(spec.origin)
     except OSError:
         return None
-    dbl, c_int, c_dbl = ctypes.POINTER(ctypes.c_double), ctypes.c_int, ctypes.c_double
-    lib.modal_lowest.argtypes = ([c_int] * 3 + [dbl] * 9 + [c_dbl, c_dbl, c_int, c_int, c_dbl]
-                                 + [dbl] * 5 + [ctypes.POINTER(ctypes.c_int32)])
+    # arrays are passed as addresses (c_void_p): the dtypes and layouts are checked here
+    ptr, c_int, c_dbl = ctypes.c_void_p, ctypes.c_int, ctypes.c_double
+    lib.modal_lowest.argtypes = ([c_int] * 3 + [ptr] * 9 + [c_dbl, c_dbl, c_int, c_int, c_dbl]
+                                 + [ptr] * 6)
     lib.modal_lowest.restype = c_int
-    lib.pencil_terms_dd.argtypes = [c_int] * 3 + [ctypes.POINTER(ctypes.c_int32)] + [dbl] * 5
+    lib.pencil_terms_dd.argtypes = [c_int] * 3 + [ptr] * 6
     lib.pencil_terms_dd.restype = c_int
     return lib
 
@@ -84,11 +85,13 @@ def available() -> bool:
     return _library() is not None
 
 
-def _ptr(a: NDArray | None):
+def _ptr(a: NDArray | None) -> int | None:
+    """The address of a C-contiguous array (None for a null pointer)."""
     if a is None:
         return None
-    return a.ctypes.data_as(ctypes.POINTER(ctypes.c_int32 if a.dtype == np.int32
-                                           else ctypes.c_double))
+    if not a.flags.c_contiguous:
+        raise ValueError("the kernel needs C-contiguous arrays")
+    return a.ctypes.data
 
 
 def _c_array(a: NDArray) -> NDArray[np.float64]:
@@ -141,7 +144,8 @@ def pencil_terms(shape: NDArray[np.int32], mats: NDArray[np.float64], x: NDArray
     p, m = x.shape
     count = shape.shape[0]
     hi, lo = np.empty((p, count)), np.empty((p, count))
-    code = lib.pencil_terms_dd(p, m, count, _ptr(np.ascontiguousarray(shape, dtype=np.int32)),
+    shape = np.ascontiguousarray(shape, dtype=np.int32)
+    code = lib.pencil_terms_dd(p, m, count, _ptr(shape),
                                _ptr(_c_array(mats)), _ptr(x), _ptr(y), _ptr(hi), _ptr(lo))
     if code != 0:
         raise MemoryError("the kernel could not allocate its workspace")
