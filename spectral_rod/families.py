@@ -18,13 +18,21 @@ import math
 
 from spectral_rod._validation import check_choice, scalar_nu
 
-__all__ = ["FAMILIES", "FAMILY_DTYPE", "SHIFT", "check_family", "euler_loads", "p_star_bounds"]
+__all__ = ["CLOSE_REL", "FAMILIES", "FAMILY_DTYPE", "SHIFT", "TIE_REL", "check_family",
+           "euler_loads", "p_star_bounds"]
 
 FAMILIES = ("symmetric", "antisymmetric")
 #: The numpy string dtype of arrays of family names (every entry point returns it).
 FAMILY_DTYPE = f"<U{max(map(len, FAMILIES))}"
 #: Shift below every physical eigenvalue lambda = pi^2 p >= pi^2 (shift-and-invert iterations).
 SHIFT = 0.95 * math.pi**2
+#: The family rule's relative margins (:func:`spectral_rod.straight_rod.collocation.pick_family`):
+#: the antisymmetric family is the lowest only if it is below the symmetric one by more than
+#: TIE_REL (a tie to round-off goes to the symmetric family); within CLOSE_REL of each other
+#: either could be the lowest, so both must be resolved (and the eigensolvers stop the
+#: antisymmetric iteration early only where it is above 1 + CLOSE_REL times the symmetric
+#: eigenvalue).
+TIE_REL, CLOSE_REL = 1e-14, 1e-6
 
 
 def check_family(family: object, name: str = "family") -> str:

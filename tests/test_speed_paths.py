@@ -20,8 +20,10 @@ from threadpoolctl import threadpool_info, threadpool_limits
 from spectral_rod import ConvergenceWarning, CriticalLoad, critical_load
 from spectral_rod._blas_threads import one_blas_thread
 from spectral_rod.characteristic import characteristic_double_batch
+from spectral_rod.families import CLOSE_REL
 from spectral_rod.router import NEAR_DEGENERATE, TWIST_ROUTE, route, route_point
 from spectral_rod.sign_scan import bracketed_roots, lowest_root, lowest_roots
+from spectral_rod.straight_rod import modal_kernel
 from spectral_rod.straight_rod.collocation import pick_family, pick_family_scalar
 from spectral_rod.straight_rod.eigensolver import solve_family
 from spectral_rod.straight_rod.few_points import solve_few, solve_one
@@ -135,21 +137,45 @@ def test_scalar_and_large_batch_agree_to_the_stated_bound(reference):
         assert abs(single[i] / reference(float(tw[i]), 1.3) - 1) <= 1e-13
 
 
-def test_lean_solver_matches_the_batched_engine():
+@pytest.fixture(params=["kernel", "dense"])
+def few_engine(request, monkeypatch):
+    """The few-point solver's two implementations: the C kernel one point at a time, and the
+    dense pencils by LAPACK (the only one where the kernel is not installed, and at
+    |Omega| > LONG_TWIST at tight tol)."""
+    if request.param == "dense":
+        monkeypatch.setattr(modal_kernel, "_library", lambda: None)
+    elif not modal_kernel.available():
+        pytest.skip("the C kernel is not built here")
+    return request.param
+
+
+def _check_families(lam, tails, ref_of, bound):
+    """Each family's lambda against ref_of(family) where it converged (finite tail); where the
+    kernel stopped the antisymmetric family early, that it lies above the symmetric one."""
+    for f, fam in enumerate(("symmetric", "antisymmetric")):
+        done = np.isfinite(tails[f])
+        assert f == 1 or done.all()
+        if done.any():
+            ref = ref_of(fam)
+            assert np.max(np.abs(lam[f][done] / ref[done] - 1)) <= bound
+        assert np.all(lam[1][~done] > lam[0][~done] * (1 + CLOSE_REL))
+
+
+def test_few_point_solvers_match_the_batched_engine(few_engine):
     om = np.array([0.3, 2.0, 6.0, 9.0, 15.0])
     nu = np.array([1.1, 1.5, 1.3, 3.0, 10.0])
     for n in (24, 40):
-        lam, _, ok = solve_few(n, om, nu, 1e-14)
+        lam, tails, ok = solve_few(n, om, nu, 1e-14)
         assert ok.all()
-        for f, fam in enumerate(("symmetric", "antisymmetric")):
-            ref, _, _ = solve_family(n, fam, om, nu, rtol=1e-14)
-            assert np.max(np.abs(lam[f] / ref - 1)) <= 2e-14
+        assert few_engine == "kernel" or np.isfinite(tails).all()
+        _check_families(lam, tails, lambda fam, n=n: solve_family(n, fam, om, nu, rtol=1e-14)[0],
+                        2e-14)
 
 
-def test_one_point_solver_matches_the_batched_engine_and_the_batch_path():
-    # solve_one (Python floats, (family, m, m) stacks) against the batched engine and against
-    # solve_few's several-point path, at degrees with squaring (24) and with vector steps (40),
-    # with and without the extended-precision quotient (|Omega| > 20)
+def test_one_point_solver_matches_the_batched_engine_and_the_batch_path(few_engine):
+    # solve_one (Python floats) against the batched engine and against solve_few's
+    # several-point path, at degrees with squaring (24) and with vector steps (40), with and
+    # without the extended-precision quotient (|Omega| > 20: the dense pencils' in either case)
     om = np.array([0.3, 6.0, 15.0, 45.0])
     nu = np.array([1.1, 1.3, 10.0, 1.5])
     for n in (24, 40):
@@ -160,11 +186,10 @@ def test_one_point_solver_matches_the_batched_engine_and_the_batch_path():
             assert ok == bool(few_ok[j])
             assert np.max(np.abs(np.array(lam) / few[:, j] - 1)) <= bound
             assert np.allclose(tails, few_tails[:, j], rtol=1e-6, atol=1e-14)  # round-off: 1e-16
-            if not ok:
-                continue
-            for f, fam in enumerate(("symmetric", "antisymmetric")):
-                ref, _, _ = solve_family(n, fam, om[j:j + 1], nu[j:j + 1], rtol=1e-14)
-                assert abs(lam[f] / ref[0] - 1) <= bound
+            if ok:
+                _check_families(np.array(lam)[:, None], np.array(tails)[:, None],
+                                lambda fam, n=n, j=j: solve_family(
+                                    n, fam, om[j:j + 1], nu[j:j + 1], rtol=1e-14)[0], bound)
 
 
 def test_degree_groups_are_pooled_where_the_cost_model_says_it_is_cheaper():
@@ -399,12 +424,14 @@ def test_scalar_acceptance_rule_is_the_array_rule(sums, tail, quotient, jitter, 
         assert (lam1, tail1) == (float(lam[0]), float(tails[0]))
 
 
-def test_lean_loose_eigenvalue_is_the_discrete_eigenvalue_within_the_iteration_tolerance(capsys):
+def test_lean_loose_eigenvalue_is_the_discrete_eigenvalue_within_the_iteration_tolerance(
+        capsys, few_engine):
     """few_points' docstring (step 3): from rtol = LOOSE_RTOL on, lambda = SHIFT + 1/theta_2k
-    instead of the pencil's quotient; where accepted it stays far inside rtol of the discrete
-    eigenvalue, taken from the full ``eig`` of the same pencil (LAPACK's QR algorithm, not the
-    power iteration): the figure the docstring quotes, on Figure 1's and random points at their
-    a priori degree and n = 64."""
+    (dense pencils) or the modal quotient (the kernel, as the batched engine) instead of the
+    pencil's quotient; where accepted it stays far inside rtol of the discrete eigenvalue, taken
+    from the full ``eig`` of the same pencil (LAPACK's QR algorithm, not the power iteration):
+    the figure the docstring quotes, on Figure 1's and random points at their a priori degree
+    and n = 64."""
     from spectral_rod import load_figure1
     from spectral_rod.straight_rod.eigensolver import solve_family_eig
     from spectral_rod.straight_rod.resolution import initial_degree_scalar
@@ -416,14 +443,17 @@ def test_lean_loose_eigenvalue_is_the_discrete_eigenvalue_within_the_iteration_t
     worst, accepted, families = 0.0, 0, 0
     for tw, nu in zip(om, nus, strict=True):
         for n in sorted({initial_degree_scalar(float(tw), 1e-6), 64}):
-            lam, _, ok = solve_one(n, float(tw), float(nu), 1e-8)
+            lam, tails, ok = solve_one(n, float(tw), float(nu), 1e-8)
             ref = [solve_family_eig(n, f, np.array([tw]), np.array([nu]))[0][0]
                    for f in ("symmetric", "antisymmetric")]
             families += 2
-            if ok:
-                accepted += 2
-                worst = max(worst, max(abs(a / b - 1) for a, b in zip(lam, ref, strict=True)))
-    assert accepted >= 0.9 * families and worst <= 0.05 * 1e-8
+            if ok:  # the kernel's "above" family is only shown to lie above: not compared
+                done = [math.isfinite(t) for t in tails]
+                accepted += sum(done)
+                worst = max(worst, max(abs(a / b - 1) for a, b, c in zip(lam, ref, done,
+                                                                          strict=True) if c))
+    assert accepted >= (0.9 if few_engine == "dense" else 0.5) * families
+    assert worst <= 0.05 * 1e-8
     with capsys.disabled():
-        print(f"\nlean loose quotient: {om.size} points, {accepted} of {families} families "
-              f"accepted, max |lambda/eig - 1| {worst:.2g}")
+        print(f"\nloose quotient ({few_engine}): {om.size} points, {accepted} of {families} "
+              f"families accepted and converged, max |lambda/eig - 1| {worst:.2g}")

@@ -42,83 +42,86 @@
 
 enum { NOT_CONVERGED = 0, CONVERGED = 1, ABOVE = 2, REJECTED = -1 };
 
-#define AT(m, i) ((m) + (size_t)(i) * LANES)
+/* Every function below takes the lane count L (LANES for a batch, 1 for a single point) as a
+   constant at its inlined call site, so that its lane loops compile to vector code (or to
+   scalar code for L = 1); arrays of one value per lane are sized LANES, the largest L. */
+#define AT(m, i) ((m) + (size_t)(i) * L)
 
 /* S[r][c] = delta_rc d_s[r] - a b sum_j g_se[r][j] r_e[j] g_es[j][c], then S = L U in place
    (unit L below the diagonal, 1/U_cc on it); a copy of S in s0 for the check. */
-INLINE void factorise(int ke, int ks, const double *re, const double *ab, const double *ds,
+INLINE void factorise(const int L, int ke, int ks, const double *re, const double *ab, const double *ds,
                       const double *g_es, const double *g_se, double *s, double *s0) {
   for (int r = 0; r < ks; r++) {
     for (int c = 0; c < ks; c++) {
       double *src = AT(s, r * ks + c);
-      for (int w = 0; w < LANES; w++) src[w] = 0.0;
+      for (int w = 0; w < L; w++) src[w] = 0.0;
     }
     for (int j = 0; j < ke; j++) {
       double cw[LANES];
       const double g = g_se[r * ke + j], *rj = AT(re, j), *gj = g_es + (size_t)j * ks;
-      for (int w = 0; w < LANES; w++) cw[w] = -ab[w] * g * rj[w];
+      for (int w = 0; w < L; w++) cw[w] = -ab[w] * g * rj[w];
       for (int c = 0; c < ks; c++) {
         double *src = AT(s, r * ks + c);
         const double gc = gj[c];
-        for (int w = 0; w < LANES; w++) src[w] += cw[w] * gc;
+        for (int w = 0; w < L; w++) src[w] += cw[w] * gc;
       }
     }
     double *srr = AT(s, r * ks + r);
     const double *dr = AT(ds, r);
-    for (int w = 0; w < LANES; w++) srr[w] += dr[w];
+    for (int w = 0; w < L; w++) srr[w] += dr[w];
   }
-  memcpy(s0, s, sizeof(double) * LANES * ks * ks);
+  memcpy(s0, s, sizeof(double) * L * ks * ks);
   for (int c = 0; c < ks; c++) {
     double *scc = AT(s, c * ks + c), inv[LANES];
-    for (int w = 0; w < LANES; w++) scc[w] = inv[w] = 1.0 / scc[w];
+    for (int w = 0; w < L; w++) scc[w] = inv[w] = 1.0 / scc[w];
     for (int r = c + 1; r < ks; r++) {
       double *src = AT(s, r * ks + c), l[LANES];
-      for (int w = 0; w < LANES; w++) src[w] = l[w] = src[w] * inv[w];
+      for (int w = 0; w < L; w++) src[w] = l[w] = src[w] * inv[w];
       for (int j = c + 1; j < ks; j++) {
         double *srj = AT(s, r * ks + j);
         const double *scj = AT(s, c * ks + j);
-        for (int w = 0; w < LANES; w++) srj[w] -= l[w] * scj[w];
+        for (int w = 0; w < L; w++) srj[w] -= l[w] * scj[w];
       }
     }
   }
 }
 
 /* t = S^{-1} t from the factors */
-INLINE void lu_solve(int ks, const double *s, double *t) {
+INLINE void lu_solve(const int L, int ks, const double *s, double *t) {
   for (int r = 1; r < ks; r++) {
     double *tr = AT(t, r);
     for (int j = 0; j < r; j++) {
       const double *l = AT(s, r * ks + j), *tj = AT(t, j);
-      for (int w = 0; w < LANES; w++) tr[w] -= l[w] * tj[w];
+      for (int w = 0; w < L; w++) tr[w] -= l[w] * tj[w];
     }
   }
   for (int r = ks - 1; r >= 0; r--) {
     double *tr = AT(t, r);
     for (int j = r + 1; j < ks; j++) {
       const double *u = AT(s, r * ks + j), *tj = AT(t, j);
-      for (int w = 0; w < LANES; w++) tr[w] -= u[w] * tj[w];
+      for (int w = 0; w < L; w++) tr[w] -= u[w] * tj[w];
     }
     const double *d = AT(s, r * ks + r);
-    for (int w = 0; w < LANES; w++) tr[w] *= d[w];
+    for (int w = 0; w < L; w++) tr[w] *= d[w];
   }
 }
 
 /* t = S^{-T} t from the factors (S^T = U^T L^T) */
-INLINE void lu_solve_transposed(int ks, const double *s, double *t) {
+INLINE void lu_solve_transposed(const int L, int ks, const double *s, double *t) {
   for (int r = 0; r < ks; r++) {
     double *tr = AT(t, r);
     for (int j = 0; j < r; j++) {
       const double *u = AT(s, j * ks + r), *tj = AT(t, j);
-      for (int w = 0; w < LANES; w++) tr[w] -= u[w] * tj[w];
+      for (int w = 0; w < L; w++) tr[w] -= u[w] * tj[w];
     }
     const double *d = AT(s, r * ks + r);
-    for (int w = 0; w < LANES; w++) tr[w] *= d[w];
+    for (int w = 0; w < L; w++) tr[w] *= d[w];
   }
   for (int r = ks - 1; r >= 0; r--) {
     double *tr = AT(t, r);
     for (int j = r + 1; j < ks; j++) {
       const double *l = AT(s, j * ks + r), *tj = AT(t, j);
-      for (int w = 0; w < LANES; w++) tr[w] -= l[w] * tj[w];
+      for (int w = 0; w < L; w++) tr[w] -= l[w] * tj[w];
     }
   }
 }
@@ -127,73 +130,73 @@ INLINE double nan_max(double a, double b) { return (b > a || b != b) ? b : a; }
 
 /* Whether the factors pass the probe test of stacked_inverse.py, per lane:
    |S0 x - v| <= tol max|diag S0| |x| (max norms), x = S^{-1} v; nan or inf fails. */
-INLINE void probe_check(int ks, const double *s, const double *s0, double tol, double *t,
+INLINE void probe_check(const int L, int ks, const double *s, const double *s0, double tol, double *t,
                         int *ok) {
   double res[LANES], xmax[LANES], dmax[LANES];
   for (int c = 0; c < ks; c++) {
     const double v = (1.0 + (ks > 1 ? (double)c / (ks - 1) : 0.0)) * (c % 2 ? -1.0 : 1.0);
     double *tc = AT(t, c);
-    for (int w = 0; w < LANES; w++) tc[w] = v;
+    for (int w = 0; w < L; w++) tc[w] = v;
   }
-  lu_solve(ks, s, t);
-  for (int w = 0; w < LANES; w++) res[w] = xmax[w] = dmax[w] = 0.0;
+  lu_solve(L, ks, s, t);
+  for (int w = 0; w < L; w++) res[w] = xmax[w] = dmax[w] = 0.0;
   for (int r = 0; r < ks; r++) {
     const double v = (1.0 + (ks > 1 ? (double)r / (ks - 1) : 0.0)) * (r % 2 ? -1.0 : 1.0);
     double acc[LANES];
-    for (int w = 0; w < LANES; w++) acc[w] = -v;
+    for (int w = 0; w < L; w++) acc[w] = -v;
     for (int c = 0; c < ks; c++) {
       const double *a = AT(s0, r * ks + c), *tc = AT(t, c);
-      for (int w = 0; w < LANES; w++) acc[w] += a[w] * tc[w];
+      for (int w = 0; w < L; w++) acc[w] += a[w] * tc[w];
     }
     const double *d = AT(s0, r * ks + r), *tr = AT(t, r);
-    for (int w = 0; w < LANES; w++) {  /* maxima that keep a nan (fmax would drop it) */
+    for (int w = 0; w < L; w++) {  /* maxima that keep a nan (fmax would drop it) */
       res[w] = nan_max(res[w], fabs(acc[w]));
       xmax[w] = nan_max(xmax[w], fabs(tr[w]));
       dmax[w] = nan_max(dmax[w], fabs(d[w]));
     }
   }
-  for (int w = 0; w < LANES; w++)
+  for (int w = 0; w < L; w++)
     ok[w] = isfinite(xmax[w]) && isfinite(dmax[w]) && res[w] <= tol * dmax[w] * xmax[w];
 }
 
 /* x = (K - SHIFT)^{-1} p (transposed: (K - SHIFT)^{-T}), in the modal blocks e and s:
    u = p_e r_e; x_s = S^{-1} (p_s - b G_se u); x_e = u - a r_e G_es x_s (a and b, G_es and
    G_se exchanged, S^{-T}, for the transpose) */
-INLINE void shifted_solve(int ke, int ks, const double *s, const double *re, const double *a,
+INLINE void shifted_solve(const int L, int ke, int ks, const double *s, const double *re, const double *a,
                           const double *b, const double *g_es, const double *g_se,
                           int transposed, const double *pe, const double *ps, double *xe,
                           double *xs) {
   for (int j = 0; j < ke; j++) {
     double *xj = AT(xe, j);
     const double *pj = AT(pe, j), *rj = AT(re, j);
-    for (int w = 0; w < LANES; w++) xj[w] = pj[w] * rj[w];
+    for (int w = 0; w < L; w++) xj[w] = pj[w] * rj[w];
   }
   for (int r = 0; r < ks; r++) {  /* (G u)_r: G_se u, or G_es^T u */
     double acc[LANES] = {0.0};
     for (int j = 0; j < ke; j++) {
       const double g = transposed ? g_es[(size_t)j * ks + r] : g_se[(size_t)r * ke + j];
       const double *xj = AT(xe, j);
-      for (int w = 0; w < LANES; w++) acc[w] += g * xj[w];
+      for (int w = 0; w < L; w++) acc[w] += g * xj[w];
     }
     double *xr = AT(xs, r);
     const double *pr = AT(ps, r), *c = transposed ? a : b;
-    for (int w = 0; w < LANES; w++) xr[w] = pr[w] - c[w] * acc[w];
+    for (int w = 0; w < L; w++) xr[w] = pr[w] - c[w] * acc[w];
   }
-  if (transposed) lu_solve_transposed(ks, s, xs); else lu_solve(ks, s, xs);
+  if (transposed) lu_solve_transposed(L, ks, s, xs); else lu_solve(L, ks, s, xs);
   for (int j = 0; j < ke; j++) {  /* (G x_s)_j: G_es x_s, or G_se^T x_s */
     double acc[LANES] = {0.0};
     for (int r = 0; r < ks; r++) {
       const double g = transposed ? g_se[(size_t)r * ke + j] : g_es[(size_t)j * ks + r];
       const double *xr = AT(xs, r);
-      for (int w = 0; w < LANES; w++) acc[w] += g * xr[w];
+      for (int w = 0; w < L; w++) acc[w] += g * xr[w];
     }
     double *xj = AT(xe, j);
     const double *rj = AT(re, j), *c = transposed ? b : a;
-    for (int w = 0; w < LANES; w++) xj[w] -= c[w] * acc[w] * rj[w];
+    for (int w = 0; w < L; w++) xj[w] -= c[w] * acc[w] * rj[w];
   }
 }
 
-INLINE double sum_sq(int k, const double *v, int w) {
+INLINE double sum_sq(const int L, int k, const double *v, int w) {
   double acc = 0.0;
   for (int j = 0; j < k; j++) acc += AT(v, j)[w] * AT(v, j)[w];
   return acc;
@@ -201,11 +204,11 @@ INLINE double sum_sq(int k, const double *v, int w) {
 
 /* The convergence test of lowest_eigenpair at one lane: normalises x and y, returns the
    two-sided quotient and sets the first-order error bound. */
-INLINE double lane_test(int ke, int ks, double shift, int w, double *xe, double *xs, double *ye,
+INLINE double lane_test(const int L, int ke, int ks, double shift, int w, double *xe, double *xs, double *ye,
                         double *ys, const double *pe, const double *ps, const double *qe,
                         const double *qs, double *bound) {
-  const double sx = 1.0 / sqrt(sum_sq(ke, xe, w) + sum_sq(ks, xs, w));
-  const double sy = 1.0 / sqrt(sum_sq(ke, ye, w) + sum_sq(ks, ys, w));
+  const double sx = 1.0 / sqrt(sum_sq(L, ke, xe, w) + sum_sq(L, ks, xs, w));
+  const double sy = 1.0 / sqrt(sum_sq(L, ke, ye, w) + sum_sq(L, ks, ys, w));
   double yx = 0.0, ykx = 0.0, rx = 0.0, ry = 0.0;
   for (int blk = 0; blk < 2; blk++) {
     const int k = blk ? ks : ke;
@@ -235,27 +238,27 @@ INLINE double lane_test(int ke, int ks, double shift, int w, double *xe, double 
   return rq;
 }
 
-INLINE void put_lane(int k, const double *v, int w, double *out) {
+INLINE void put_lane(const int L, int k, const double *v, int w, double *out) {
   for (int j = 0; j < k; j++) out[j] = AT(v, j)[w];
 }
 
 /* One group of `count` <= LANES points starting at point i0 (lanes past count repeat the last
    point and are ignored). */
-INLINE void solve_group(int i0, int count, int ke, int ks, const double *r_e, const double *a,
+INLINE void solve_group(const int L, int i0, int count, int ke, int ks, const double *r_e, const double *a,
                         const double *b, const double *d_s, const double *g_es,
                         const double *g_se, const double *start_e, const double *start_s,
                         const double *ceiling, double shift, double rtol, int first,
                         int max_steps, double backward_tol, double *work, double *lam,
                         double *x_e, double *x_s, double *y_e, double *y_s, int *status) {
-  double *s = work, *s0 = s + (size_t)LANES * ks * ks, *re = s0 + (size_t)LANES * ks * ks;
-  double *ds = re + (size_t)LANES * ke, *xe = ds + (size_t)LANES * ks;
-  double *ye = xe + (size_t)LANES * ke, *pe = ye + (size_t)LANES * ke;
-  double *qe = pe + (size_t)LANES * ke, *xs = qe + (size_t)LANES * ke;
-  double *ys = xs + (size_t)LANES * ks, *ps = ys + (size_t)LANES * ks;
-  double *qs = ps + (size_t)LANES * ks, *t = qs + (size_t)LANES * ks;
+  double *s = work, *s0 = s + (size_t)L * ks * ks, *re = s0 + (size_t)L * ks * ks;
+  double *ds = re + (size_t)L * ke, *xe = ds + (size_t)L * ks;
+  double *ye = xe + (size_t)L * ke, *pe = ye + (size_t)L * ke;
+  double *qe = pe + (size_t)L * ke, *xs = qe + (size_t)L * ke;
+  double *ys = xs + (size_t)L * ks, *ps = ys + (size_t)L * ks;
+  double *qs = ps + (size_t)L * ks, *t = qs + (size_t)L * ks;
   double al[LANES], bl[LANES], ab[LANES];
   int done[LANES], ok[LANES];
-  for (int w = 0; w < LANES; w++) {
+  for (int w = 0; w < L; w++) {
     const int i = i0 + (w < count ? w : count - 1);
     al[w] = a[i];
     bl[w] = b[i];
@@ -263,29 +266,29 @@ INLINE void solve_group(int i0, int count, int ke, int ks, const double *r_e, co
     for (int j = 0; j < ke; j++) AT(re, j)[w] = r_e[(size_t)i * ke + j];
     for (int j = 0; j < ks; j++) AT(ds, j)[w] = d_s[(size_t)i * ks + j];
   }
-  factorise(ke, ks, re, ab, ds, g_es, g_se, s, s0);
-  probe_check(ks, s, s0, backward_tol, t, ok);
-  for (int w = 0; w < LANES; w++) {
+  factorise(L, ke, ks, re, ab, ds, g_es, g_se, s, s0);
+  probe_check(L, ks, s, s0, backward_tol, t, ok);
+  for (int w = 0; w < L; w++) {
     done[w] = w >= count || !ok[w];
     if (w < count && !ok[w]) status[i0 + w] = REJECTED;
   }
   for (int j = 0; j < ke; j++)
-    for (int w = 0; w < LANES; w++) AT(xe, j)[w] = AT(ye, j)[w] = start_e[j];
+    for (int w = 0; w < L; w++) AT(xe, j)[w] = AT(ye, j)[w] = start_e[j];
   for (int j = 0; j < ks; j++)
-    for (int w = 0; w < LANES; w++) AT(xs, j)[w] = AT(ys, j)[w] = start_s[j];
+    for (int w = 0; w < L; w++) AT(xs, j)[w] = AT(ys, j)[w] = start_s[j];
   for (int step = 1; step <= max_steps; step++) {
-    memcpy(pe, xe, sizeof(double) * LANES * ke);
-    memcpy(ps, xs, sizeof(double) * LANES * ks);
-    memcpy(qe, ye, sizeof(double) * LANES * ke);
-    memcpy(qs, ys, sizeof(double) * LANES * ks);
-    shifted_solve(ke, ks, s, re, al, bl, g_es, g_se, 0, pe, ps, xe, xs);
-    shifted_solve(ke, ks, s, re, al, bl, g_es, g_se, 1, qe, qs, ye, ys);
+    memcpy(pe, xe, sizeof(double) * L * ke);
+    memcpy(ps, xs, sizeof(double) * L * ks);
+    memcpy(qe, ye, sizeof(double) * L * ke);
+    memcpy(qs, ys, sizeof(double) * L * ks);
+    shifted_solve(L, ke, ks, s, re, al, bl, g_es, g_se, 0, pe, ps, xe, xs);
+    shifted_solve(L, ke, ks, s, re, al, bl, g_es, g_se, 1, qe, qs, ye, ys);
     if (step < first || step % 2) continue;
     int all = 1;
-    for (int w = 0; w < LANES; w++) {
+    for (int w = 0; w < L; w++) {
       if (done[w]) continue;
       double bound;
-      const double rq = lane_test(ke, ks, shift, w, xe, xs, ye, ys, pe, ps, qe, qs, &bound);
+      const double rq = lane_test(L, ke, ks, shift, w, xe, xs, ye, ys, pe, ps, qe, qs, &bound);
       const int i = i0 + w;
       const int conv = bound <= rtol * fabs(rq) && rq >= shift;
       const int high = !conv && ceiling && rq - 100.0 * bound > ceiling[i];
@@ -293,10 +296,10 @@ INLINE void solve_group(int i0, int count, int ke, int ks, const double *r_e, co
         done[w] = 1;
         lam[i] = rq;
         status[i] = conv ? CONVERGED : high ? ABOVE : NOT_CONVERGED;
-        put_lane(ke, xe, w, x_e + (size_t)i * ke);
-        put_lane(ks, xs, w, x_s + (size_t)i * ks);
-        put_lane(ke, ye, w, y_e + (size_t)i * ke);
-        put_lane(ks, ys, w, y_s + (size_t)i * ks);
+        put_lane(L, ke, xe, w, x_e + (size_t)i * ke);
+        put_lane(L, ks, xs, w, x_s + (size_t)i * ks);
+        put_lane(L, ke, ye, w, y_e + (size_t)i * ke);
+        put_lane(L, ks, ys, w, y_s + (size_t)i * ks);
       } else {
         all = 0;
       }
@@ -317,7 +320,7 @@ CLONES int modal_lowest(int P, int ke, int ks, const double *r_e, const double *
                                                   + 6 * (size_t)ks));
   if (!work) return -1;
   for (int i0 = 0; i0 < P; i0 += LANES)
-    solve_group(i0, P - i0 < LANES ? P - i0 : LANES, ke, ks, r_e, a, b, d_s, g_es, g_se,
+    solve_group(LANES, i0, P - i0 < LANES ? P - i0 : LANES, ke, ks, r_e, a, b, d_s, g_es, g_se,
                 start_e, start_s, ceiling, shift, rtol, first, max_steps, backward_tol, work,
                 lam, x_e, x_s, y_e, y_s, status);
   free(work);
@@ -325,6 +328,114 @@ CLONES int modal_lowest(int P, int ke, int ks, const double *r_e, const double *
 }
 
 int modal_lanes(void) { return LANES; }
+
+/* One mode family at one degree, for modal_points: its modal form (eigensolver.ModalFamily),
+   the maps back to the pencil's vectors, its tail rows and its terms (eigensolver.py and
+   modal_kernel.py build it). */
+typedef struct {
+  int k1, k2, schur;                     /* block sizes; the Schur block, 1 or 2 */
+  int own2[2], own0[2], coupling[2];     /* per equation: MODAL_TERMS' indices into coef */
+  const double *lam1, *lam2;             /* (k1,), (k2,) */
+  const double *g12, *g21;               /* (k1, k2), (k2, k1) */
+  const double *u1, *u2;                 /* (k1, k1), (k2, k2): c_i = U_i z_i */
+  const double *left1, *left2;           /* (k1, k1), (k2, k2): y_i^T = w_i^T left_i */
+  const double *start;                   /* (k1 + k2,), a unit vector */
+  int tail_count;                        /* rows of tail_rows; the first 4 are the tail */
+  const double *tail_rows;               /* (tail_count, k1 + k2) */
+  const int *term_shape;                 /* (terms, 5), as for pencil_terms_dd */
+  const double *term_mats;
+  const int *mass;                       /* (terms,): 1 for a term of B */
+} Family;
+
+/* One family at one point: the lowest eigenpair by the kernel (one lane), then the pencil's
+   vectors, the tail and, unless `loose`, the pencil's two-sided Rayleigh quotient in double
+   (the caller sends only |Omega| <= LONG_TWIST here). */
+INLINE void family_point(const Family *f, int terms, const double *coef, const double *ceiling,
+                         double shift, double rtol, int first, int max_steps,
+                         double backward_tol, int loose, double *work, double *lam,
+                         double *tail, int *status) {
+  const int k1 = f->k1, k2 = f->k2, m = k1 + k2, e1 = f->schur == 2;
+  const int ke = e1 ? k1 : k2, ks = e1 ? k2 : k1;
+  double *r_e = work, *d_s = r_e + ke, *v = d_s + ks, *x = v + 2 * m, *y = x + m;
+  double *rest = y + m;  /* solve_group's workspace, one lane */
+  const double *lam_e = e1 ? f->lam1 : f->lam2, *lam_s = e1 ? f->lam2 : f->lam1;
+  const int qe = e1 ? 0 : 1, qs = 1 - qe;  /* equations of the e and s blocks */
+  for (int j = 0; j < ke; j++)
+    r_e[j] = 1.0 / (coef[f->own0[qe]] - coef[f->own2[qe]] * lam_e[j] - shift);
+  for (int j = 0; j < ks; j++) d_s[j] = coef[f->own0[qs]] - coef[f->own2[qs]] * lam_s[j] - shift;
+  const double a = 2.0 * coef[f->coupling[qe]], b = 2.0 * coef[f->coupling[qs]];
+  double *ze = v, *zs = v + ke, *we = v + m, *ws = v + m + ke;
+  solve_group(1, 0, 1, ke, ks, r_e, &a, &b, d_s, e1 ? f->g12 : f->g21, e1 ? f->g21 : f->g12,
+              f->start + (e1 ? 0 : k1), f->start + (e1 ? k1 : 0), ceiling, shift, rtol, first,
+              max_steps, backward_tol, rest, lam, ze, zs, we, ws, status);
+  *tail = INFINITY;
+  if (*status != CONVERGED) return;
+  const double *z1 = e1 ? ze : zs, *z2 = e1 ? zs : ze, *w1 = e1 ? we : ws, *w2 = e1 ? ws : we;
+  for (int r = 0; r < m; r++) {  /* x = (U1 z1, U2 z2), y = (left1^T w1, left2^T w2) */
+    const int blk = r >= k1, k = blk ? k2 : k1, rr = blk ? r - k1 : r;
+    const double *u = blk ? f->u2 : f->u1, *lf = blk ? f->left2 : f->left1;
+    const double *z = blk ? z2 : z1, *w = blk ? w2 : w1;
+    double sx = 0.0, sy = 0.0;
+    for (int j = 0; j < k; j++) {
+      sx += u[(size_t)rr * k + j] * z[j];
+      sy += w[j] * lf[(size_t)j * k + rr];
+    }
+    x[r] = sx;
+    y[r] = sy;
+  }
+  double last = 0.0, other = 0.0;  /* resolution.tail_parts and tail_from_parts */
+  for (int r = 0; r < f->tail_count; r++) {
+    double c = 0.0;
+    for (int j = 0; j < m; j++) c += f->tail_rows[(size_t)r * m + j] * x[j];
+    if (r < 4) last = nan_max(last, fabs(c)); else other = nan_max(other, fabs(c));
+  }
+  const double scale = nan_max(last, other);
+  *tail = scale > 0.0 ? last / scale : INFINITY;
+  if (!isfinite(last) || !isfinite(other)) *status = NOT_CONVERGED;
+  if (loose) return;
+  double num = 0.0, den = 0.0;
+  for (int t = 0; t < terms; t++) {
+    const int *sh = f->term_shape + 5 * t;
+    const double *mat = f->term_mats + sh[4];
+    double acc = 0.0;
+    for (int j = 0; j < sh[1]; j++) {
+      double row = 0.0;
+      for (int k = 0; k < sh[3]; k++) row += mat[(size_t)j * sh[3] + k] * x[sh[2] + k];
+      acc += y[sh[0] + j] * row;
+    }
+    num += coef[t] * acc;
+    if (f->mass[t]) den += acc;
+  }
+  *lam = num / den;
+}
+
+/* Both families (symmetric first, the antisymmetric one only shown to lie above
+   (1 + close_rel) times it where it does, as collocation._solve_points) at P points, one at
+   a time: per point and family lambda, the tail and the status (the antisymmetric family's
+   tail is inf where it is above). `coef` (P, terms) are the INST1 coefficients. */
+CLONES int modal_points(int P, const Family *fam, int terms, const double *coef, double shift,
+                        double rtol, int first, int max_steps, double backward_tol,
+                        double close_rel, int loose, double *lam, double *tail, int *status) {
+  size_t size = 0;
+  for (int q = 0; q < 2; q++) {
+    const size_t k = (size_t)fam[q].k1 + fam[q].k2;
+    const size_t need = 5 * k + 2 * k * k + 5 * k + 6 * k;
+    if (need > size) size = need;
+  }
+  double *work = malloc(sizeof(double) * size);
+  if (!work) return -1;
+  for (int i = 0; i < P; i++) {
+    const double *c = coef + (size_t)i * terms;
+    family_point(&fam[0], terms, c, NULL, shift, rtol, first, max_steps, backward_tol, loose,
+                 work, lam + 2 * i, tail + 2 * i, status + 2 * i);
+    const double ceiling = lam[2 * i] * (1.0 + close_rel);
+    family_point(&fam[1], terms, c, status[2 * i] == CONVERGED ? &ceiling : NULL, shift, rtol,
+                 first < 4 ? first : 4, max_steps, backward_tol, loose, work, lam + 2 * i + 1,
+                 tail + 2 * i + 1, status + 2 * i + 1);
+  }
+  free(work);
+  return 0;
+}
 
 /* The pencil's bilinear forms y_e^T M_t x_f in double-double, for the two-sided Rayleigh
    quotient at large twist (eigensolver.pencil_rayleigh_quotient, Eq. inst1), where its terms
@@ -351,6 +462,7 @@ INLINE void two_sum(double a, double b, double *s, double *err) {
 
 CLONES int pencil_terms_dd(int P, int m, int T, const int *shape, const double *mats,
                            const double *x, const double *y, double *hi, double *lo) {
+  const int L = LANES;
   double *xt = malloc(sizeof(double) * LANES * 2 * (size_t)m);
   if (!xt) return -1;
   double *yt = xt + (size_t)LANES * m;

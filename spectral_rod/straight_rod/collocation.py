@@ -21,7 +21,7 @@ from numpy.typing import NDArray
 
 from spectral_rod._blas_threads import one_blas_thread
 from spectral_rod._validation import check_resolution, scalar_nu, scalar_twist
-from spectral_rod.families import FAMILIES, check_family
+from spectral_rod.families import CLOSE_REL, FAMILIES, TIE_REL, check_family
 from spectral_rod.straight_rod.discretisation import family_operator
 from spectral_rod.straight_rod.eigensolver import (
     ISOLATION_GAP,
@@ -63,26 +63,33 @@ FEW_POINTS = 12
 
 
 def few_points_limit(n: int) -> int:
-    """Most points of degree n handed to the lean solver: the measured crossover (Figure 1
-    points, tol 1e-12, lean/batched us a point: n = 22: 25/34 at 24 points, 37/29 at 32;
-    n = 36: 98/108 at 8, 85/70 at 16; n = 44: 134/159 at 8, 117/106 at 16; n = 56: 234/244 at 4,
-    191/151 at 8); none above :data:`LEAN_MAX_DEGREE`."""
+    """Most points of degree n handed to the lean solver: the measured crossover with the
+    batched engine's C kernel (2026-12-05: random Figure 1 points forced to degree n, tol 1e-12,
+    minima of 30 rounds, lean/batched us a point: n = 16: 25/58 at 8 points, 21/19 at 24;
+    n = 22: 38/45 at 12, 37/35 at 16; n = 30: 69/71 at 8, 66/47 at 12; n = 40: 140/688 at 4,
+    124/116 at 6; n = 56: 246/251 at 4, 230/153 at 6; numpy's engine before the kernel crossed
+    at 24-32 points at n = 22); none above :data:`LEAN_MAX_DEGREE`."""
     if n > LEAN_MAX_DEGREE:
         return 0
     return FEW_POINTS if n <= 30 else max(4, int(FEW_POINTS * (30 / n) ** 3))
 
 
-#: The cost model of degree pooling (:func:`solve_degrees`), measured 2026-12-02 with
-#: ``_solve_points`` at 30 and 300 points of one degree (Omega up to 1.8 (n - 16), nu in
-#: [1.1, 10]): a batched solve of both families costs FIXED_COST whatever its size (1.2-1.7 ms
-#: at n = 16..64) plus POINT_COST (n/22)^2 a point (14.0-15.3 us (n/22)^2 at n = 16..64); the
-#: lean solver has no fixed cost and costs about twice as much a point (1.7-2.1 times, measured
-#: at n = 16..26). Empirical constants: only their ratios decide. Re-measured 2026-12-02 (a
-#: later session, same method, two runs): 2.1-2.7 ms fixed and 9.5-9.7, 13.5-13.8, 31-37 us a
-#: point at n = 16, 22, 36 (closer to n^1.5 than n^2). The constants were kept because they
-#: decide best: with FIXED_COST 0.7, 1.4 or 2.3 ms (15 interleaved rounds, in one process) the
-#: Figure 1 batch took 20.2, 20.4, 21.4 ms at tol 1e-12 and 10.4, 9.9, 12.6 ms at 1e-4, one call
-#: per curve 24.9, 21.3, 21.5 ms, batches of 100 36.1, 36.9, 36.6 ms.
+#: The cost model of degree pooling (:func:`solve_degrees`), measured with ``_solve_points`` at
+#: 30 and 300 points of one degree (Omega up to 1.8 (n - 16), nu in [1.1, 10];
+#: ``test_pooling_cost_model`` in ``tests/bench``): a batched solve of both families costs
+#: FIXED_COST whatever its size plus POINT_COST (n/22)^2 a point; the lean solver has no fixed
+#: cost and costs LEAN_FACTOR times as much a point. With the C kernel (2026-12-05):
+#: 0.45-0.62 ms and 4.5-5.6 us (n/22)^2 at n = 16, 22, 36, the lean solver 8-10 times a batched
+#: point (the crossover measurements of :func:`few_points_limit`); with numpy's engine before
+#: it, 1.2-2.7 ms and 14-15 us (n/22)^2, the lean solver 1.7-2.1 times. Empirical constants:
+#: only their ratios decide. Against the previous constants (1.4 ms, 15 us, 2) these took,
+#: minima of 7 interleaved rounds: the Figure 1 batch 5.54 against 5.61 us a point, one call
+#: per curve 7.21 against 7.23, batches of 100 14.7 against 16.1, of 10 85.6 against 84.0,
+#: a quarter of the (Omega, nu) map's collocation points 18.3 against 17.8, tol 1e-4 3.05
+#: against 3.02. Since the few-point path also runs on the kernel (|Omega| <= 20, the degrees
+#: n <= 30; ~11 us a point at n = 22 against ~40 before), its crossover moved to 24-48 points
+#: at n = 16-22 and ~24 at n = 30, but a limit of 24 there and LEAN_FACTOR 3 measured the same
+#: on these patterns (within 2 %, 7 interleaved rounds): kept.
 FIXED_COST, POINT_COST, LEAN_FACTOR = 0.5e-3, 4.6e-6, 8.0
 
 
@@ -155,14 +162,6 @@ def _solve_points(twist: NDArray[np.float64], nu: NDArray[np.float64], n: NDArra
                                         ceiling=lam[0] * (1 + CLOSE_REL))
         p[sel], fam[sel], tails[sel] = pick_family(lam, tl)
     return p, fam, tails
-
-
-#: The family rule's relative margins (:func:`pick_family`): the antisymmetric family is the
-#: lowest only if it is below the symmetric one by more than TIE_REL (a tie to round-off goes
-#: to the symmetric family); within CLOSE_REL of each other either could be the lowest, so both
-#: must be resolved (and the batched engine stops the antisymmetric iteration early only where
-#: it is above 1 + CLOSE_REL times the symmetric eigenvalue).
-TIE_REL, CLOSE_REL = 1e-14, 1e-6
 
 
 def pick_family(lam: NDArray[np.float64], tails: NDArray[np.float64]

@@ -25,6 +25,7 @@ unresolved by construction) meets the tolerance.
 
 from __future__ import annotations
 
+import ctypes
 import math
 from dataclasses import dataclass
 from functools import lru_cache
@@ -33,7 +34,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
-from spectral_rod.families import SHIFT
+from spectral_rod.families import FAMILIES, SHIFT
 from spectral_rod.straight_rod import modal_kernel
 from spectral_rod.straight_rod.discretisation import (
     INST1,
@@ -45,9 +46,9 @@ from spectral_rod.straight_rod.resolution import mode_tails
 from spectral_rod.straight_rod.stacked_inverse import BACKWARD_TOL, stacked_inverse
 
 __all__ = ["CALIBRATED_TOL", "ISOLATION_GAP", "KERNEL_MAX_SCHUR", "ModalFamily", "ModalParts",
-           "iteration_allowance", "iteration_rtol", "lowest_eigenpair", "lowest_gap",
-           "modal_family", "modal_parts", "pencil_rayleigh_quotient", "physical_eig",
-           "solve_family", "solve_family_eig", "uses_kernel"]
+           "iteration_allowance", "iteration_rtol", "kernel_families", "lowest_eigenpair",
+           "lowest_gap", "modal_family", "modal_parts", "pencil_rayleigh_quotient",
+           "physical_eig", "solve_family", "solve_family_eig", "uses_kernel"]
 
 #: Eigenvalues with |Im| above this fraction of |lambda| are complex, i.e. not physical.
 IMAG_REL = 1.0e-8
@@ -541,6 +542,34 @@ def _term_matrices(n: int, family: str) -> tuple[NDArray[np.int32], NDArray[np.f
             mats.append(block.ravel())
             start += block.size
     return shape, np.concatenate(mats)
+
+
+@lru_cache(maxsize=64)
+def kernel_families(n: int) -> tuple[ctypes.Array, tuple]:
+    """Both families at degree n as the C kernel's :class:`.modal_kernel.Family` structs (for
+    :func:`.modal_kernel.modal_points`), and the arrays they point to (kept alive with them)."""
+    fams = (modal_kernel.Family * 2)()
+    keep = []
+    mass = np.zeros(len(INST1), dtype=np.int32)
+    mass[_MASS_TERMS] = 1
+    for q, name in enumerate(FAMILIES):
+        mf = modal_family(n, name)
+        shape, mats = _term_matrices(n, name)
+        start = _start_vector(mf.lam1.size + mf.lam2.size)
+        arrays = {key: np.ascontiguousarray(value) for key, value in (
+            ("lam1", mf.lam1), ("lam2", mf.lam2), ("g12", mf.g12), ("g21", mf.g21),
+            ("u1", mf.u1), ("u2", mf.u2), ("left1", mf.left1), ("left2", mf.left2),
+            ("start", start / np.linalg.norm(start)), ("tail_rows", mf.op.tail_rows),
+            ("term_shape", shape), ("term_mats", mats), ("mass", mass))}
+        f = fams[q]
+        f.k1, f.k2, f.schur = mf.lam1.size, mf.lam2.size, mf.schur
+        for e, (own2, own0, coupling) in enumerate(MODAL_TERMS):
+            f.own2[e], f.own0[e], f.coupling[e] = own2, own0, coupling
+        f.tail_count = mf.op.tail_rows.shape[0]
+        for key, value in arrays.items():
+            setattr(f, key, value.ctypes.data)
+        keep.append(arrays)
+    return fams, tuple(keep)
 
 
 def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np.float64],

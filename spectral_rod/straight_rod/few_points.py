@@ -1,9 +1,23 @@
 r"""The lowest eigenvalue of both mode families for one point or a few (Eq. ``inst1``), lean.
 
-The batched engine (:mod:`.eigensolver`) pays a fixed cost per degree group of ~1 ms of array
-bookkeeping, which dominates for a scalar call or a batch of ten. Here each (point, family)
-keeps the dense collocation pencil (A, B) of :mod:`.discretisation` (m = n - 1 unknowns, both
-families the same size, so they are stacked), and:
+The batched engine (:mod:`.eigensolver`) pays a fixed cost per degree group of ~0.5 ms of array
+bookkeeping, which dominates for a scalar call or a batch of ten. Two implementations avoid it.
+
+Where the C kernel is installed (:mod:`.modal_kernel`) and the pencil's quotient is summed in
+double (|Omega| <= LONG_TWIST, or not needed at the loose tolerances), the kernel solves the
+points one at a time in one call (``modal_points``): the batched engine's own algorithm and
+test with one lane (the Schur complement of the shifted modal form, two-sided shift-and-invert
+steps, the pencil's Rayleigh quotient, the mode's tail), and, as there, the antisymmetric family
+only until it is shown above the symmetric one (its tail is then inf). Measured 2026-12-05: a
+scalar call 29 us in a loop over Figure 1's points, against 70-88 us by the dense pencils below
+on the same machine that day; at rtol = 1e-8 (modal quotient, as the batched engine's) within
+1.2e-10 of the discrete eigenvalue on the 71 points of step 3 below (the largest at n = 64:
+K's round-off).
+
+Elsewhere (no kernel, or |Omega| > LONG_TWIST at tight tol, where the quotient needs extended
+precision) each (point, family) keeps the dense collocation pencil (A, B) of
+:mod:`.discretisation` (m = n - 1 unknowns, both families the same size, so they are stacked),
+and:
 
 1. F = A - SHIFT B is factorised and inverted once by LAPACK (``dgetrf``/``dgetri`` called
    directly: 5 us for m = 21, where ``numpy.linalg.inv`` takes 20 us);
@@ -29,10 +43,10 @@ families the same size, so they are stacked), and:
    spurious eigenvalue nearest the shift) goes back to the batched engine, which decides with
    its own iteration or the full ``eig``.
 
-Both families are solved (no "ceiling" shortcut: the second family costs one LAPACK pair). At
-the default tol the result differs from the batched engine's only by the rounding of two
-different computations of the same Rayleigh quotient; at a looser tol also by the two
-iterations' different stopping, up to the iteration tolerance (measured: see
+Both families are solved by the dense pencils (no "ceiling" shortcut: the second family costs
+one LAPACK pair). At the default tol the result differs from the batched engine's only by the
+rounding of two different computations of the same Rayleigh quotient; at a looser tol also by
+the two iterations' different stopping, up to the iteration tolerance (measured: see
 :func:`spectral_rod.critical_load`).
 
 One point (a scalar call, or an array of one point) is :func:`solve_one`'s: the same steps on
@@ -57,15 +71,22 @@ import numpy as np
 from numpy.typing import NDArray
 from scipy.linalg.lapack import dgetrf, dgetri  # at import: before BLAS threads are limited
 
-from spectral_rod.families import FAMILIES, SHIFT
+from spectral_rod.families import CLOSE_REL, FAMILIES, SHIFT
+from spectral_rod.straight_rod import modal_kernel
 from spectral_rod.straight_rod.discretisation import INST1, family_operator, term_coefficients
 from spectral_rod.straight_rod.eigensolver import (
+    FIRST_CHECK,
     LONG_TWIST,
+    LOOSE_DEGREE,
+    LOOSE_FIRST_CHECK,
     LOOSE_RTOL,
+    POWER_STEPS,
     _start_vector,
+    kernel_families,
     pencil_rayleigh_quotient,
 )
 from spectral_rod.straight_rod.resolution import tail_from_parts, tail_parts
+from spectral_rod.straight_rod.stacked_inverse import BACKWARD_TOL
 
 __all__ = ["LEAN_MAX_DEGREE", "SQUARING_MAX", "DensePencils", "dense_pencils", "solve_few",
            "solve_one"]
@@ -243,6 +264,29 @@ def _judge_one(sums: list[float], tail: list[float], quotient: float | None, rto
     return lam, t, ok
 
 
+def _kernel_answers(n: int, twist_max: float, rtol: float) -> bool:
+    """Whether the C kernel solves these points (:func:`_solve_kernel`): where it is installed,
+    and where the pencil's quotient is summed in double (|Omega| <= LONG_TWIST) or not needed
+    (the loose tolerances of the batched engine)."""
+    loose = rtol >= LOOSE_RTOL and n <= LOOSE_DEGREE
+    return (twist_max <= LONG_TWIST or loose) and modal_kernel.available()
+
+
+def _solve_kernel(n: int, coef: NDArray[np.float64], rtol: float
+                  ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.bool_]]:
+    """lambda and tails (points, 2) of both families and whether both were accepted, by the C
+    kernel one point at a time (the batched engine's algorithm and test; the antisymmetric
+    family stopped where shown above the symmetric one, its tail then inf)."""
+    lam, tails, status = modal_kernel.modal_points(
+        kernel_families(n)[0], coef, shift=SHIFT, rtol=rtol,
+        first=FIRST_CHECK if rtol < LOOSE_RTOL else LOOSE_FIRST_CHECK, max_steps=POWER_STEPS,
+        backward_tol=BACKWARD_TOL, close_rel=CLOSE_REL,
+        loose=rtol >= LOOSE_RTOL and n <= LOOSE_DEGREE)
+    ok = (status[:, 0] == modal_kernel.CONVERGED) & (
+        (status[:, 1] == modal_kernel.CONVERGED) | (status[:, 1] == modal_kernel.ABOVE))
+    return lam, tails, ok
+
+
 def solve_one(n: int, twist: float, nu: float, rtol: float
               ) -> tuple[list[float], list[float], bool]:
     """The lean solver for one point given as Python floats: lambda = pi^2 p and the tail of
@@ -253,6 +297,10 @@ def solve_one(n: int, twist: float, nu: float, rtol: float
     >>> ok, round(min(lam) / 9.869604401089358, 9)
     (True, 1.078092611)
     """
+    if _kernel_answers(n, abs(twist), rtol):
+        lam1, tails1, ok1 = _solve_kernel(n, np.array([[t.coefficient(twist, nu)
+                                                        for t in INST1]]), rtol)
+        return lam1[0].tolist(), tails1[0].tolist(), bool(ok1[0])
     dp = dense_pencils(n)
     m = dp.mass.shape[1]
     coef = np.array([*(t.coefficient(twist, nu) for t in INST1), 1.0])
@@ -284,6 +332,26 @@ def solve_few(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol:
     if twist.size == 1:
         lam1, tails1, ok1 = solve_one(n, float(twist[0]), float(nu[0]), rtol)
         return np.array(lam1)[:, None], np.array(tails1)[:, None], np.array([ok1])
+    lam, tails = np.empty((2, twist.size)), np.empty((2, twist.size))
+    ok = np.empty(twist.size, dtype=bool)
+    by_kernel = np.array([_kernel_answers(n, abs(float(t)), rtol) for t in twist])
+    for sel, solve in ((np.flatnonzero(by_kernel), _few_by_kernel),
+                       (np.flatnonzero(~by_kernel), _few_dense)):
+        if sel.size:
+            lam[:, sel], tails[:, sel], ok[sel] = solve(n, twist[sel], nu[sel], rtol)
+    return lam, tails, ok
+
+
+def _few_by_kernel(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol: float
+                   ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.bool_]]:
+    """:func:`solve_few` by the C kernel (:func:`_solve_kernel`)."""
+    lam, tails, ok = _solve_kernel(n, term_coefficients(twist, nu), rtol)
+    return lam.T, tails.T, ok
+
+
+def _few_dense(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol: float
+               ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.bool_]]:
+    """:func:`solve_few` by the dense pencils (steps 1-4 of the module docstring)."""
     dp = dense_pencils(n)
     pts, m = twist.size, dp.mass.shape[1]
     coef = np.hstack([term_coefficients(twist, nu), np.ones((pts, 1))])

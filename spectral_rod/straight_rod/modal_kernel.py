@@ -41,8 +41,8 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
-__all__ = ["ABOVE", "CONVERGED", "NOT_CONVERGED", "REJECTED", "KernelResult", "available",
-           "modal_lowest", "pencil_terms"]
+__all__ = ["ABOVE", "CONVERGED", "NOT_CONVERGED", "REJECTED", "Family", "KernelResult",
+           "available", "modal_lowest", "modal_points", "pencil_terms"]
 
 #: Status codes of a point (as in ``_modal_kernel.c``).
 NOT_CONVERGED, CONVERGED, ABOVE, REJECTED = 0, 1, 2, -1
@@ -60,6 +60,20 @@ class KernelResult(NamedTuple):
     status: NDArray[np.int32]
 
 
+class Family(ctypes.Structure):
+    """One mode family at one degree for :func:`modal_points` (the ``Family`` struct of
+    ``_modal_kernel.c``; :func:`.eigensolver.kernel_families` fills it). The arrays it points
+    to must outlive it: the builder keeps them."""
+
+    _fields_ = [("k1", ctypes.c_int), ("k2", ctypes.c_int), ("schur", ctypes.c_int),
+                ("own2", ctypes.c_int * 2), ("own0", ctypes.c_int * 2),
+                ("coupling", ctypes.c_int * 2)] + [
+        (name, ctypes.c_void_p) for name in ("lam1", "lam2", "g12", "g21", "u1", "u2", "left1",
+                                             "left2", "start")] + [
+        ("tail_count", ctypes.c_int)] + [
+        (name, ctypes.c_void_p) for name in ("tail_rows", "term_shape", "term_mats", "mass")]
+
+
 @lru_cache(maxsize=1)
 def _library() -> ctypes.CDLL | None:
     """The compiled kernel, or None where it was not built."""
@@ -68,7 +82,8 @@ def _library() -> ctypes.CDLL | None:
         return None
     try:
         lib = ctypes.CDLL(spec.origin)
-    except OSError:
+        lib.modal_lowest, lib.pencil_terms_dd, lib.modal_points  # noqa: B018 (a stale build)
+    except (OSError, AttributeError):
         return None
     # arrays are passed as addresses (c_void_p): the dtypes and layouts are checked here
     ptr, c_int, c_dbl = ctypes.c_void_p, ctypes.c_int, ctypes.c_double
@@ -77,6 +92,9 @@ def _library() -> ctypes.CDLL | None:
     lib.modal_lowest.restype = c_int
     lib.pencil_terms_dd.argtypes = [c_int] * 3 + [ptr] * 6
     lib.pencil_terms_dd.restype = c_int
+    lib.modal_points.argtypes = ([c_int, ctypes.POINTER(Family), c_int, ptr, c_dbl, c_dbl, c_int,
+                                  c_int, c_dbl, c_dbl, c_int] + [ptr] * 3)
+    lib.modal_points.restype = c_int
     return lib
 
 
@@ -150,3 +168,26 @@ def pencil_terms(shape: NDArray[np.int32], mats: NDArray[np.float64], x: NDArray
     if code != 0:
         raise MemoryError("the kernel could not allocate its workspace")
     return hi, lo
+
+
+def modal_points(families: ctypes.Array, coef: NDArray[np.float64], *, shift: float,
+                 rtol: float, first: int, max_steps: int, backward_tol: float,
+                 close_rel: float, loose: bool
+                 ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.int32]]:
+    """Both families at P points, one point at a time (``modal_points`` in ``_modal_kernel.c``):
+    lambda, the mode's tail and the status, each (P, 2). ``coef`` (P, terms) are the points'
+    INST1 coefficients; the points must have |Omega| <= LONG_TWIST unless ``loose`` (the
+    quotient is summed in double)."""
+    lib = _library()
+    if lib is None:
+        raise RuntimeError("the compiled kernel _modal_kernel is not installed")
+    coef = _c_array(coef)
+    p, terms = coef.shape
+    lam, tail = np.empty((p, 2)), np.empty((p, 2))
+    status = np.empty((p, 2), dtype=np.int32)
+    code = lib.modal_points(p, families, terms, _ptr(coef), shift, rtol, first, max_steps,
+                            backward_tol, close_rel, int(loose), _ptr(lam), _ptr(tail),
+                            _ptr(status))
+    if code != 0:
+        raise MemoryError("the kernel could not allocate its workspace")
+    return lam, tail, status
