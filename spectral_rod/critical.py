@@ -117,7 +117,8 @@ def solve_points(tw: NDArray[np.float64], nv: NDArray[np.float64], methods: NDAr
         return PointResults(*(np.concatenate(v) for v in zip(*parts, strict=True)))
     p, deg, err = np.empty(tw.size), np.zeros(tw.size, dtype=int), np.empty(tw.size)
     fam = np.empty(tw.size, dtype=FAMILY_DTYPE)
-    names = [str(name) for name in np.unique(methods)]
+    # the methods present (np.unique on strings sorts: 0.17 ms for Figure 1's 1,201 points)
+    names = [name for name in ROD_METHODS if np.any(methods == name)]
     for name in names:
         importlib.import_module(_MODULES[name])
     with one_blas_thread():
@@ -170,9 +171,10 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
     not accept or whose estimate misses tol). The computation is the general path's for one
     point, without its array bookkeeping: collocation calls
     :func:`spectral_rod.straight_rod.few_points.solve_one` with Python floats (measured
-    2026-12-02 at Omega = 3, nu = 1.5: 58-59 us a scalar call, 67 us before solve_one, 210 us a
-    one-point array call), the large-twist route :func:`_one_characteristic`; `python -m pytest
-    -m bench` measures both scalar loops."""
+    2026-12-05: 29 us a scalar call in a loop over Figure 1's points where it runs on the C
+    kernel, 70-88 us by the dense pencils; 2026-12-02: 210 us a one-point array call by the
+    general path), the large-twist route :func:`_one_characteristic`; `python -m pytest -m bench`
+    measures both scalar loops."""
     if not (isinstance(twist_angle, (float, int)) and isinstance(nu, (float, int))
             and isinstance(tol, float) and n is None
             and method in ("auto", "collocation", "characteristic")
@@ -288,7 +290,7 @@ def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None
 
     Scalar and array calls: a collocation point is solved by the lean solver
     (:mod:`spectral_rod.straight_rod.few_points`) in a scalar call and whenever at most
-    ``few_points_limit(n)`` (24 up to n = 30, fewer above) points of a call share its degree, by
+    ``few_points_limit(n)`` (12 up to n = 30, fewer above) points of a call share its degree, by
     the batched engine otherwise; an array call pools degree groups at a higher degree where a
     measured cost model says that is cheaper
     (:func:`spectral_rod.straight_rod.collocation.solve_degrees`; per chunk of :data:`CHUNK`

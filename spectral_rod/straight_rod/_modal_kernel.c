@@ -407,6 +407,7 @@ INLINE void family_point(const Family *f, int terms, const double *coef, const d
     if (f->mass[t]) den += acc;
   }
   *lam = num / den;
+  if (!(*lam >= shift)) *status = NOT_CONVERGED;  /* a nan quotient is not an answer */
 }
 
 /* Both families (symmetric first, the antisymmetric one only shown to lie above

