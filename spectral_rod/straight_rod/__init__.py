@@ -29,8 +29,12 @@ The modules
 * :mod:`.resolution` -- the a priori degree, the mode's coefficient tail and the error model;
 * :mod:`.eigensolver` -- the lowest physical eigenpair for batches (modal basis, Schur
   complement, two-sided shift-and-invert iteration; full ``eig`` as the reference path);
-* :mod:`.few_points` -- the same eigenvalue for one point or a few (dense LU by LAPACK, powers
-  of the shift-and-invert matrix): the scalar and small-batch path;
+* :mod:`.modal_kernel` -- that iteration in C, 32 points side by side or one point at a time,
+  and the pencil's Rayleigh-quotient terms in double-double (``_modal_kernel.c``, optional:
+  the numpy code above is its reference and fallback);
+* :mod:`.few_points` -- the same eigenvalue for one point or a few (the kernel one point at a
+  time; or dense LU by LAPACK and powers of the shift-and-invert matrix): the scalar and
+  small-batch path;
 * :mod:`.collocation` -- p* for arrays of points with automatic resolution (picks the engine
   per degree group by the measured crossover, ``few_points_limit``).
 """

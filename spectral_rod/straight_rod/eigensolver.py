@@ -6,8 +6,10 @@ uncoupled operators -d^2/ds^2 of each field are diagonalised once per degree
 Omega-proportional coupling, so K - SHIFT is inverted through a Schur complement of the smaller
 block, for all points of a degree at once (:class:`_ShiftedModal`). Shift-and-invert iteration
 on right and left vectors (:func:`lowest_eigenpair`, contraction 0.01-0.2 per step on
-Figure 1's range) gives the eigenvectors, and the eigenvalue is the two-sided Rayleigh quotient
-of the O(1) pencil (A, B) itself (error = product of the two vectors' errors).
+Figure 1's range; run by the C kernel of :mod:`.modal_kernel` where it is built, this module's
+numpy code being its reference and fallback) gives the eigenvectors, and the eigenvalue is
+the two-sided Rayleigh quotient of the O(1) pencil (A, B) itself (error = product of the two
+vectors' errors).
 
 Choosing the physical eigenvalue (the rule)
 -------------------------------------------
@@ -332,7 +334,8 @@ class _ShiftedModal:
 #: The C kernel (:mod:`.modal_kernel`) iterates where the Schur block has at most this many
 #: unknowns (degree n <= ~128); above, its unblocked loops lose to LAPACK's blocked ones
 #: (measured 2026-12-05, random points, tol 1e-12, kernel / numpy time a point: n = 22 0.19-0.33,
-#: 64 0.45-0.52, 100 0.50-0.60, 128 0.45-0.63, 144 0.55-0.68, 160 0.69-1.01; 0.8 at n = 256).
+#: 64 0.45-0.52, 100 0.50-0.60, 128 0.45-0.63, 144 0.55-0.68, 160 0.69-1.01; a generic x86-64
+#: build took 1.6 times numpy's time at n = 256).
 KERNEL_MAX_SCHUR = 64
 
 

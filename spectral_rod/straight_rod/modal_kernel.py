@@ -103,6 +103,16 @@ def available() -> bool:
     return _library() is not None
 
 
+def _call(name: str, *args) -> None:
+    """Call the kernel's function `name`; RuntimeError if it is not installed, MemoryError if it
+    could not allocate its workspace (its only failure)."""
+    lib = _library()
+    if lib is None:
+        raise RuntimeError("the compiled kernel _modal_kernel is not installed")
+    if getattr(lib, name)(*args) != 0:
+        raise MemoryError("the kernel could not allocate its workspace")
+
+
 def _ptr(a: NDArray | None) -> int | None:
     """The address of a C-contiguous array (None for a null pointer)."""
     if a is None:
@@ -129,9 +139,6 @@ def modal_lowest(r_e: NDArray[np.float64], a: NDArray[np.float64], b: NDArray[np
     vector's blocks; ``ceiling`` (P,) or None; the test from step ``first``, then every 2
     steps, up to ``max_steps``. Raises RuntimeError if the kernel is not available.
     """
-    lib = _library()
-    if lib is None:
-        raise RuntimeError("the compiled kernel _modal_kernel is not installed")
     r_e, d_s = _c_array(r_e), _c_array(d_s)
     p, k_e = r_e.shape
     k_s = d_s.shape[1]
@@ -140,10 +147,8 @@ def modal_lowest(r_e: NDArray[np.float64], a: NDArray[np.float64], b: NDArray[np
     ins = [r_e, _c_array(a).ravel(), _c_array(b).ravel(), d_s, _c_array(g_es), _c_array(g_se),
            _c_array(start_e), _c_array(start_s),
            None if ceiling is None else _c_array(ceiling).ravel()]
-    code = lib.modal_lowest(p, k_e, k_s, *map(_ptr, ins), shift, rtol, first, max_steps,
-                            backward_tol, *map(_ptr, out))
-    if code != 0:
-        raise MemoryError("the kernel could not allocate its workspace")
+    _call("modal_lowest", p, k_e, k_s, *map(_ptr, ins), shift, rtol, first, max_steps,
+          backward_tol, *map(_ptr, out))
     return out
 
 
@@ -155,18 +160,14 @@ def pencil_terms(shape: NDArray[np.int32], mats: NDArray[np.float64], x: NDArray
     ``shape`` (T, 5) gives each term's (row offset, rows, column offset, columns, offset in
     ``mats``), ``mats`` the terms' matrices (row-major, concatenated); x, y (P, m).
     """
-    lib = _library()
-    if lib is None:
-        raise RuntimeError("the compiled kernel _modal_kernel is not installed")
     x, y = _c_array(x), _c_array(y)
     p, m = x.shape
     count = shape.shape[0]
     hi, lo = np.empty((p, count)), np.empty((p, count))
     shape = np.ascontiguousarray(shape, dtype=np.int32)
-    code = lib.pencil_terms_dd(p, m, count, _ptr(shape),
-                               _ptr(_c_array(mats)), _ptr(x), _ptr(y), _ptr(hi), _ptr(lo))
-    if code != 0:
-        raise MemoryError("the kernel could not allocate its workspace")
+    mats = _c_array(mats)
+    _call("pencil_terms_dd", p, m, count, _ptr(shape), _ptr(mats), _ptr(x), _ptr(y), _ptr(hi),
+          _ptr(lo))
     return hi, lo
 
 
@@ -178,16 +179,10 @@ def modal_points(families: ctypes.Array, coef: NDArray[np.float64], *, shift: fl
     lambda, the mode's tail and the status, each (P, 2). ``coef`` (P, terms) are the points'
     INST1 coefficients; the points must have |Omega| <= LONG_TWIST unless ``loose`` (the
     quotient is summed in double)."""
-    lib = _library()
-    if lib is None:
-        raise RuntimeError("the compiled kernel _modal_kernel is not installed")
     coef = _c_array(coef)
     p, terms = coef.shape
     lam, tail = np.empty((p, 2)), np.empty((p, 2))
     status = np.empty((p, 2), dtype=np.int32)
-    code = lib.modal_points(p, families, terms, _ptr(coef), shift, rtol, first, max_steps,
-                            backward_tol, close_rel, int(loose), _ptr(lam), _ptr(tail),
-                            _ptr(status))
-    if code != 0:
-        raise MemoryError("the kernel could not allocate its workspace")
+    _call("modal_points", p, families, terms, _ptr(coef), shift, rtol, first, max_steps,
+          backward_tol, close_rel, int(loose), _ptr(lam), _ptr(tail), _ptr(status))
     return lam, tail, status

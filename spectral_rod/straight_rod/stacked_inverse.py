@@ -1,5 +1,10 @@
 r"""Inverses of a stack of small matrices, for the batched engine's Schur complements (``inst1``).
 
+Used by the numpy iteration of :func:`.eigensolver.lowest_eigenpair`: where the C kernel
+(:mod:`.modal_kernel`) is built, only for degrees above its range (Schur blocks of more than
+:data:`.eigensolver.KERNEL_MAX_SCHUR` unknowns) and for points whose unpivoted factors the
+kernel rejects; everywhere where it is not.
+
 ``numpy.linalg.inv`` calls LAPACK once per matrix, and at the sizes of the batched engine
 (k = 10..30 at Figure 1's and the (Omega, nu) map's degrees) that per-call cost, not the
 arithmetic, is most of its time. :func:`block_inverse` does the same arithmetic as a few
