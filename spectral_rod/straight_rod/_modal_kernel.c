@@ -29,7 +29,7 @@
 
 /* Where GCC and glibc allow it (ifunc), the kernel is compiled for three instruction sets and
    the best one the CPU has is picked at load time; every helper is inlined into it. */
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__GLIBC__)
 #define CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #else
 #define CLONES
