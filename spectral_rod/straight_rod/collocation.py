@@ -63,12 +63,14 @@ FEW_POINTS = 12
 
 
 def few_points_limit(n: int) -> int:
-    """Most points of degree n handed to the lean solver: the measured crossover with the
-    batched engine's C kernel (2026-12-05: random Figure 1 points forced to degree n, tol 1e-12,
-    minima of 30 rounds, lean/batched us a point: n = 16: 25/58 at 8 points, 21/19 at 24;
-    n = 22: 38/45 at 12, 37/35 at 16; n = 30: 69/71 at 8, 66/47 at 12; n = 40: 140/688 at 4,
-    124/116 at 6; n = 56: 246/251 at 4, 230/153 at 6; numpy's engine before the kernel crossed
-    at 24-32 points at n = 22); none above :data:`LEAN_MAX_DEGREE`."""
+    """Most points of degree n handed to the few-point path (:mod:`.few_points`), none above
+    :data:`LEAN_MAX_DEGREE`. ``python tests/bench/kernel_range.py`` (2026-12-05, random Figure 1
+    points forced to degree n, tol 1e-12, few-point / batched us a point): with the kernel one
+    point at a time, n = 16: 7.7/14.6 at 24 points, 6.5/8.7 at 48; n = 22: 11.7/12.6 at 32,
+    10.8/9.9 at 48; n = 30: 22.3/27.7 at 16, 19.3/18.9 at 24; n = 40: 37.4/45.3 at 12,
+    36.8/34.4 at 16. Points of degree above ~30 mostly have |Omega(L)| > 20, where the
+    few-point path at tight tol is the dense pencils' (e.g. 124/116 at 6 points, n = 40, before
+    the kernel), hence the steeper fall above n = 30."""
     if n > LEAN_MAX_DEGREE:
         return 0
     return FEW_POINTS if n <= 30 else max(4, int(FEW_POINTS * (30 / n) ** 3))

@@ -1,0 +1,104 @@
+"""Where the C kernel wins: the measurements behind two constants of the collocation solver.
+
+    python tests/bench/kernel_range.py
+
+1. ``eigensolver.KERNEL_MAX_SCHUR``: ``lowest_eigenpair`` by the C kernel against its numpy
+   iteration (the kernel switched off), per degree n and mode family, on random points
+   (Omega(L) up to 1.8 (n - 16), nu in [1.1, 10]) at tol 1e-12, with the limit lifted; the
+   ratio kernel / numpy time.
+2. ``collocation.few_points_limit``: the few-point path (the kernel one point at a time) against
+   the batched engine, ``_solve_points`` forced to either, on k random Figure 1 points at
+   degree n; the cheaper one.
+
+Minima of interleaved rounds on one BLAS thread. The docstrings of those constants quote what
+it prints (2026-12-05). A development tool, not a test (pytest does not collect it).
+"""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+
+from spectral_rod import load_figure1
+from spectral_rod._blas_threads import one_blas_thread
+from spectral_rod.straight_rod import collocation as C
+from spectral_rod.straight_rod import eigensolver as E
+from spectral_rod.straight_rod import modal_kernel
+
+
+def minima(fns, rounds: int) -> list[float]:
+    """Minimum wall time of each function over `rounds` interleaved rounds."""
+    best = [np.inf] * len(fns)
+    for _ in range(rounds):
+        for i, fn in enumerate(fns):
+            t = time.perf_counter()
+            fn()
+            best[i] = min(best[i], time.perf_counter() - t)
+    return best
+
+
+def numpy_only(fn):
+    """fn with the kernel switched off (the numpy iteration answers)."""
+    def run():
+        library = modal_kernel._library
+        modal_kernel._library = lambda: None
+        try:
+            return fn()
+        finally:
+            modal_kernel._library = library
+    return run
+
+
+def kernel_against_numpy() -> None:
+    rng = np.random.default_rng(1)
+    print("kernel / numpy time of lowest_eigenpair (tol 1e-12)")
+    limit, E.KERNEL_MAX_SCHUR = E.KERNEL_MAX_SCHUR, 10**6
+    try:
+        _kernel_against_numpy(rng)
+    finally:
+        E.KERNEL_MAX_SCHUR = limit
+
+
+def _kernel_against_numpy(rng: np.random.Generator) -> None:
+    for n, points in ((22, 1200), (22, 100), (40, 400), (64, 200), (100, 100), (128, 60),
+                      (144, 60), (160, 40), (256, 20)):
+        for family in ("symmetric", "antisymmetric"):
+            mf = E.modal_family(n, family)
+            tw = rng.uniform(0, max(1.0, 1.8 * (n - 16)), points)
+            nv = rng.uniform(1.1, 10.0, points)
+            def fast(mf=mf, tw=tw, nv=nv):
+                return E.lowest_eigenpair(mf, tw, nv, rtol=E.POWER_RTOL)
+
+            t_kernel, t_numpy = minima([fast, numpy_only(fast)], 7)
+            print(f"  n = {n:3d}, {points:4d} points, {family:<13}: {t_kernel / t_numpy:.2f}")
+
+
+def few_points_crossover() -> None:
+    d = load_figure1()
+    tw_all, nv_all = np.abs(d["twist_angle"].to_numpy()), d["nu"].to_numpy()
+    rng = np.random.default_rng(0)
+    limit = C.few_points_limit
+    print("few-point path / batched engine, us a point (Figure 1 points at degree n)")
+    try:
+        for n in (16, 22, 30, 40, 56):
+            for k in (8, 12, 16, 24, 32, 48):
+                idx = rng.choice(tw_all.size, k, replace=False)
+                tw, nv, deg = tw_all[idx], nv_all[idx], np.full(k, n)
+
+                def solve(cap, tw=tw, nv=nv, deg=deg):
+                    C.few_points_limit = lambda n, cap=cap: cap
+                    C._solve_points(tw, nv, deg)
+                few, batched = minima([lambda: solve(10**6), lambda: solve(0)], 30)
+                print(f"  n = {n}, {k:2d} points: {few / k * 1e6:6.1f} / {batched / k * 1e6:6.1f}"
+                      f"  -> {'few-point' if few < batched else 'batched'}")
+    finally:
+        C.few_points_limit = limit
+
+
+if __name__ == "__main__":
+    if not modal_kernel.available():
+        raise SystemExit("the C kernel is not built here: nothing to compare")
+    with one_blas_thread():
+        kernel_against_numpy()
+        few_points_crossover()
