@@ -171,10 +171,10 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
     not accept or whose estimate misses tol). The computation is the general path's for one
     point, without its array bookkeeping: collocation calls
     :func:`spectral_rod.straight_rod.few_points.solve_one` with Python floats (measured
-    2026-12-05: 29 us a scalar call in a loop over Figure 1's points where it runs on the C
-    kernel, 70-88 us by the dense pencils; 2026-12-02: 210 us a one-point array call by the
-    general path), the large-twist route :func:`_one_characteristic`; `python -m pytest -m bench`
-    measures both scalar loops."""
+    2026-12-05 by the benchmarks: 26.4-26.5 us a scalar call in a loop over Figure 1's points
+    where it runs on the C kernel, 58-60 us by the dense pencils; 2026-12-02: 210 us a one-point
+    array call by the general path), the large-twist route :func:`_one_characteristic`;
+    `python -m pytest -m bench` measures both scalar loops."""
     if not (isinstance(twist_angle, (float, int)) and isinstance(nu, (float, int))
             and isinstance(tol, float) and n is None
             and method in ("auto", "collocation", "characteristic")

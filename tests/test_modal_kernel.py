@@ -22,12 +22,9 @@ def _points(n: int, count: int = 300, seed: int = 5):
 
 
 def _numpy_pair(mf, twist, nu, rtol, ceiling=None):
-    start = E._start_vector(mf.lam1.size + mf.lam2.size)
-    first = E.FIRST_CHECK if rtol < E.LOOSE_RTOL else E.LOOSE_FIRST_CHECK
-    if ceiling is not None:
-        first = min(first, 4)
-    return E._iterate(E._ShiftedModal.at(mf, twist, nu), start / np.linalg.norm(start), rtol,
-                      ceiling, first, E.POWER_STEPS)
+    return E._iterate(E._ShiftedModal.at(mf, twist, nu),
+                      E._start_vector(mf.lam1.size + mf.lam2.size), rtol, ceiling,
+                      E.first_check(rtol, ceiling is not None), E.POWER_STEPS)
 
 
 @needs_kernel

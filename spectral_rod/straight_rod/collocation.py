@@ -80,18 +80,12 @@ def few_points_limit(n: int) -> int:
 #: 30 and 300 points of one degree (Omega up to 1.8 (n - 16), nu in [1.1, 10];
 #: ``test_pooling_cost_model`` in ``tests/bench``): a batched solve of both families costs
 #: FIXED_COST whatever its size plus POINT_COST (n/22)^2 a point; the lean solver has no fixed
-#: cost and costs LEAN_FACTOR times as much a point. With the C kernel (2026-12-05):
-#: 0.45-0.62 ms and 4.5-5.6 us (n/22)^2 at n = 16, 22, 36, the lean solver 8-10 times a batched
-#: point (the crossover measurements of :func:`few_points_limit`); with numpy's engine before
-#: it, 1.2-2.7 ms and 14-15 us (n/22)^2, the lean solver 1.7-2.1 times. Empirical constants:
-#: only their ratios decide. Against the previous constants (1.4 ms, 15 us, 2) these took,
-#: minima of 7 interleaved rounds: the Figure 1 batch 5.54 against 5.61 us a point, one call
-#: per curve 7.21 against 7.23, batches of 100 14.7 against 16.1, of 10 85.6 against 84.0,
-#: a quarter of the (Omega, nu) map's collocation points 18.3 against 17.8, tol 1e-4 3.05
-#: against 3.02. Since the few-point path also runs on the kernel (|Omega| <= 20, the degrees
-#: n <= 30; ~11 us a point at n = 22 against ~40 before), its crossover moved to 24-48 points
-#: at n = 16-22 and ~24 at n = 30, but a limit of 24 there and LEAN_FACTOR 3 measured the same
-#: on these patterns (within 2 %, 7 interleaved rounds): kept.
+#: cost and costs LEAN_FACTOR times as much a point. With the C kernel (2026-12-05, four runs):
+#: 0.30-0.62 ms and 2.9-5.6 us (n/22)^2 at n = 16, 22, 36; with numpy's engine before it,
+#: 1.2-2.7 ms and 14-15 us (n/22)^2. Empirical constants: only their ratios decide. LEAN_FACTOR
+#: (and FEW_POINTS = 12) were set for the dense-pencil few-point path, ~8 times a batched point
+#: at n = 22; on the kernel the few-point path is ~3 times (``tests/bench/kernel_range.py``:
+#: e.g. 12-13 against 4 us (n = 22) a point), so both are conservative where it answers.
 FIXED_COST, POINT_COST, LEAN_FACTOR = 0.5e-3, 4.6e-6, 8.0
 
 

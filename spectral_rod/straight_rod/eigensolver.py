@@ -48,8 +48,9 @@ from spectral_rod.straight_rod.resolution import mode_tails
 from spectral_rod.straight_rod.stacked_inverse import BACKWARD_TOL, stacked_inverse
 
 __all__ = ["CALIBRATED_TOL", "ISOLATION_GAP", "KERNEL_MAX_SCHUR", "ModalFamily", "ModalParts",
-           "iteration_allowance", "iteration_rtol", "kernel_families", "lowest_eigenpair",
-           "lowest_gap", "modal_family", "modal_parts", "pencil_rayleigh_quotient",
+           "first_check", "iteration_allowance", "iteration_rtol", "kernel_families",
+           "loose_quotient", "lowest_eigenpair", "lowest_gap", "modal_family", "modal_parts",
+           "pencil_rayleigh_quotient",
            "physical_eig", "solve_family", "solve_family_eig", "uses_kernel"]
 
 #: Eigenvalues with |Im| above this fraction of |lambda| are complex, i.e. not physical.
@@ -398,10 +399,7 @@ def lowest_eigenpair(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np
     """
     pt = modal_parts(mf, twist, nu)
     start = _start_vector(mf.lam1.size + mf.lam2.size)
-    start = start / np.linalg.norm(start)
-    first = FIRST_CHECK if rtol < LOOSE_RTOL else LOOSE_FIRST_CHECK
-    if ceiling is not None:
-        first = min(first, 4)
+    first = first_check(rtol, ceiling is not None)
     if not uses_kernel(pt.d_s.shape[1]):
         return _iterate(_ShiftedModal.from_parts(mf, pt), start, rtol, ceiling, first,
                         max_steps)
@@ -472,8 +470,25 @@ def _iterate(sk: _ShiftedModal, start: NDArray[np.float64], rtol: float,
 
 @lru_cache(maxsize=64)
 def _start_vector(k: int) -> NDArray[np.float64]:
-    """A fixed generic start vector (no special structure that could be orthogonal to a mode)."""
-    return np.random.default_rng(20240607).standard_normal(k)
+    """A fixed generic unit start vector (no special structure that could be orthogonal to a
+    mode); read-only, as it is cached."""
+    v = np.random.default_rng(20240607).standard_normal(k)
+    v /= np.linalg.norm(v)
+    v.setflags(write=False)
+    return v
+
+
+def loose_quotient(rtol: float, n: int) -> bool:
+    """Whether the eigenvalue is the modal quotient rather than the pencil's (LOOSE_RTOL and
+    LOOSE_DEGREE: the iteration's own quotient is accurate enough there)."""
+    return rtol >= LOOSE_RTOL and n <= LOOSE_DEGREE
+
+
+def first_check(rtol: float, ceiling: bool) -> int:
+    """The step of the iteration's first convergence test: FIRST_CHECK, LOOSE_FIRST_CHECK from
+    LOOSE_RTOL on, at most 4 where a ceiling may stop the iteration early."""
+    first = FIRST_CHECK if rtol < LOOSE_RTOL else LOOSE_FIRST_CHECK
+    return min(first, 4) if ceiling else first
 
 
 def pencil_rayleigh_quotient(op: FamilyOperator, twist: NDArray[np.float64],
@@ -511,8 +526,9 @@ def _rayleigh_sums(op: FamilyOperator, twist: NDArray[np.float64], nu: NDArray[n
     (:attr:`FamilyOperator.term_blocks`; a quarter of the work of the full pieces).
 
     In extended precision the products are the C kernel's double-double ones where it is
-    installed (:func:`.modal_kernel.pencil_terms`; 0.4-1.4 µs a point at n = 24-56 against
-    3.5-16 µs for numpy's ``longdouble`` products, measured 2026-12-05), summed in ``dtype``."""
+    installed (:func:`.modal_kernel.pencil_terms`; this function 0.4-1.6 µs a point at n = 24-56
+    with them against 2.8-14 µs with numpy's ``longdouble`` products,
+    ``tests/bench/kernel_range.py``), summed in ``dtype``."""
     if dtype is np.longdouble and modal_kernel.available():
         hi, lo = modal_kernel.pencil_terms(*_term_matrices(op.n, op.family), right, left)
         terms = hi.astype(dtype) + lo.astype(dtype)
@@ -558,11 +574,11 @@ def kernel_families(n: int) -> tuple[ctypes.Array, tuple]:
     for q, name in enumerate(FAMILIES):
         mf = modal_family(n, name)
         shape, mats = _term_matrices(n, name)
-        start = _start_vector(mf.lam1.size + mf.lam2.size)
         arrays = {key: np.ascontiguousarray(value) for key, value in (
             ("lam1", mf.lam1), ("lam2", mf.lam2), ("g12", mf.g12), ("g21", mf.g21),
             ("u1", mf.u1), ("u2", mf.u2), ("left1", mf.left1), ("left2", mf.left2),
-            ("start", start / np.linalg.norm(start)), ("tail_rows", mf.op.tail_rows),
+            ("start", _start_vector(mf.lam1.size + mf.lam2.size)),
+            ("tail_rows", mf.op.tail_rows),
             ("term_shape", shape), ("term_mats", mats), ("mass", mass))}
         f = fams[q]
         f.k1, f.k2, f.schur = mf.lam1.size, mf.lam2.size, mf.schur
@@ -603,7 +619,7 @@ def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np
     vec = mf.right_vectors(z)
     # the eigenvalue from the O(1) pencil itself: the two-sided Rayleigh quotient (its error is
     # the product of the vectors' errors; K carries round-off ~ eps n^4 in its diagonal)
-    loose = rtol >= LOOSE_RTOL and n <= LOOSE_DEGREE
+    loose = loose_quotient(rtol, n)
     good = np.flatnonzero(ok) if not loose else np.zeros(0, dtype=int)
     lam[good] = pencil_rayleigh_quotient(op, twist[good], nu[good], mf.left_vectors(w[good]),
                                          vec[good])

@@ -8,11 +8,11 @@ double (|Omega| <= LONG_TWIST, or not needed at the loose tolerances), the kerne
 points one at a time in one call (``modal_points``): the batched engine's own algorithm and
 test with one lane (the Schur complement of the shifted modal form, two-sided shift-and-invert
 steps, the pencil's Rayleigh quotient, the mode's tail), and, as there, the antisymmetric family
-only until it is shown above the symmetric one (its tail is then inf). Measured 2026-12-05: a
-scalar call 29 us in a loop over Figure 1's points, against 70-88 us by the dense pencils below
-on the same machine that day; at rtol = 1e-8 (modal quotient, as the batched engine's) within
-1.2e-10 of the discrete eigenvalue on the 71 points of step 3 below (the largest at n = 64:
-K's round-off).
+only until it is shown above the symmetric one (its tail is then inf). The benchmark's loop of
+scalar calls over Figure 1's points: 26.4-26.5 us a call, against 58-60 us by the dense pencils
+below (``tests/bench/HISTORY.md``, 2026-12-05); at rtol = 1e-8 (modal quotient, as the
+batched engine's) within 1.2e-10 of the discrete eigenvalue on the 71 points of step 3 below
+(the largest at n = 64: K's round-off).
 
 Elsewhere (no kernel, or |Omega| > LONG_TWIST at tight tol, where the quotient needs extended
 precision) each (point, family) keeps the dense collocation pencil (A, B) of
@@ -75,14 +75,13 @@ from spectral_rod.families import CLOSE_REL, FAMILIES, SHIFT
 from spectral_rod.straight_rod import modal_kernel
 from spectral_rod.straight_rod.discretisation import INST1, family_operator, term_coefficients
 from spectral_rod.straight_rod.eigensolver import (
-    FIRST_CHECK,
     LONG_TWIST,
-    LOOSE_DEGREE,
-    LOOSE_FIRST_CHECK,
     LOOSE_RTOL,
     POWER_STEPS,
     _start_vector,
+    first_check,
     kernel_families,
+    loose_quotient,
     pencil_rayleigh_quotient,
 )
 from spectral_rod.straight_rod.resolution import tail_from_parts, tail_parts
@@ -130,9 +129,8 @@ def dense_pencils(n: int) -> DensePencils:
         p_t, b_t = np.swapaxes(op.pieces, 1, 2), op.mass.T
         pieces[:k, f, 0] = pieces[:k, f, 1] = p_t
         pieces[k, f, 0], pieces[k, f, 2] = -SHIFT * b_t, b_t
-    start = _start_vector(m)
     return DensePencils(n, pieces.reshape(k + 1, -1), np.stack([op.mass for op in ops]),
-                        np.stack([op.tail_rows for op in ops]), start / np.linalg.norm(start))
+                        np.stack([op.tail_rows for op in ops]), _start_vector(m))
 
 
 def _inverses(f_t: NDArray[np.float64]) -> NDArray[np.float64] | None:
@@ -264,12 +262,13 @@ def _judge_one(sums: list[float], tail: list[float], quotient: float | None, rto
     return lam, t, ok
 
 
-def _kernel_answers(n: int, twist_max: float, rtol: float) -> bool:
-    """Whether the C kernel solves these points (:func:`_solve_kernel`): where it is installed,
-    and where the pencil's quotient is summed in double (|Omega| <= LONG_TWIST) or not needed
-    (the loose tolerances of the batched engine)."""
-    loose = rtol >= LOOSE_RTOL and n <= LOOSE_DEGREE
-    return (twist_max <= LONG_TWIST or loose) and modal_kernel.available()
+def _kernel_answers(n: int, twist: NDArray[np.float64] | float, rtol: float):
+    """Where the C kernel solves points (:func:`_solve_kernel`): where it is installed, and
+    where the pencil's quotient is summed in double (|Omega| <= LONG_TWIST) or not needed (the
+    loose tolerances of the batched engine). A bool per point of `twist`."""
+    if not modal_kernel.available():
+        return np.zeros(np.shape(twist), dtype=bool) if np.ndim(twist) else False
+    return (abs(twist) <= LONG_TWIST) | loose_quotient(rtol, n)
 
 
 def _solve_kernel(n: int, coef: NDArray[np.float64], rtol: float
@@ -277,13 +276,11 @@ def _solve_kernel(n: int, coef: NDArray[np.float64], rtol: float
     """lambda and tails (points, 2) of both families and whether both were accepted, by the C
     kernel one point at a time (the batched engine's algorithm and test; the antisymmetric
     family stopped where shown above the symmetric one, its tail then inf)."""
-    families, arrays = kernel_families(n)  # `arrays` keeps what the structs point to alive
+    families, _arrays = kernel_families(n)  # _arrays: what the structs point to, kept alive
     lam, tails, status = modal_kernel.modal_points(
-        families, coef, shift=SHIFT, rtol=rtol,
-        first=FIRST_CHECK if rtol < LOOSE_RTOL else LOOSE_FIRST_CHECK, max_steps=POWER_STEPS,
-        backward_tol=BACKWARD_TOL, close_rel=CLOSE_REL,
-        loose=rtol >= LOOSE_RTOL and n <= LOOSE_DEGREE)
-    del arrays
+        families, coef, shift=SHIFT, rtol=rtol, first=first_check(rtol, False),
+        max_steps=POWER_STEPS, backward_tol=BACKWARD_TOL, close_rel=CLOSE_REL,
+        loose=loose_quotient(rtol, n))
     ok = (status[:, 0] == modal_kernel.CONVERGED) & (
         (status[:, 1] == modal_kernel.CONVERGED) | (status[:, 1] == modal_kernel.ABOVE))
     return lam, tails, ok
@@ -299,7 +296,7 @@ def solve_one(n: int, twist: float, nu: float, rtol: float
     >>> ok, round(min(lam) / 9.869604401089358, 9)
     (True, 1.078092611)
     """
-    if _kernel_answers(n, abs(twist), rtol):
+    if _kernel_answers(n, twist, rtol):
         lam1, tails1, ok1 = _solve_kernel(n, np.array([[t.coefficient(twist, nu)
                                                         for t in INST1]]), rtol)
         return lam1[0].tolist(), tails1[0].tolist(), bool(ok1[0])
@@ -336,7 +333,7 @@ def solve_few(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol:
         return np.array(lam1)[:, None], np.array(tails1)[:, None], np.array([ok1])
     lam, tails = np.empty((2, twist.size)), np.empty((2, twist.size))
     ok = np.empty(twist.size, dtype=bool)
-    by_kernel = np.array([_kernel_answers(n, abs(float(t)), rtol) for t in twist])
+    by_kernel = _kernel_answers(n, twist, rtol)
     for sel, solve in ((np.flatnonzero(by_kernel), _few_by_kernel),
                        (np.flatnonzero(~by_kernel), _few_dense)):
         if sel.size:

@@ -8,10 +8,9 @@ of k = 10..30 its per-matrix loops (and LAPACK's per-matrix calls) run ~1e9 mult
 second, and a C loop per point was no faster (~1.15 times: one point's own loops are short and
 dependent; ``tests/bench/c_prototype``). ``_modal_kernel.c`` runs the same algorithm with the
 arrays laid out [index][point] for 32 points at a time, so that every inner loop is over
-independent points and the compiler vectorises it: measured 2026-12-05 on Figure 1's 1,201
-points (one family, tol 1e-12, minima of 20 rounds), 0.76 µs a point at n = 22 against numpy's
-5.8 (-O3 -march=native; 1.28 µs with a generic x86-64 -O3 build, 0.99 with AVX2) and 1.5 against
-10.1 at n = 30.
+independent points and the compiler vectorises it: 0.18-0.35 of the numpy iteration's time at
+n = 22-40 (``tests/bench/kernel_range.py``), a family's whole solve on Figure 1's points 1.3-2.4
+against 5.6-7.3 µs a point (``tests/bench/work_per_point.py``; 2026-12-05).
 
 It differs from the numpy code in two ways, both checked per point: the Schur complement's LU
 has no pivoting, accepted by the probe test of :func:`.stacked_inverse.stacked_inverse`
@@ -22,8 +21,8 @@ solves it; and the arithmetic is done in another order, so results agree to roun
 :func:`pencil_terms` gives the bilinear forms of the two-sided Rayleigh quotient of the pencil
 (:func:`.eigensolver.pencil_rayleigh_quotient`) in double-double, for |Omega(L)| > 20 where its
 terms cancel to ~lambda/Omega^2 and they were summed in numpy's ``longdouble`` (no BLAS there:
-3.5-18 µs a point at n = 24-56, against 0.6-2.1 µs here; the quotients agree to 4 eps and with
-50-digit sums, ``tests/test_modal_kernel.py``).
+2.8-14 µs a point at n = 24-56, against 0.4-1.6 µs here, ``tests/bench/kernel_range.py``; the
+quotients agree to 4 eps and with 50-digit sums, ``tests/test_modal_kernel.py``).
 
 The kernel is built at install (``setup.py``; optional: without a C compiler the package
 installs without it, and :func:`available` is False) and loaded with :mod:`ctypes` on first

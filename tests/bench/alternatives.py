@@ -71,7 +71,7 @@ def iterate(sk: _ShiftedModal, size: int, shift: np.ndarray, check: Callable, rt
     lambda = shift + mu. Returns lambda (nan where not converged in 40 steps) and the mean
     steps a point."""
     points = shift.size
-    x = np.broadcast_to(_start_vector(size) / np.linalg.norm(_start_vector(size)), (points, size))
+    x = np.broadcast_to(_start_vector(size), (points, size))
     cur = (x, None, x, None)
     lam, active, rows = np.full(points, np.nan), np.arange(points), 0
     for step in range(1, 41):
@@ -190,9 +190,10 @@ def at_single(mf32: E.ModalFamily, twist, nu) -> _ShiftedModal:
         E.stacked_inverse = real
 
 
-def minima(fns: list[Callable]) -> list[float]:
+def minima(fns: list[Callable], rounds: int = ROUNDS) -> list[float]:
+    """Minimum wall time of each function over `rounds` interleaved rounds."""
     best = [np.inf] * len(fns)
-    for _ in range(ROUNDS):
+    for _ in range(rounds):
         for i, fn in enumerate(fns):
             t = time.perf_counter()
             fn()

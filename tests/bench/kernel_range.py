@@ -9,6 +9,9 @@
 2. ``collocation.few_points_limit``: the few-point path (the kernel one point at a time) against
    the batched engine, ``_solve_points`` forced to either, on k random Figure 1 points at
    degree n; the cheaper one.
+3. The pencil's Rayleigh-quotient terms at |Omega(L)| > 20 (``eigensolver._rayleigh_sums`` in
+   ``longdouble``): the kernel's double-double products against numpy's ``longdouble`` ones,
+   us a point on 500 random points, n = 24, 44, 56.
 
 Minima of interleaved rounds on one BLAS thread. The docstrings of those constants quote what
 it prints (2026-12-05). A development tool, not a test (pytest does not collect it).
@@ -16,26 +19,15 @@ it prints (2026-12-05). A development tool, not a test (pytest does not collect 
 
 from __future__ import annotations
 
-import time
-
 import numpy as np
+from alternatives import minima
 
 from spectral_rod import load_figure1
 from spectral_rod._blas_threads import one_blas_thread
 from spectral_rod.straight_rod import collocation as C
 from spectral_rod.straight_rod import eigensolver as E
 from spectral_rod.straight_rod import modal_kernel
-
-
-def minima(fns, rounds: int) -> list[float]:
-    """Minimum wall time of each function over `rounds` interleaved rounds."""
-    best = [np.inf] * len(fns)
-    for _ in range(rounds):
-        for i, fn in enumerate(fns):
-            t = time.perf_counter()
-            fn()
-            best[i] = min(best[i], time.perf_counter() - t)
-    return best
+from spectral_rod.straight_rod.discretisation import family_operator
 
 
 def numpy_only(fn):
@@ -96,9 +88,27 @@ def few_points_crossover() -> None:
         C.few_points_limit = limit
 
 
+def extended_quotient() -> None:
+    rng = np.random.default_rng(0)
+    print("pencil quotient terms at |Omega(L)| > 20, us a point: double-double / longdouble")
+    for n in (24, 44, 56):
+        for family in ("symmetric", "antisymmetric"):
+            op = family_operator(n, family)
+            m = op.sizes[0] + op.sizes[1]
+            tw, nv = rng.uniform(20, 50, 500), rng.uniform(1, 100, 500)
+            x, y = rng.standard_normal((500, m)), rng.standard_normal((500, m))
+
+            def terms(op=op, tw=tw, nv=nv, x=x, y=y):
+                return E._rayleigh_sums(op, tw, nv, y, x, np.longdouble)
+
+            t_dd, t_ld = minima([terms, numpy_only(terms)], 7)
+            print(f"  n = {n}, {family:<13}: {t_dd / 500 * 1e6:5.2f} / {t_ld / 500 * 1e6:5.2f}")
+
+
 if __name__ == "__main__":
     if not modal_kernel.available():
         raise SystemExit("the C kernel is not built here: nothing to compare")
     with one_blas_thread():
         kernel_against_numpy()
         few_points_crossover()
+        extended_quotient()
