@@ -44,6 +44,7 @@ from spectral_rod.straight_rod.resolution import (
     error_estimate_scalar,
     initial_degree_scalar,
     raised_degree,
+    shortfall_scalar,
 )
 
 __all__ = ["critical_load"]
@@ -205,12 +206,15 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
         if not ok:
             return None
         best, tail = pick_family_scalar(lam, tails)
-        err = error_estimate_scalar(tail, om) + allowance
-        if err <= tol:
+        short = shortfall_scalar(tail, tol)
+        if short <= 1.0:
             break
         if deg >= N_MAX:
             return None  # unconverged: the general path warns and flags it
-        deg = int(raised_degree(deg))
+        deg = int(raised_degree(deg, short))
+    err = error_estimate_scalar(tail, om) + allowance
+    if err > tol:
+        return None  # unconverged (round-off with the allowance): the general path flags it
     p, err = bounded_point(lam[best] / math.pi**2, err, nv)
     if not full_output:
         return p

@@ -196,46 +196,59 @@ INLINE void shifted_solve(const int L, int ke, int ks, const double *s, const do
   }
 }
 
-INLINE double sum_sq(const int L, int k, const double *v, int w) {
-  double acc = 0.0;
-  for (int j = 0; j < k; j++) acc += AT(v, j)[w] * AT(v, j)[w];
-  return acc;
-}
-
-/* The convergence test of lowest_eigenpair at one lane: normalises x and y, returns the
-   two-sided quotient and sets the first-order error bound. */
-INLINE double lane_test(const int L, int ke, int ks, double shift, int w, double *xe, double *xs, double *ye,
-                        double *ys, const double *pe, const double *ps, const double *qe,
-                        const double *qs, double *bound) {
-  const double sx = 1.0 / sqrt(sum_sq(L, ke, xe, w) + sum_sq(L, ks, xs, w));
-  const double sy = 1.0 / sqrt(sum_sq(L, ke, ye, w) + sum_sq(L, ks, ys, w));
-  double yx = 0.0, ykx = 0.0, rx = 0.0, ry = 0.0;
+/* The convergence test of lowest_eigenpair at every lane at once: normalises x and y, sets
+   the two-sided quotient rq and the first-order error bound (per lane, the operations and
+   their order of the numpy code's test). */
+INLINE void lanes_test(const int L, int ke, int ks, double shift, double *xe, double *xs,
+                       double *ye, double *ys, const double *pe, const double *ps,
+                       const double *qe, const double *qs, double *rq, double *bound) {
+  double sx[LANES], sy[LANES], se[LANES], ss[LANES], te[LANES], ts[LANES];
+  double yx[LANES], ykx[LANES], rx[LANES], ry[LANES];
+  for (int w = 0; w < L; w++) se[w] = ss[w] = te[w] = ts[w] = 0.0;
+  for (int j = 0; j < ke; j++) {
+    const double *x = AT(xe, j), *y = AT(ye, j);
+    for (int w = 0; w < L; w++) { se[w] += x[w] * x[w]; te[w] += y[w] * y[w]; }
+  }
+  for (int j = 0; j < ks; j++) {
+    const double *x = AT(xs, j), *y = AT(ys, j);
+    for (int w = 0; w < L; w++) { ss[w] += x[w] * x[w]; ts[w] += y[w] * y[w]; }
+  }
+  for (int w = 0; w < L; w++) {
+    sx[w] = 1.0 / sqrt(se[w] + ss[w]);
+    sy[w] = 1.0 / sqrt(te[w] + ts[w]);
+    yx[w] = ykx[w] = rx[w] = ry[w] = 0.0;
+  }
   for (int blk = 0; blk < 2; blk++) {
     const int k = blk ? ks : ke;
     double *x = blk ? xs : xe, *y = blk ? ys : ye;
     const double *p = blk ? ps : pe;
     for (int j = 0; j < k; j++) {
-      double *xj = AT(x, j) + w, *yj = AT(y, j) + w;
-      *xj *= sx;
-      *yj *= sy;
-      yx += *yj * *xj;
-      ykx += *yj * (shift * *xj + AT(p, j)[w] * sx);
+      double *xj = AT(x, j), *yj = AT(y, j);
+      const double *pj = AT(p, j);
+      for (int w = 0; w < L; w++) {
+        xj[w] *= sx[w];
+        yj[w] *= sy[w];
+        yx[w] += yj[w] * xj[w];
+        ykx[w] += yj[w] * (shift * xj[w] + pj[w] * sx[w]);
+      }
     }
   }
-  const double rq = ykx / yx;
+  for (int w = 0; w < L; w++) rq[w] = ykx[w] / yx[w];
   for (int blk = 0; blk < 2; blk++) {
     const int k = blk ? ks : ke;
     const double *x = blk ? xs : xe, *y = blk ? ys : ye, *p = blk ? ps : pe,
                  *q = blk ? qs : qe;
     for (int j = 0; j < k; j++) {
-      const double u = shift * AT(x, j)[w] + AT(p, j)[w] * sx - rq * AT(x, j)[w];
-      const double v = shift * AT(y, j)[w] + AT(q, j)[w] * sy - rq * AT(y, j)[w];
-      rx += u * u;
-      ry += v * v;
+      const double *xj = AT(x, j), *yj = AT(y, j), *pj = AT(p, j), *qj = AT(q, j);
+      for (int w = 0; w < L; w++) {
+        const double u = shift * xj[w] + pj[w] * sx[w] - rq[w] * xj[w];
+        const double v = shift * yj[w] + qj[w] * sy[w] - rq[w] * yj[w];
+        rx[w] += u * u;
+        ry[w] += v * v;
+      }
     }
   }
-  *bound = sqrt(rx * ry) / fabs(yx);
-  return rq;
+  for (int w = 0; w < L; w++) bound[w] = sqrt(rx[w] * ry[w]) / fabs(yx[w]);
 }
 
 INLINE void put_lane(const int L, int k, const double *v, int w, double *out) {
@@ -285,16 +298,16 @@ INLINE void solve_group(const int L, int i0, int count, int ke, int ks, const do
     shifted_solve(L, ke, ks, s, re, al, bl, g_es, g_se, 1, qe, qs, ye, ys);
     if (step < first || step % 2) continue;
     int all = 1;
+    double rq[LANES], bound[LANES];
+    lanes_test(L, ke, ks, shift, xe, xs, ye, ys, pe, ps, qe, qs, rq, bound);
     for (int w = 0; w < L; w++) {
       if (done[w]) continue;
-      double bound;
-      const double rq = lane_test(L, ke, ks, shift, w, xe, xs, ye, ys, pe, ps, qe, qs, &bound);
       const int i = i0 + w;
-      const int conv = bound <= rtol * fabs(rq) && rq >= shift;
-      const int high = !conv && ceiling && rq - 100.0 * bound > ceiling[i];
+      const int conv = bound[w] <= rtol * fabs(rq[w]) && rq[w] >= shift;
+      const int high = !conv && ceiling && rq[w] - 100.0 * bound[w] > ceiling[i];
       if (conv || high || step + 2 > max_steps) {
         done[w] = 1;
-        lam[i] = rq;
+        lam[i] = rq[w];
         status[i] = conv ? CONVERGED : high ? ABOVE : NOT_CONVERGED;
         put_lane(L, ke, xe, w, x_e + (size_t)i * ke);
         put_lane(L, ks, xs, w, x_s + (size_t)i * ks);

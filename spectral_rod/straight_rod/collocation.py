@@ -5,9 +5,11 @@ groups may be pooled at a higher degree of the call where that is cheaper,
 :func:`solve_degrees`), the lowest eigenvalue of both mode families at that degree
 (:mod:`.eigensolver`, or :mod:`.few_points` for a few points), the error estimate from the
 computed mode's Chebyshev coefficients (:mod:`.resolution`), plus, above the default tol, the
-eigenvalue iteration's allowance (:func:`.eigensolver.iteration_allowance`); where it misses the
-tolerance the degree is raised by ~12 % until it is met or n = :data:`N_MAX` (no raise where the
-round-off floor alone exceeds the tolerance). Inputs are validated by the caller
+eigenvalue iteration's allowance (:func:`.eigensolver.iteration_allowance`); where the estimate's
+tail part misses a tenth of the tolerance (:func:`.resolution.shortfall`) the degree is raised,
+by 2 per factor 10 short and at most ~12 % (:func:`.resolution.raised_degree`), until it is met or
+n = :data:`N_MAX` (no raise where the round-off floor alone exceeds the tolerance); a point is
+converged where the whole estimate is <= tol. Inputs are validated by the caller
 (:func:`spectral_rod.critical_load`).
 """
 
@@ -39,6 +41,7 @@ from spectral_rod.straight_rod.resolution import (
     initial_degree,
     raised_degree,
     roundoff_floor,
+    shortfall,
 )
 
 __all__ = ["CLOSE_REL", "FEW_POINTS", "N_MAX", "N_MIN", "SMALL_PART", "TIE_REL",
@@ -210,15 +213,16 @@ def _collocation_critical_load(tw: NDArray[np.float64], nu: NDArray[np.float64],
         return CollocationResult(p, deg, error_estimate(tails, tw) + allowance, fam)
     deg = solve_degrees(initial_degree(tw, tol))
     p, fam, tails = _solve_points(tw, nu, deg, tol)
-    err = error_estimate(tails, tw) + allowance
-    # raise the degree where the estimate misses tol, unless round-off alone does
-    todo = np.flatnonzero((err > tol) & (deg < N_MAX) & (roundoff_floor(tw) < tol))
+    # raise the degree where the tail's part of the estimate misses its share of tol, unless
+    # round-off alone decides
+    short = shortfall(tails, tol)
+    todo = np.flatnonzero((short > 1.0) & (deg < N_MAX) & (roundoff_floor(tw) < tol))
     while todo.size:
-        deg[todo] = raised_degree(deg[todo])
+        deg[todo] = raised_degree(deg[todo], short[todo])
         p[todo], fam[todo], tails[todo] = _solve_points(tw[todo], nu[todo], deg[todo], tol)
-        err[todo] = error_estimate(tails[todo], tw[todo]) + allowance
-        todo = todo[(err[todo] > tol) & (deg[todo] < N_MAX)]
-    return CollocationResult(p, deg, err, fam)
+        short[todo] = shortfall(tails[todo], tol)
+        todo = todo[(short[todo] > 1.0) & (deg[todo] < N_MAX)]
+    return CollocationResult(p, deg, error_estimate(tails, tw) + allowance, fam)
 
 
 def collocation_family_load(twist_angle: float, nu: float, family: str, n: int) -> float:
