@@ -335,8 +335,8 @@ class _ShiftedModal:
 #: The C kernel (:mod:`.modal_kernel`) iterates where the Schur block has at most this many
 #: unknowns (degree n <= ~128); above, its unblocked loops lose to LAPACK's blocked ones
 #: (``python tests/bench/kernel_range.py``, 2026-12-05, random points, tol 1e-12, kernel / numpy
-#: time, two runs: n = 22 0.18-0.33, 40 0.27-0.35, 64 0.28-0.52, 100 0.42-0.60, 128 0.43-0.63,
-#: 144 0.45-0.68, 160 0.69-1.08, 256 1.46-1.66).
+#: time, four runs, two with the kernel's vectorised test: n = 22 0.13-0.33, 40 0.27-0.35,
+#: 64 0.28-0.52, 100 0.42-0.60, 128 0.43-0.63, 144 0.45-0.68, 160 0.69-1.08, 256 1.19-1.66).
 KERNEL_MAX_SCHUR = 64
 
 
