@@ -335,8 +335,10 @@ class _ShiftedModal:
 #: The C kernel (:mod:`.modal_kernel`) iterates where the Schur block has at most this many
 #: unknowns (degree n <= ~128); above, its unblocked loops lose to LAPACK's blocked ones
 #: (``python tests/bench/kernel_range.py``, 2026-12-05, random points, tol 1e-12, kernel / numpy
-#: time, four runs, two with the kernel's vectorised test: n = 22 0.13-0.33, 40 0.27-0.35,
-#: 64 0.28-0.52, 100 0.42-0.60, 128 0.43-0.63, 144 0.45-0.68, 160 0.69-1.08, 256 1.19-1.66).
+#: time; two runs of the final kernel: n = 22 0.14-0.25, 40 0.20-0.25, 64 0.32-0.36, 100
+#: 0.46-0.49, 128 0.50-0.53, 144 0.51-0.52, 160 0.80-0.83, 256 1.20-1.28; before its
+#: workspace was aligned, 160 0.69-1.08, 256 1.19-1.66). The limit is kept where it was set;
+#: with the aligned workspace the kernel also wins at n = 160.
 KERNEL_MAX_SCHUR = 64
 
 

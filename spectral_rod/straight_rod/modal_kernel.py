@@ -8,10 +8,10 @@ of k = 10..30 its per-matrix loops (and LAPACK's per-matrix calls) run ~1e9 mult
 second, and a C loop per point was no faster (~1.15 times: one point's own loops are short and
 dependent; ``tests/bench/c_prototype``). ``_modal_kernel.c`` runs the same algorithm with the
 arrays laid out [index][point] for 32 points at a time, so that every inner loop is over
-independent points and the compiler vectorises it, the convergence test too: 0.13-0.35 of the
+independent points and the compiler vectorises it, the convergence test too: 0.14-0.25 of the
 numpy iteration's time at n = 22-40 (``tests/bench/kernel_range.py``), a family's whole solve on
-Figure 1's points at n = 22 and 26 1.3-2.1 against 5.3-7.0 µs a point
-(``tests/bench/work_per_point.py``; 2026-12-05, two runs).
+Figure 1's points at n = 22 and 26 1.3-1.7 against 5.3-7.1 µs a point
+(``tests/bench/work_per_point.py``; 2026-12-05, two runs each).
 
 It differs from the numpy code in two ways, both checked per point: the Schur complement's LU
 has no pivoting, accepted by the probe test of :func:`.stacked_inverse.stacked_inverse`
