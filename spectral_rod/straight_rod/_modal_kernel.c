@@ -377,13 +377,119 @@ typedef struct {
   const int *mass;                       /* (terms,): 1 for a term of B */
 } Family;
 
+/* The pencil's bilinear forms y_e^T M_t x_f in double-double, for the two-sided Rayleigh
+   quotient at large twist (eigensolver.pencil_rayleigh_quotient, Eq. inst1), where its terms
+   cancel to ~lambda/Omega^2.
+
+   Term t is the block `shape[t] = (e_off, m_e, f_off, m_f, data_off)`: the m_e x m_f matrix
+   at mats + data_off (row-major), between rows e_off.. of y and columns f_off.. of x (both
+   (P, m) row-major). Every product is split exactly (a b = p + e with p = fl(a b),
+   e = fma(a, b, -p)) and every sum exactly (TwoSum), the errors accumulated apart (Ogita, Rump
+   and Oishi's Dot2, 2005): hi + lo is the form as if computed in twice double precision.
+   These splittings hold only for products rounded on their own: GCC, which by default fuses
+   a product into a following sum, is told not to (clang fuses only within one expression,
+   MSVC not at all). */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC push_options
+#pragma GCC optimize("fp-contract=off")
+#endif
+
+INLINE void two_sum(double a, double b, double *s, double *err) {
+  const double x = a + b, z = x - a;
+  *s = x;
+  *err = (a - (x - z)) + (b - z);
+}
+
+/* The forms of `count` <= L points from i0 on (lanes past count repeat the last point). */
+INLINE void terms_group(const int L, int i0, int count, int m, int T, const int *shape,
+                        const double *mats, const double *x, const double *y, double *xt,
+                        double *yt, double *hi, double *lo) {
+  for (int w = 0; w < L; w++) {
+    const int i = i0 + (w < count ? w : count - 1);
+    for (int k = 0; k < m; k++) {
+      AT(xt, k)[w] = x[(size_t)i * m + k];
+      AT(yt, k)[w] = y[(size_t)i * m + k];
+    }
+  }
+  for (int t = 0; t < T; t++) {
+    const int e_off = shape[5 * t], m_e = shape[5 * t + 1], f_off = shape[5 * t + 2];
+    const int m_f = shape[5 * t + 3];
+    const double *mat = mats + shape[5 * t + 4];
+    double acc[LANES] = {0.0}, acc_lo[LANES] = {0.0};
+    for (int j = 0; j < m_e; j++) {
+      double s[LANES] = {0.0}, c[LANES] = {0.0};
+      for (int k = 0; k < m_f; k++) {  /* (M x)_j = s + c */
+        const double a = mat[(size_t)j * m_f + k], *xk = AT(xt, f_off + k);
+        for (int w = 0; w < L; w++) {
+          const double p = a * xk[w], e = fma(a, xk[w], -p);
+          double err;
+          two_sum(s[w], p, &s[w], &err);
+          c[w] += err + e;
+        }
+      }
+      const double *yj = AT(yt, e_off + j);
+      for (int w = 0; w < L; w++) {  /* acc += y_j (s + c) */
+        const double p = yj[w] * s[w], e = fma(yj[w], s[w], -p);
+        double err;
+        two_sum(acc[w], p, &acc[w], &err);
+        acc_lo[w] += err + e + yj[w] * c[w];
+      }
+    }
+    for (int w = 0; w < count; w++) {
+      hi[(size_t)(i0 + w) * T + t] = acc[w];
+      lo[(size_t)(i0 + w) * T + t] = acc_lo[w];
+    }
+  }
+}
+
+/* All P points: LANES at a time, a last group of fewer one at a time (a single point, as in a
+   scalar call, would otherwise cost a whole group). */
+CLONES int pencil_terms_dd(int P, int m, int T, const int *shape, const double *mats,
+                           const double *x, const double *y, double *hi, double *lo) {
+  double *xt = workspace(LANES * 2 * (size_t)m);
+  if (!xt) return -1;
+  double *yt = xt + (size_t)LANES * m;
+  int i0 = 0;
+  for (; P - i0 >= LANES; i0 += LANES)
+    terms_group(LANES, i0, LANES, m, T, shape, mats, x, y, xt, yt, hi, lo);
+  for (; i0 < P; i0++) terms_group(1, i0, 1, m, T, shape, mats, x, y, xt, yt, hi, lo);
+  release(xt);
+  return 0;
+}
+/* y^T A x / y^T B x for one point in double-double: the terms' forms as above, their sum
+   weighted by the coefficients (c + c_lo) and the mass terms' sum, then the quotient; the
+   batched engine sums the same forms in long double (eigensolver._rayleigh_sums). Not inlined:
+   it keeps this region's floating-point contraction off. `scratch` holds 2 terms + 2 m. */
+static double quotient_dd(int m, int T, const int *shape, const double *mats, const int *mass,
+                          const double *c, const double *c_lo, const double *x, const double *y,
+                          double *scratch) {
+  double *hi = scratch, *lo = hi + T, *xt = lo + T, *yt = xt + m;
+  terms_group(1, 0, 1, m, T, shape, mats, x, y, xt, yt, hi, lo);
+  double nh = 0.0, nl = 0.0, dh = 0.0, dl = 0.0, err;
+  for (int t = 0; t < T; t++) {
+    const double p = c[t] * hi[t], e = fma(c[t], hi[t], -p);
+    two_sum(nh, p, &nh, &err);
+    nl += err + e + c[t] * lo[t] + c_lo[t] * hi[t];
+    if (mass[t]) {
+      two_sum(dh, hi[t], &dh, &err);
+      dl += err + lo[t];
+    }
+  }
+  const double q = nh / dh;  /* (nh + nl) / (dh + dl) to first order in the low parts */
+  return q + ((fma(-q, dh, nh) + nl) - q * dl) / dh;
+}
+
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC pop_options
+#endif
+
 /* One family at one point: the lowest eigenpair by the kernel (one lane), then the pencil's
-   vectors, the tail and, unless `loose`, the pencil's two-sided Rayleigh quotient in double
-   (the caller sends only |Omega| <= LONG_TWIST here). */
-INLINE void family_point(const Family *f, int terms, const double *coef, const double *ceiling,
-                         double shift, double rtol, int first, int max_steps,
-                         double backward_tol, int loose, double *work, double *lam,
-                         double *tail, int *status) {
+   vectors, the tail and, unless `loose`, the pencil's two-sided Rayleigh quotient: in double,
+   or where coef_lo (the coefficients' low parts) is given in double-double (quotient_dd). */
+INLINE void family_point(const Family *f, int terms, const double *coef, const double *coef_lo,
+                         const double *ceiling, double shift, double rtol, int first,
+                         int max_steps, double backward_tol, int loose, double *work,
+                         double *lam, double *tail, int *status) {
   const int k1 = f->k1, k2 = f->k2, m = k1 + k2, e1 = f->schur == 2;
   const int ke = e1 ? k1 : k2, ks = e1 ? k2 : k1;
   double *r_e = work, *d_s = r_e + ke, *v = d_s + ks, *x = v + 2 * m, *y = x + m;
@@ -423,6 +529,12 @@ INLINE void family_point(const Family *f, int terms, const double *coef, const d
   *tail = scale > 0.0 ? last / scale : INFINITY;
   if (!isfinite(last) || !isfinite(other)) *status = NOT_CONVERGED;
   if (loose) return;
+  if (coef_lo) {  /* rest, solve_group's workspace, is free again */
+    *lam = quotient_dd(m, terms, f->term_shape, f->term_mats, f->mass, coef, coef_lo, x, y,
+                       rest);
+    if (!(*lam >= shift)) *status = NOT_CONVERGED;
+    return;
+  }
   double num = 0.0, den = 0.0;
   for (int t = 0; t < terms; t++) {
     const int *sh = f->term_shape + 5 * t;
@@ -443,10 +555,12 @@ INLINE void family_point(const Family *f, int terms, const double *coef, const d
 /* Both families (symmetric first, the antisymmetric one only shown to lie above
    (1 + close_rel) times it where it does, as collocation._solve_points) at P points, one at
    a time: per point and family lambda, the tail and the status (the antisymmetric family's
-   tail is inf where it is above). `coef` (P, terms) are the INST1 coefficients. */
-CLONES int modal_points(int P, const Family *fam, int terms, const double *coef, double shift,
-                        double rtol, int first, int max_steps, double backward_tol,
-                        double close_rel, int loose, double *lam, double *tail, int *status) {
+   tail is inf where it is above). `coef` (P, terms) are the INST1 coefficients and `coef_lo`,
+   NULL or (P, terms), their low parts for the quotient in double-double. */
+CLONES int modal_points(int P, const Family *fam, int terms, const double *coef,
+                        const double *coef_lo, double shift, double rtol, int first,
+                        int max_steps, double backward_tol, double close_rel, int loose,
+                        double *lam, double *tail, int *status) {
   size_t size = 0;
   for (int q = 0; q < 2; q++) {
     const size_t k = (size_t)fam[q].k1 + fam[q].k2;
@@ -456,92 +570,18 @@ CLONES int modal_points(int P, const Family *fam, int terms, const double *coef,
   double *work = workspace(size);
   if (!work) return -1;
   for (int i = 0; i < P; i++) {
-    const double *c = coef + (size_t)i * terms;
-    family_point(&fam[0], terms, c, NULL, shift, rtol, first, max_steps, backward_tol, loose,
-                 work, lam + 2 * i, tail + 2 * i, status + 2 * i);
+    const double *c = coef + (size_t)i * terms, *c_lo = coef_lo ? coef_lo + (size_t)i * terms : NULL;
+    family_point(&fam[0], terms, c, c_lo, NULL, shift, rtol, first, max_steps, backward_tol,
+                 loose, work, lam + 2 * i, tail + 2 * i, status + 2 * i);
     const double ceiling = lam[2 * i] * (1.0 + close_rel);
-    family_point(&fam[1], terms, c, status[2 * i] == CONVERGED ? &ceiling : NULL, shift, rtol,
-                 first < 4 ? first : 4, max_steps, backward_tol, loose, work, lam + 2 * i + 1,
-                 tail + 2 * i + 1, status + 2 * i + 1);
+    family_point(&fam[1], terms, c, c_lo, status[2 * i] == CONVERGED ? &ceiling : NULL, shift,
+                 rtol, first < 4 ? first : 4, max_steps, backward_tol, loose, work,
+                 lam + 2 * i + 1, tail + 2 * i + 1, status + 2 * i + 1);
   }
   release(work);
   return 0;
 }
 
-/* The pencil's bilinear forms y_e^T M_t x_f in double-double, for the two-sided Rayleigh
-   quotient at large twist (eigensolver.pencil_rayleigh_quotient, Eq. inst1), where its terms
-   cancel to ~lambda/Omega^2.
-
-   Term t is the block `shape[t] = (e_off, m_e, f_off, m_f, data_off)`: the m_e x m_f matrix
-   at mats + data_off (row-major), between rows e_off.. of y and columns f_off.. of x (both
-   (P, m) row-major). Every product is split exactly (a b = p + e with p = fl(a b),
-   e = fma(a, b, -p)) and every sum exactly (TwoSum), the errors accumulated apart (Ogita, Rump
-   and Oishi's Dot2, 2005): hi + lo is the form as if computed in twice double precision.
-   These splittings hold only for products rounded on their own: GCC, which by default fuses
-   a product into a following sum, is told not to (clang fuses only within one expression,
-   MSVC not at all). */
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC push_options
-#pragma GCC optimize("fp-contract=off")
-#endif
-
-INLINE void two_sum(double a, double b, double *s, double *err) {
-  const double x = a + b, z = x - a;
-  *s = x;
-  *err = (a - (x - z)) + (b - z);
-}
-
-CLONES int pencil_terms_dd(int P, int m, int T, const int *shape, const double *mats,
-                           const double *x, const double *y, double *hi, double *lo) {
-  const int L = LANES;
-  double *xt = workspace(LANES * 2 * (size_t)m);
-  if (!xt) return -1;
-  double *yt = xt + (size_t)LANES * m;
-  for (int i0 = 0; i0 < P; i0 += LANES) {
-    const int count = P - i0 < LANES ? P - i0 : LANES;
-    for (int w = 0; w < LANES; w++) {
-      const int i = i0 + (w < count ? w : count - 1);
-      for (int k = 0; k < m; k++) {
-        AT(xt, k)[w] = x[(size_t)i * m + k];
-        AT(yt, k)[w] = y[(size_t)i * m + k];
-      }
-    }
-    for (int t = 0; t < T; t++) {
-      const int e_off = shape[5 * t], m_e = shape[5 * t + 1], f_off = shape[5 * t + 2];
-      const int m_f = shape[5 * t + 3];
-      const double *mat = mats + shape[5 * t + 4];
-      double acc[LANES] = {0.0}, acc_lo[LANES] = {0.0};
-      for (int j = 0; j < m_e; j++) {
-        double s[LANES] = {0.0}, c[LANES] = {0.0};
-        for (int k = 0; k < m_f; k++) {  /* (M x)_j = s + c */
-          const double a = mat[(size_t)j * m_f + k], *xk = AT(xt, f_off + k);
-          for (int w = 0; w < LANES; w++) {
-            const double p = a * xk[w], e = fma(a, xk[w], -p);
-            double err;
-            two_sum(s[w], p, &s[w], &err);
-            c[w] += err + e;
-          }
-        }
-        const double *yj = AT(yt, e_off + j);
-        for (int w = 0; w < LANES; w++) {  /* acc += y_j (s + c) */
-          const double p = yj[w] * s[w], e = fma(yj[w], s[w], -p);
-          double err;
-          two_sum(acc[w], p, &acc[w], &err);
-          acc_lo[w] += err + e + yj[w] * c[w];
-        }
-      }
-      for (int w = 0; w < count; w++) {
-        hi[(size_t)(i0 + w) * T + t] = acc[w];
-        lo[(size_t)(i0 + w) * T + t] = acc_lo[w];
-      }
-    }
-  }
-  release(xt);
-  return 0;
-}
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC pop_options
-#endif
 
 /* The module stub: the build is an importable extension (so that setuptools builds it on every
    platform); the kernel itself is called through ctypes. */

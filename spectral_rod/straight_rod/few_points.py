@@ -3,21 +3,22 @@ r"""The lowest eigenvalue of both mode families for one point or a few (Eq. ``in
 The batched engine (:mod:`.eigensolver`) pays a fixed cost per degree group of ~0.5 ms of array
 bookkeeping, which dominates for a scalar call or a batch of ten. Two implementations avoid it.
 
-Where the C kernel is installed (:mod:`.modal_kernel`) and the pencil's quotient is summed in
-double (|Omega| <= LONG_TWIST, or not needed at the loose tolerances), the kernel solves the
-points one at a time in one call (``modal_points``): the batched engine's own algorithm and
-test with one lane (the Schur complement of the shifted modal form, two-sided shift-and-invert
-steps, the pencil's Rayleigh quotient, the mode's tail), and, as there, the antisymmetric family
-only until it is shown above the symmetric one (its tail is then inf). The benchmark's loop of
-scalar calls over Figure 1's points: 26.4-26.5 us a call, against 58-60 us by the dense pencils
-below (``tests/bench/HISTORY.md``, 2026-12-05); at rtol = 1e-8 (modal quotient, as the
-batched engine's) within 1.2e-10 of the discrete eigenvalue on the 71 points of step 3 below
-(the largest at n = 64: K's round-off).
+Where the C kernel is installed (:mod:`.modal_kernel`), the kernel solves the points one at a
+time in one call (``modal_points``): the batched engine's own algorithm and test with one lane
+(the Schur complement of the shifted modal form, two-sided shift-and-invert steps, the pencil's
+Rayleigh quotient, the mode's tail), and, as there, the antisymmetric family only until it is
+shown above the symmetric one (its tail is then inf). Above |Omega| = LONG_TWIST at tight tol
+the quotient, whose terms cancel to ~lambda/Omega^2, is summed in double-double from the
+coefficients in long double (the batched engine sums the same double-double forms in long
+double). The benchmark's loop of scalar calls over Figure 1's points: 26.4-28.3 us a call,
+against 58-60 us by the dense pencils below; at Omega(L) in [20, 50) 94 us against 290-400 us
+when the dense pencils answered there (``tests/bench/HISTORY.md``, 2026-12-05); at rtol = 1e-8
+(modal quotient, as the batched engine's) within 1.2e-10 of the discrete eigenvalue on the 71
+points of step 3 below (the largest at n = 64: K's round-off).
 
-Elsewhere (no kernel, or |Omega| > LONG_TWIST at tight tol, where the quotient needs extended
-precision) each (point, family) keeps the dense collocation pencil (A, B) of
-:mod:`.discretisation` (m = n - 1 unknowns, both families the same size, so they are stacked),
-and:
+Where the kernel is not installed each (point, family) keeps the dense collocation pencil
+(A, B) of :mod:`.discretisation` (m = n - 1 unknowns, both families the same size, so they are
+stacked), and:
 
 1. F = A - SHIFT B is factorised and inverted once by LAPACK (``dgetrf``/``dgetri`` called
    directly: 5 us for m = 21, where ``numpy.linalg.inv`` takes 20 us);
@@ -262,28 +263,40 @@ def _judge_one(sums: list[float], tail: list[float], quotient: float | None, rto
     return lam, t, ok
 
 
-def _kernel_answers(n: int, twist: NDArray[np.float64] | float, rtol: float):
-    """Where the C kernel solves points (:func:`_solve_kernel`): where it is installed, and
-    where the pencil's quotient is summed in double (|Omega| <= LONG_TWIST) or not needed (the
-    loose tolerances of the batched engine). A bool per point of `twist`."""
-    if not modal_kernel.available():
-        return np.zeros(np.shape(twist), dtype=bool) if np.ndim(twist) else False
-    return (abs(twist) <= LONG_TWIST) | loose_quotient(rtol, n)
-
-
-def _solve_kernel(n: int, coef: NDArray[np.float64], rtol: float
+def _solve_kernel(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol: float
                   ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.bool_]]:
     """lambda and tails (points, 2) of both families and whether both were accepted, by the C
     kernel one point at a time (the batched engine's algorithm and test; the antisymmetric
-    family stopped where shown above the symmetric one, its tail then inf)."""
+    family stopped where shown above the symmetric one, its tail then inf). At |Omega| >
+    LONG_TWIST and tight tol the pencil's quotient is summed in double-double, from the
+    coefficients in extended precision (as the batched engine's, which sums in long double)."""
+    loose = loose_quotient(rtol, n)
+    big = np.abs(twist) > LONG_TWIST if not loose else np.zeros(twist.size, dtype=bool)
+    lam, tails = np.empty((twist.size, 2)), np.empty((twist.size, 2))
+    status = np.empty((twist.size, 2), dtype=np.int32)
+    for sel, dtype in ((np.flatnonzero(~big), float), (np.flatnonzero(big), np.longdouble)):
+        if sel.size:
+            coef = term_coefficients(twist[sel].astype(dtype), nu[sel].astype(dtype))
+            lam[sel], tails[sel], status[sel] = _kernel_points(n, coef, rtol, loose)
+    return lam, tails, _accepted(status)
+
+
+def _kernel_points(n: int, coef: NDArray, rtol: float, loose: bool
+                   ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.int32]]:
+    """:func:`.modal_kernel.modal_points` at points given by their INST1 coefficients (points,
+    terms): in long double, the quotient is summed in double-double."""
     families, _arrays = kernel_families(n)  # _arrays: what the structs point to, kept alive
-    lam, tails, status = modal_kernel.modal_points(
-        families, coef, shift=SHIFT, rtol=rtol, first=first_check(rtol, False),
-        max_steps=POWER_STEPS, backward_tol=BACKWARD_TOL, close_rel=CLOSE_REL,
-        loose=loose_quotient(rtol, n))
-    ok = (status[:, 0] == modal_kernel.CONVERGED) & (
+    hi = coef.astype(float)
+    return modal_kernel.modal_points(
+        families, hi, shift=SHIFT, rtol=rtol, first=first_check(rtol, False),
+        max_steps=POWER_STEPS, backward_tol=BACKWARD_TOL, close_rel=CLOSE_REL, loose=loose,
+        coef_lo=None if coef.dtype == np.float64 else (coef - hi).astype(float))
+
+
+def _accepted(status: NDArray[np.int32]) -> NDArray[np.bool_]:
+    """Both families accepted: the symmetric converged, the antisymmetric converged or above."""
+    return (status[:, 0] == modal_kernel.CONVERGED) & (
         (status[:, 1] == modal_kernel.CONVERGED) | (status[:, 1] == modal_kernel.ABOVE))
-    return lam, tails, ok
 
 
 def solve_one(n: int, twist: float, nu: float, rtol: float
@@ -296,10 +309,13 @@ def solve_one(n: int, twist: float, nu: float, rtol: float
     >>> ok, round(min(lam) / 9.869604401089358, 9)
     (True, 1.078092611)
     """
-    if _kernel_answers(n, twist, rtol):
-        lam1, tails1, ok1 = _solve_kernel(n, np.array([[t.coefficient(twist, nu)
-                                                        for t in INST1]]), rtol)
-        return lam1[0].tolist(), tails1[0].tolist(), bool(ok1[0])
+    if modal_kernel.available():
+        loose = loose_quotient(rtol, n)
+        dtype = np.longdouble if abs(twist) > LONG_TWIST and not loose else float
+        om, nv = dtype(twist), dtype(nu)
+        lam1, tails1, status = _kernel_points(
+            n, np.array([[t.coefficient(om, nv) for t in INST1]], dtype=dtype), rtol, loose)
+        return lam1[0].tolist(), tails1[0].tolist(), bool(_accepted(status)[0])
     dp = dense_pencils(n)
     m = dp.mass.shape[1]
     coef = np.array([*(t.coefficient(twist, nu) for t in INST1), 1.0])
@@ -331,20 +347,14 @@ def solve_few(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol:
     if twist.size == 1:
         lam1, tails1, ok1 = solve_one(n, float(twist[0]), float(nu[0]), rtol)
         return np.array(lam1)[:, None], np.array(tails1)[:, None], np.array([ok1])
-    lam, tails = np.empty((2, twist.size)), np.empty((2, twist.size))
-    ok = np.empty(twist.size, dtype=bool)
-    by_kernel = _kernel_answers(n, twist, rtol)
-    for sel, solve in ((np.flatnonzero(by_kernel), _few_by_kernel),
-                       (np.flatnonzero(~by_kernel), _few_dense)):
-        if sel.size:
-            lam[:, sel], tails[:, sel], ok[sel] = solve(n, twist[sel], nu[sel], rtol)
-    return lam, tails, ok
+    solve = _few_by_kernel if modal_kernel.available() else _few_dense
+    return solve(n, twist, nu, rtol)
 
 
 def _few_by_kernel(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol: float
                    ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.bool_]]:
     """:func:`solve_few` by the C kernel (:func:`_solve_kernel`)."""
-    lam, tails, ok = _solve_kernel(n, term_coefficients(twist, nu), rtol)
+    lam, tails, ok = _solve_kernel(n, twist, nu, rtol)
     return lam.T, tails.T, ok
 
 

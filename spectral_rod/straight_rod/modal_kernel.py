@@ -92,8 +92,8 @@ def _library() -> ctypes.CDLL | None:
     lib.modal_lowest.restype = c_int
     lib.pencil_terms_dd.argtypes = [c_int] * 3 + [ptr] * 6
     lib.pencil_terms_dd.restype = c_int
-    lib.modal_points.argtypes = ([c_int, ctypes.POINTER(Family), c_int, ptr, c_dbl, c_dbl, c_int,
-                                  c_int, c_dbl, c_dbl, c_int] + [ptr] * 3)
+    lib.modal_points.argtypes = ([c_int, ctypes.POINTER(Family), c_int, ptr, ptr, c_dbl, c_dbl,
+                                  c_int, c_int, c_dbl, c_dbl, c_int] + [ptr] * 3)
     lib.modal_points.restype = c_int
     return lib
 
@@ -173,16 +173,18 @@ def pencil_terms(shape: NDArray[np.int32], mats: NDArray[np.float64], x: NDArray
 
 def modal_points(families: ctypes.Array, coef: NDArray[np.float64], *, shift: float,
                  rtol: float, first: int, max_steps: int, backward_tol: float,
-                 close_rel: float, loose: bool
+                 close_rel: float, loose: bool, coef_lo: NDArray[np.float64] | None = None
                  ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.int32]]:
     """Both families at P points, one point at a time (``modal_points`` in ``_modal_kernel.c``):
     lambda, the mode's tail and the status, each (P, 2). ``coef`` (P, terms) are the points'
-    INST1 coefficients; the points must have |Omega| <= LONG_TWIST unless ``loose`` (the
-    quotient is summed in double)."""
+    INST1 coefficients. lambda is the pencil's two-sided quotient (unless ``loose``: the modal
+    one), summed in double, or where ``coef_lo`` (P, terms), the low parts of the coefficients
+    in extended precision, is given, in double-double (for |Omega| > LONG_TWIST)."""
     coef = _c_array(coef)
     p, terms = coef.shape
     lam, tail = np.empty((p, 2)), np.empty((p, 2))
     status = np.empty((p, 2), dtype=np.int32)
-    _call("modal_points", p, families, terms, _ptr(coef), shift, rtol, first, max_steps,
-          backward_tol, close_rel, int(loose), _ptr(lam), _ptr(tail), _ptr(status))
+    lo = None if coef_lo is None else _c_array(coef_lo)
+    _call("modal_points", p, families, terms, _ptr(coef), _ptr(lo), shift, rtol, first,
+          max_steps, backward_tol, close_rel, int(loose), _ptr(lam), _ptr(tail), _ptr(status))
     return lam, tail, status

@@ -54,6 +54,8 @@ FLOORS = {
     "large twist": 20.0, "near-degenerate": 20.0,
     # first measured 2026-12-05: 6.6 and 13-21 (scalar calls against the same yardsticks)
     "large twist, scalar": 3.0, "near-degenerate, scalar": 6.0,
+    # first measured 2026-12-05 (a fourth session): 3.3-3.5; 0.8 before that session
+    "scalar loop, twist 20-50": 1.7,
 }
 TOL = 1e-12
 
@@ -255,6 +257,35 @@ def test_scalar_loop(benchmark, fig1, reference, bench_registry):
     same = np.max(np.abs(p / critical_load(np.array(tw), np.array(nv), tol=TOL) - 1))
     assert err <= 1e-13 and all(r.converged for r in res)
     _new(benchmark, bench_registry, "scalar loop",
+         lambda: [critical_load(a, b, tol=TOL) for a, b in zip(tw, nv, strict=True)], len(tw),
+         {"n": sorted({r.n for r in res}), "max_rel_error_sampled": err,
+          "max_rel_diff_scalar_vs_array": float(same)}, "baseline")
+
+
+def _twisted_points():
+    """100 random points, Omega(L) in [20, 50), nu in [1.1, 100]: the collocation route's upper
+    degrees (n ~ 30-56), where a scalar call sums the pencil's quotient in double-double."""
+    rng = np.random.default_rng(2026_12_05)
+    return rng.uniform(20.0, 50.0, 100).tolist(), rng.uniform(1.1, 100.0, 100).tolist()
+
+
+@pytest.mark.benchmark(group="scalar loop, twist 20-50")
+def test_scalar_loop_twisted_baseline(benchmark, bench_registry):
+    tw, nv = _twisted_points()
+    _yardstick(benchmark, bench_registry, "scalar loop, twist 20-50",
+               lambda: [baseline_critical_load(a, b) for a, b in zip(tw, nv, strict=True)],
+               len(tw), rounds=3)
+
+
+@pytest.mark.benchmark(group="scalar loop, twist 20-50")
+def test_scalar_loop_twisted(benchmark, reference, bench_registry):
+    tw, nv = _twisted_points()
+    res = [critical_load(a, b, tol=TOL, full_output=True) for a, b in zip(tw, nv, strict=True)]
+    p = np.array([r.p_star for r in res])
+    err = _max_error(p, np.array(tw), np.array(nv), reference, sample=20)
+    same = np.max(np.abs(p / critical_load(np.array(tw), np.array(nv), tol=TOL) - 1))
+    assert err <= 1e-13 and all(r.converged for r in res)
+    _new(benchmark, bench_registry, "scalar loop, twist 20-50",
          lambda: [critical_load(a, b, tol=TOL) for a, b in zip(tw, nv, strict=True)], len(tw),
          {"n": sorted({r.n for r in res}), "max_rel_error_sampled": err,
           "max_rel_diff_scalar_vs_array": float(same)}, "baseline")
