@@ -54,7 +54,8 @@ FLOORS = {
     "large twist": 20.0, "near-degenerate": 20.0,
     # first measured 2026-12-05: 6.6 and 13-21 (scalar calls against the same yardsticks)
     "large twist, scalar": 3.0, "near-degenerate, scalar": 6.0,
-    # first measured 2026-12-05 (a fourth session): 3.3-3.5; 0.8 before that session
+    # first measured 2026-12-05 (a fourth session): 3.0 (2.9-3.0 interleaved); 0.7-1.1 ad hoc
+    # before that session's change (the dense pencils answered these calls)
     "scalar loop, twist 20-50": 1.7,
 }
 TOL = 1e-12
