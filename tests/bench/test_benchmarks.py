@@ -249,18 +249,23 @@ def test_scalar_loop_baseline(benchmark, fig1, bench_registry):
     bench_registry["one-point arrays"] = dict(bench_registry["scalar loop"])
 
 
-@pytest.mark.benchmark(group="scalar loop")
-def test_scalar_loop(benchmark, fig1, reference, bench_registry):
-    tw, nv = _scalar_points(fig1)
+def _scalar_loop(benchmark, registry, pattern, tw, nv, reference, sample=40):
+    """Time a loop of scalar calls at the points (tw, nv), after checking them against the
+    reference (sampled) and against one array call."""
     res = [critical_load(a, b, tol=TOL, full_output=True) for a, b in zip(tw, nv, strict=True)]
     p = np.array([r.p_star for r in res])
-    err = _max_error(p, np.array(tw), np.array(nv), reference)
+    err = _max_error(p, np.array(tw), np.array(nv), reference, sample)
     same = np.max(np.abs(p / critical_load(np.array(tw), np.array(nv), tol=TOL) - 1))
     assert err <= 1e-13 and all(r.converged for r in res)
-    _new(benchmark, bench_registry, "scalar loop",
+    _new(benchmark, registry, pattern,
          lambda: [critical_load(a, b, tol=TOL) for a, b in zip(tw, nv, strict=True)], len(tw),
          {"n": sorted({r.n for r in res}), "max_rel_error_sampled": err,
           "max_rel_diff_scalar_vs_array": float(same)}, "baseline")
+
+
+@pytest.mark.benchmark(group="scalar loop")
+def test_scalar_loop(benchmark, fig1, reference, bench_registry):
+    _scalar_loop(benchmark, bench_registry, "scalar loop", *_scalar_points(fig1), reference)
 
 
 def _twisted_points():
@@ -280,16 +285,8 @@ def test_scalar_loop_twisted_baseline(benchmark, bench_registry):
 
 @pytest.mark.benchmark(group="scalar loop, twist 20-50")
 def test_scalar_loop_twisted(benchmark, reference, bench_registry):
-    tw, nv = _twisted_points()
-    res = [critical_load(a, b, tol=TOL, full_output=True) for a, b in zip(tw, nv, strict=True)]
-    p = np.array([r.p_star for r in res])
-    err = _max_error(p, np.array(tw), np.array(nv), reference, sample=20)
-    same = np.max(np.abs(p / critical_load(np.array(tw), np.array(nv), tol=TOL) - 1))
-    assert err <= 1e-13 and all(r.converged for r in res)
-    _new(benchmark, bench_registry, "scalar loop, twist 20-50",
-         lambda: [critical_load(a, b, tol=TOL) for a, b in zip(tw, nv, strict=True)], len(tw),
-         {"n": sorted({r.n for r in res}), "max_rel_error_sampled": err,
-          "max_rel_diff_scalar_vs_array": float(same)}, "baseline")
+    _scalar_loop(benchmark, bench_registry, "scalar loop, twist 20-50", *_twisted_points(),
+                 reference, sample=20)
 
 
 @pytest.mark.benchmark(group="scalar loop")
