@@ -175,7 +175,7 @@ def test_few_point_solvers_match_the_batched_engine(few_engine):
 def test_one_point_solver_matches_the_batched_engine_and_the_batch_path(few_engine):
     # solve_one (Python floats) against the batched engine and against solve_few's
     # several-point path, at degrees with squaring (24) and with vector steps (40), with and
-    # without the extended-precision quotient (|Omega| > 20: the dense pencils' in either case)
+    # without the extended-precision quotient (|Omega| > LONG_TWIST = 10)
     om = np.array([0.3, 6.0, 15.0, 45.0])
     nu = np.array([1.1, 1.3, 10.0, 1.5])
     for n in (24, 40):

@@ -20,8 +20,9 @@ solves it; and the arithmetic is done in another order, so results agree to roun
 (``tests/test_modal_kernel.py`` compares the two).
 
 :func:`pencil_terms` gives the bilinear forms of the two-sided Rayleigh quotient of the pencil
-(:func:`.eigensolver.pencil_rayleigh_quotient`) in double-double, for |Omega(L)| > 20 where its
-terms cancel to ~lambda/Omega^2 and they were summed in numpy's ``longdouble`` (no BLAS there:
+(:func:`.eigensolver.pencil_rayleigh_quotient`) in double-double, for |Omega(L)| > LONG_TWIST =
+10 where its terms cancel to ~lambda/Omega^2 and they were summed in numpy's ``longdouble`` (no
+BLAS there:
 2.8-14 µs a point at n = 24-56, against 0.4-1.6 µs here, ``tests/bench/kernel_range.py``; the
 quotients agree to 4 eps and with 50-digit sums, ``tests/test_modal_kernel.py``).
 

@@ -134,8 +134,8 @@ def error_estimate(tail_value: ArrayLike, twist_angle: ArrayLike) -> NDArray[np.
     3.3e-4 tail for tail < 1e-5 and at most 33 tail^2 for 1e-5 <= tail < 1e-2, so the two
     constants carry safety factors 1.5 and 6. The round-off floor (the Omega^2 terms of the
     pencil cancel to ~lambda) was re-measured for the solver as it is (shift-and-invert, final
-    Rayleigh quotient in extended precision above |Omega| = 20) on Omega in [40, 100]: at most
-    0.19 eps Omega^2 (0.22 with the full ``eig``), hence the 0.3. With tail >= 1e-2 the mode
+    Rayleigh quotient in extended precision above |Omega| = LONG_TWIST) on Omega in [40, 100]:
+    at most 0.19 eps Omega^2 (0.22 with the full ``eig``), hence the 0.3. With tail >= 1e-2 the mode
     is not resolved and the estimate (>= 2e-2) only says so.
     """
     return truncation_error(tail_value) + roundoff_floor(twist_angle)

@@ -9,8 +9,8 @@
 2. ``collocation.few_points_limit``: the few-point path (the kernel one point at a time) against
    the batched engine, ``_solve_points`` forced to either, on k random Figure 1 points at
    degree n; the cheaper one.
-3. The pencil's Rayleigh-quotient terms at |Omega(L)| > 20 (``eigensolver._rayleigh_sums`` in
-   ``longdouble``): the kernel's double-double products against numpy's ``longdouble`` ones,
+3. The pencil's Rayleigh-quotient terms at |Omega(L)| > LONG_TWIST (``eigensolver._rayleigh_sums``
+   in ``longdouble``): the kernel's double-double products against numpy's ``longdouble`` ones,
    us a point on 500 random points, n = 24, 44, 56.
 
 Minima of interleaved rounds on one BLAS thread. The docstrings of those constants quote what
@@ -90,7 +90,8 @@ def few_points_crossover() -> None:
 
 def extended_quotient() -> None:
     rng = np.random.default_rng(0)
-    print("pencil quotient terms at |Omega(L)| > 20, us a point: double-double / longdouble")
+    print("pencil quotient terms at |Omega(L)| > LONG_TWIST, us a point: double-double / "
+          "longdouble")
     for n in (24, 44, 56):
         for family in ("symmetric", "antisymmetric"):
             op = family_operator(n, family)
