@@ -69,11 +69,12 @@ POWER_RTOL, POWER_STEPS, FIRST_CHECK = 1.0e-15, 40, 6
 #: -> 10.6-11.2).
 LOOSE_RTOL, LOOSE_DEGREE, LOOSE_FIRST_CHECK = 1.0e-8, 64, 4
 #: Above this |Omega| the final Rayleigh quotient is accumulated in extended precision. Measured
-#: 2026-12-05 on 4,000 random points (Omega(L) in [5, 20), nu up to 100, numpy 2.4.6 and 1.23.2)
-#: against the characteristic equation: with the quotient in double the error reached 0.90-0.96
-#: of the estimate's round-off part eps (32 + 0.3 Omega^2) at Omega(L) in [16, 20), 0.63-0.81
-#: in [10, 16) and 0.44-0.49 in [5, 10); in extended precision at most 0.24. It was 20 until
-#: the degree was held to a tenth of tol (higher degrees, more round-off in double).
+#: 2026-12-05 on 4,000 random points (Omega(L) in [5, 20), nu up to 100, numpy 2.4.6 and 1.23.2;
+#: ``python tests/bench/accuracy_at_tol.py``) against the characteristic equation: with the
+#: quotient in double the error reached 0.90-0.96 of the estimate's round-off part
+#: eps (32 + 0.3 Omega^2) at Omega(L) in [16, 20), 0.63-0.81 in [10, 16) and 0.44-0.49 in
+#: [5, 10); in extended precision at most 0.24. It was 20 until the degree was held to a tenth
+#: of tol (higher degrees, more round-off in double).
 LONG_TWIST = 10.0
 #: Up to this many points per degree and family, and degree, the full eig is cheaper than the
 #: iteration (measured: 0.13 vs 0.37 ms for one point at n = 20, about equal at n = 40-45).

@@ -10,11 +10,11 @@ Rayleigh quotient, the mode's tail), and, as there, the antisymmetric family onl
 shown above the symmetric one (its tail is then inf). Above |Omega| = LONG_TWIST at tight tol
 the quotient, whose terms cancel to ~lambda/Omega^2, is summed in double-double from the
 coefficients in long double (the batched engine sums the same double-double forms in long
-double). The benchmark's loop of scalar calls over Figure 1's points: 26.4-28.3 us a call,
-against 58-60 us by the dense pencils below; at Omega(L) in [20, 50) 94 us against 290-400 us
-when the dense pencils answered there (``tests/bench/HISTORY.md``, 2026-12-05); at rtol = 1e-8
-(modal quotient, as the batched engine's) within 1.2e-10 of the discrete eigenvalue on the 71
-points of step 3 below (the largest at n = 64: K's round-off).
+double). The benchmark's loop of scalar calls over Figure 1's points: 26.4-29.0 us a call,
+against 58-60 us by the dense pencils below; at Omega(L) in [20, 50) 93-94 us against 290-400
+us (ad hoc) when the dense pencils answered there (``tests/bench/HISTORY.md``, 2026-12-05);
+at rtol = 1e-8 (modal quotient, as the batched engine's) within 1.2e-10 of the discrete
+eigenvalue on the 71 points of step 3 below (the largest at n = 64: K's round-off).
 
 Where the kernel is not installed each (point, family) keeps the dense collocation pencil
 (A, B) of :mod:`.discretisation` (m = n - 1 unknowns, both families the same size, so they are
@@ -270,8 +270,7 @@ def _solve_kernel(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], r
     family stopped where shown above the symmetric one, its tail then inf). At |Omega| >
     LONG_TWIST and tight tol the pencil's quotient is summed in double-double, from the
     coefficients in extended precision (as the batched engine's, which sums in long double)."""
-    loose = loose_quotient(rtol, n)
-    big = np.abs(twist) > LONG_TWIST if not loose else np.zeros(twist.size, dtype=bool)
+    loose, big = loose_quotient(rtol, n), _extended(twist, n, rtol)
     lam, tails = np.empty((twist.size, 2)), np.empty((twist.size, 2))
     status = np.empty((twist.size, 2), dtype=np.int32)
     for sel, dtype in ((np.flatnonzero(~big), float), (np.flatnonzero(big), np.longdouble)):
@@ -279,6 +278,12 @@ def _solve_kernel(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], r
             coef = term_coefficients(twist[sel].astype(dtype), nu[sel].astype(dtype))
             lam[sel], tails[sel], status[sel] = _kernel_points(n, coef, rtol, loose)
     return lam, tails, _accepted(status)
+
+
+def _extended(twist, n: int, rtol: float):
+    """Where the pencil's quotient is summed in extended precision: |Omega| > LONG_TWIST at a
+    tight tol (a bool, or a bool array for an array `twist`)."""
+    return (np.abs(twist) > LONG_TWIST) & (not loose_quotient(rtol, n))
 
 
 def _kernel_points(n: int, coef: NDArray, rtol: float, loose: bool
@@ -310,11 +315,11 @@ def solve_one(n: int, twist: float, nu: float, rtol: float
     (True, 1.078092611)
     """
     if modal_kernel.available():
-        loose = loose_quotient(rtol, n)
-        dtype = np.longdouble if abs(twist) > LONG_TWIST and not loose else float
+        dtype = np.longdouble if _extended(twist, n, rtol) else float
         om, nv = dtype(twist), dtype(nu)
         lam1, tails1, status = _kernel_points(
-            n, np.array([[t.coefficient(om, nv) for t in INST1]], dtype=dtype), rtol, loose)
+            n, np.array([[t.coefficient(om, nv) for t in INST1]], dtype=dtype), rtol,
+            loose_quotient(rtol, n))
         return lam1[0].tolist(), tails1[0].tolist(), bool(_accepted(status)[0])
     dp = dense_pencils(n)
     m = dp.mass.shape[1]

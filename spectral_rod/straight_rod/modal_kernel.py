@@ -22,9 +22,12 @@ solves it; and the arithmetic is done in another order, so results agree to roun
 :func:`pencil_terms` gives the bilinear forms of the two-sided Rayleigh quotient of the pencil
 (:func:`.eigensolver.pencil_rayleigh_quotient`) in double-double, for |Omega(L)| > LONG_TWIST =
 10 where its terms cancel to ~lambda/Omega^2 and they were summed in numpy's ``longdouble`` (no
-BLAS there:
-2.8-14 µs a point at n = 24-56, against 0.4-1.6 µs here, ``tests/bench/kernel_range.py``; the
-quotients agree to 4 eps and with 50-digit sums, ``tests/test_modal_kernel.py``).
+BLAS there: 2.8-14 µs a point at n = 24-56, against 0.4-1.6 µs here,
+``tests/bench/kernel_range.py``; the quotients agree to 4 eps and with 50-digit sums,
+``tests/test_modal_kernel.py``). :func:`modal_points` with ``coef_lo`` completes the quotient
+of one point in double-double in C (``quotient_dd``: a second, lean implementation of the last
+step of :func:`.eigensolver._rayleigh_sums`, which sums the same forms in long double; a scalar
+call and an array call agree within the round-off bound, ``tests/test_safety.py``).
 
 The kernel is built at install (``setup.py``; optional: without a C compiler the package
 installs without it, and :func:`available` is False) and loaded with :mod:`ctypes` on first

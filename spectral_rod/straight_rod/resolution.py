@@ -11,10 +11,10 @@ bound with safety factors, but where it lands just below tol the error itself ca
 (measured 2026-12-05 on the collocation part of a 200 x 200 map, Omega(L) < 50, nu in [1, 100],
 against the characteristic equation: at tol 1e-12, with the degree held to the whole estimate,
 errors up to 1.6e-13 and 226 of 20,000 points above 1e-13, all at Omega(L) > 30; with the
-share, measured the same way, at most 4.6e-14 there, and at most a tenth of tol on 20,000 random
-points, Omega(L) < 50, nu up to 1e4, at every tol from 1e-4 to 1e-12; a sample of these is
-``tests/test_accuracy_control.py``). A point is converged, as before, where the whole estimate
-is <= tol.
+share at most 4.6e-14 there, and at most a tenth of tol on 20,000 random points, Omega(L) < 50,
+nu up to 1e4, at every tol from 1e-4 to 1e-12: ``python tests/bench/accuracy_at_tol.py`` prints
+these; ``tests/test_accuracy_control.py`` checks a sample). A point is converged, as before,
+where the whole estimate is <= tol.
 """
 
 from __future__ import annotations
@@ -29,7 +29,8 @@ from spectral_rod.straight_rod.discretisation import FamilyOperator
 __all__ = ["ERR_LINEAR", "ERR_QUADRATIC", "N_MAX", "N_MIN", "ROUNDOFF_TWIST", "TRUNCATION_SHARE",
            "error_estimate", "error_estimate_scalar", "initial_degree", "initial_degree_scalar",
            "mode_tails", "raised_degree", "roundoff_floor", "shortfall", "shortfall_scalar",
-           "tail_for_tolerance", "tail_from_parts", "tail_parts", "tails_of", "truncation_error"]
+           "tail_for_tolerance", "tail_from_parts", "tail_parts", "tails_of", "truncation_error",
+           "truncation_error_scalar"]
 
 N_MIN, N_MAX = 8, 512
 EPS = float(np.finfo(float).eps)
@@ -106,8 +107,14 @@ def shortfall(tail_value: ArrayLike, tol: float) -> NDArray[np.float64]:
 
 def shortfall_scalar(tail_value: float, tol: float) -> float:
     """:func:`shortfall` for one point, in Python floats (the scalar path's)."""
+    return truncation_error_scalar(tail_value) / (TRUNCATION_SHARE * tol)
+
+
+def truncation_error_scalar(tail_value: float) -> float:
+    """:func:`truncation_error` for one point, in Python floats (the same operations in the same
+    order: bit-equal)."""
     t = tail_value
-    return max(ERR_LINEAR * t, ERR_QUADRATIC * (t * t)) / (TRUNCATION_SHARE * tol)
+    return max(ERR_LINEAR * t, ERR_QUADRATIC * (t * t))
 
 
 def truncation_error(tail_value: ArrayLike) -> NDArray[np.float64]:
@@ -118,8 +125,8 @@ def truncation_error(tail_value: ArrayLike) -> NDArray[np.float64]:
 
 def error_estimate_scalar(tail_value: float, twist_angle: float) -> float:
     """:func:`error_estimate` for one point, in Python floats (the scalar path's)."""
-    t = tail_value  # the same operations in the same order as error_estimate (bit-equal)
-    return max(ERR_LINEAR * t, ERR_QUADRATIC * (t * t)) + EPS * (
+    # the same operations in the same order as error_estimate (bit-equal)
+    return truncation_error_scalar(tail_value) + EPS * (
         ROUNDOFF_BASE + ROUNDOFF_TWIST * (twist_angle * twist_angle))
 
 

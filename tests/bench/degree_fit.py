@@ -55,18 +55,21 @@ def step_gain(part: np.ndarray) -> np.ndarray:
     return now[sel] / after[sel]
 
 
+#: L = log10(1/t) >= 3.5, t = TRUNCATION_SHARE tol, per tol (a column).
+BIG_L = np.maximum(-np.log10(TRUNCATION_SHARE * TOLS), 3.5)[:, None]
+
+
 def fitted_degrees(om: np.ndarray, fit) -> np.ndarray:
-    """n0 = |Omega|/2 + c0 + c1 L + (c2 L + c3) (1 + |Omega|)^(1/3), L = log10(1/t) >= 3.5,
-    t = TRUNCATION_SHARE tol, rounded up to even (tols x points)."""
-    big_l = np.maximum(-np.log10(TRUNCATION_SHARE * TOLS), 3.5)[:, None]
-    c0, c1, c2, c3 = fit
+    """n0 = |Omega|/2 + c0 + c1 L + (c2 L + c3) (1 + |Omega|)^(1/3), rounded up to even (tols x
+    points)."""
+    big_l, (c0, c1, c2, c3) = BIG_L, fit
     x = om / 2 + c0 + c1 * big_l + (c2 * big_l + c3) * np.cbrt(1.0 + om)
     return np.clip(2 * np.ceil(x / 2), 8, 512)
 
 
 def previous(om: np.ndarray) -> np.ndarray:
     """The formula before this fit: |Omega|/2 + 3.5 + 0.5 L + 1.3 (1 + |Omega|)^(1/3) sqrt(L)."""
-    big_l = np.maximum(-np.log10(TRUNCATION_SHARE * TOLS), 3.5)[:, None]
+    big_l = BIG_L
     x = om / 2 + 3.5 + 0.5 * big_l + 1.3 * np.cbrt(1.0 + om) * np.sqrt(big_l)
     return np.clip(2 * np.ceil(x / 2), 8, 512)
 
