@@ -19,7 +19,9 @@ other scenes already in ``claims.json`` are kept. ``claims.json`` is a list of o
 keys ``id``, ``section``, ``claim``, ``test``, ``evidence``, ``verdict`` (one of
 :data:`VERDICTS`), ``scene``, ``figure``, ``numbers``, ``methods`` (list of {"name",
 "formulation"}), ``rule``, ``cross_checks`` (list of {"name", "disagreement", "limit",
-"passed"}) and ``related`` (ids of rows that bear on this one).
+"passed"}), ``related`` (ids of rows that bear on this one), ``kind`` (one of :data:`KINDS`)
+and ``root_cause`` (for a paper's statement that fails: the id of the independent error it
+traces back to, else null).
 """
 
 from __future__ import annotations
@@ -36,6 +38,10 @@ from reproduce.io import OutputFileError, json_value, read_json, write_text
 from reproduce.tables import markdown_table
 
 VERDICTS = ("holds", "holds approximately", "fails", "inconclusive")
+#: What a row is: a statement of the paper, a check of the package's own methods, or a modelling
+#: caveat (a finding about what the paper leaves unspecified). The headline tallies the paper's
+#: statements apart from the rest.
+KINDS = ("paper", "package", "caveat")
 #: The scenes in the order `python -m reproduce all` runs them; the ledger lists their rows in
 #: the same order (rows of other scenes after them, alphabetically).
 SCENE_ORDER = ("figure1", "claims", "ring", "convergence", "extremes")
@@ -88,6 +94,14 @@ class ClaimSpec:
     shared_checks: bool = False
     #: why a single formulation is all there is (said in the evidence of such a verdict)
     one_formulation_why: str = "no independent formulation applies to it"
+    #: one of :data:`KINDS`
+    kind: str = "paper"
+    #: for a row that fails: the id of the independent error of the paper it traces back to
+    root_cause: str | None = None
+
+    def __post_init__(self) -> None:
+        if self.kind not in KINDS:
+            raise ValueError(f"kind of {self.id} must be one of {KINDS}, got {self.kind!r}")
 
 
 @dataclass(frozen=True)
@@ -116,6 +130,8 @@ class Claim:
     rule: str = ""
     cross_checks: list[dict[str, Any]] = field(default_factory=list)
     related: list[str] = field(default_factory=list)
+    kind: str = "paper"
+    root_cause: str | None = None
 
     def __post_init__(self) -> None:
         if self.verdict not in VERDICTS:
@@ -147,7 +163,7 @@ def judge(spec: ClaimSpec, measured: Measured, scene: str) -> Claim:
         verdict=verdict, scene=scene, figure=spec.figure, numbers=measured.numbers,
         methods=[asdict(m) for m in spec.methods], rule=spec.rule.text,
         cross_checks=[{**asdict(c), "passed": c.passed} for c in measured.cross_checks],
-        related=list(spec.related))
+        related=list(spec.related), kind=spec.kind, root_cause=spec.root_cause)
 
 
 def with_shared(spec: ClaimSpec, measured: Measured, shared: Sequence[CrossCheck]) -> Measured:
