@@ -1,7 +1,8 @@
-"""Build of the batched engine's C kernel (all metadata is in pyproject.toml).
+"""Build of the engine's C kernel (all metadata is in pyproject.toml).
 
 The kernel is optional: where it does not compile (no C compiler), the package installs without
-it and the engine runs its numpy code (spectral_rod/straight_rod/modal_kernel.py).
+it and the engine runs its numpy reference (spectral_rod/straight_rod/modal_kernel.py warns once
+with a PerformanceWarning at the first solve). Its contract is _modal_kernel.h.
 """
 
 import sys
@@ -10,4 +11,6 @@ from setuptools import Extension, setup
 
 setup(ext_modules=[Extension(
     "spectral_rod.straight_rod._modal_kernel", ["spectral_rod/straight_rod/_modal_kernel.c"],
+    depends=["spectral_rod/straight_rod/_modal_kernel.h"],
+    include_dirs=["spectral_rod/straight_rod"],
     extra_compile_args=[] if sys.platform == "win32" else ["-O3"], optional=True)])

@@ -21,6 +21,7 @@ from __future__ import annotations
 __all__ = [
     "ConvergenceError",
     "ConvergenceWarning",
+    "PerformanceWarning",
     "ReferenceDataError",
     "RingConvergenceError",
     "RootNotFoundError",
@@ -51,3 +52,10 @@ class ReferenceDataError(SpectralRodError, ValueError):
 class ConvergenceWarning(RuntimeWarning):
     """The requested tolerance was not met (resolution cap or round-off); the result is flagged
     ``converged=False`` in the full output."""
+
+
+class PerformanceWarning(UserWarning):
+    """A computation runs on a slower engine than the package can have: the C kernel is not
+    built (no C compiler at install), disabled or refused at load. Issued once per process, at
+    the first solve; silence it with ``warnings.filterwarnings("ignore",
+    category=spectral_rod.errors.PerformanceWarning)``."""

@@ -1,19 +1,21 @@
-/* The batched engine's lowest eigenpair of Eq. inst1 (modal form), LANES points at a time.
+/* The engine's lowest eigenpair of Eq. inst1 (modal form), LANES points at a time, or one.
 
-   The same algorithm as the numpy code of spectral_rod/straight_rod/eigensolver.py
+   The contract of every entry point (arguments, dimensions, INFO) is _modal_kernel.h.
+
+   The same algorithm as the numpy reference of spectral_rod/straight_rod/eigensolver.py
    (_ShiftedModal and lowest_eigenpair; its docstrings explain it) for a stack of points:
    the Schur complement S of K - SHIFT, its LU factors, shift-and-invert steps on right and
    left vectors and the first-order convergence test. The arithmetic of LANES points runs side
    by side: every array below is laid out [index][lane], so each inner loop is over the lanes
    and the compiler vectorises it (points are independent; one point's own loops are short
-   and dependent, which is what made a loop per point no faster than numpy).
+   and dependent, so a loop per point gains little over numpy: tests/bench/c_prototype).
 
-   Differences from the numpy code, both checked per point: the LU has no pivoting (S is a
-   Schur complement of K - SHIFT with SHIFT below every physical eigenvalue, far from singular;
-   as spectral_rod/straight_rod/stacked_inverse.py, a probe's backward error accepts the
-   factors or rejects the point, status REJECTED, and the caller solves it by the numpy code),
-   and a finished point stays in its group of LANES until the group is done (its results are
-   taken when it finishes).
+   Differences from the numpy reference, both checked per point: the LU has no pivoting (S is
+   a Schur complement of K - SHIFT with SHIFT below every physical eigenvalue, far from
+   singular; as spectral_rod/straight_rod/stacked_inverse.py, a probe's backward error accepts
+   the factors or rejects the point, status MODAL_REJECTED, and the caller solves it by the
+   numpy reference), and a finished point stays in its group of LANES until the group is done
+   (its results are taken when it finishes).
 
    Loaded with ctypes by spectral_rod/straight_rod/modal_kernel.py; the Python module stub at
    the end only makes the build an importable extension. */
@@ -24,6 +26,8 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "_modal_kernel.h"
 
 #define LANES 32
 
@@ -40,14 +44,13 @@
 #define INLINE static inline
 #endif
 
-enum { NOT_CONVERGED = 0, CONVERGED = 1, ABOVE = 2, REJECTED = -1 };
+enum { NOT_CONVERGED = MODAL_NOT_CONVERGED, CONVERGED = MODAL_CONVERGED, ABOVE = MODAL_ABOVE,
+       REJECTED = MODAL_REJECTED };
 
 /* Workspace aligned to 64 bytes, the widest vector loads' width (AVX-512): with malloc's
-   16-byte alignment every such load of the [index][lane] arrays could straddle two cache
-   lines, and whether it did depended on the heap's state (the same call 1.4 times slower in
-   some processes than in others: lowest_eigenpair at n = 22 1.15 or 1.58 us a point, at n = 44
-   4.9 or 6.7, measured ad hoc on 2026-12-05; aligned, 1.16-1.20 and 4.7-5.1). NULL if the
-   allocation fails. */
+   16-byte alignment every such load of the [index][lane] arrays can straddle two cache lines,
+   depending on the heap's state, which made the same call's time vary between processes.
+   NULL if the allocation fails. */
 #if defined(_WIN32)
 #include <malloc.h>
 static double *workspace(size_t count) { return _aligned_malloc(count * sizeof(double), 64); }
@@ -273,14 +276,14 @@ INLINE void put_lane(const int L, int k, const double *v, int w, double *out) {
   for (int j = 0; j < k; j++) out[j] = AT(v, j)[w];
 }
 
-/* One group of `count` <= LANES points starting at point i0 (lanes past count repeat the last
-   point and are ignored). */
-INLINE void solve_group(const int L, int i0, int count, int ke, int ks, const double *r_e, const double *a,
-                        const double *b, const double *d_s, const double *g_es,
-                        const double *g_se, const double *start_e, const double *start_s,
-                        const double *ceiling, double shift, double rtol, int first,
-                        int max_steps, double backward_tol, double *work, double *lam,
-                        double *x_e, double *x_s, double *y_e, double *y_s, int *status) {
+/* One group of `count` <= LANES points of `in` starting at point i0 (lanes past count repeat
+   the last point and are ignored). */
+INLINE void solve_group(const int L, int i0, int count, const ModalBatch *in,
+                        const ModalControl *ctl, double *work, const ModalEigenpairs *out) {
+  const int ke = in->ke, ks = in->ks;
+  const double *a = in->a, *b = in->b, *g_es = in->g_es, *g_se = in->g_se;
+  const double shift = ctl->shift;
+  int *status = out->status;
   double *s = work, *s0 = s + (size_t)L * ks * ks, *re = s0 + (size_t)L * ks * ks;
   double *ds = re + (size_t)L * ke, *xe = ds + (size_t)L * ks;
   double *ye = xe + (size_t)L * ke, *pe = ye + (size_t)L * ke;
@@ -294,19 +297,21 @@ INLINE void solve_group(const int L, int i0, int count, int ke, int ks, const do
     al[w] = a[i];
     bl[w] = b[i];
     ab[w] = a[i] * b[i];
-    for (int j = 0; j < ke; j++) AT(re, j)[w] = r_e[(size_t)i * ke + j];
-    for (int j = 0; j < ks; j++) AT(ds, j)[w] = d_s[(size_t)i * ks + j];
+    for (int j = 0; j < ke; j++) AT(re, j)[w] = in->r_e[(size_t)i * ke + j];
+    for (int j = 0; j < ks; j++) AT(ds, j)[w] = in->d_s[(size_t)i * ks + j];
   }
   factorise(L, ke, ks, re, ab, ds, g_es, g_se, s, s0);
-  probe_check(L, ks, s, s0, backward_tol, t, ok);
+  probe_check(L, ks, s, s0, ctl->backward_tol, t, ok);
   for (int w = 0; w < L; w++) {
     done[w] = w >= count || !ok[w];
     if (w < count && !ok[w]) status[i0 + w] = REJECTED;
   }
   for (int j = 0; j < ke; j++)
-    for (int w = 0; w < L; w++) AT(xe, j)[w] = AT(ye, j)[w] = start_e[j];
+    for (int w = 0; w < L; w++) AT(xe, j)[w] = AT(ye, j)[w] = in->start_e[j];
   for (int j = 0; j < ks; j++)
-    for (int w = 0; w < L; w++) AT(xs, j)[w] = AT(ys, j)[w] = start_s[j];
+    for (int w = 0; w < L; w++) AT(xs, j)[w] = AT(ys, j)[w] = in->start_s[j];
+  const int first = ctl->first, max_steps = ctl->max_steps;
+  const double rtol = ctl->rtol, *ceiling = in->ceiling;
   for (int step = 1; step <= max_steps; step++) {
     memcpy(pe, xe, sizeof(double) * L * ke);
     memcpy(ps, xs, sizeof(double) * L * ks);
@@ -325,12 +330,12 @@ INLINE void solve_group(const int L, int i0, int count, int ke, int ks, const do
       const int high = !conv && ceiling && rq[w] - 100.0 * bound[w] > ceiling[i];
       if (conv || high || step + 2 > max_steps) {
         done[w] = 1;
-        lam[i] = rq[w];
+        out->lam[i] = rq[w];
         status[i] = conv ? CONVERGED : high ? ABOVE : NOT_CONVERGED;
-        put_lane(L, ke, xe, w, x_e + (size_t)i * ke);
-        put_lane(L, ks, xs, w, x_s + (size_t)i * ks);
-        put_lane(L, ke, ye, w, y_e + (size_t)i * ke);
-        put_lane(L, ks, ys, w, y_s + (size_t)i * ks);
+        put_lane(L, ke, xe, w, out->x_e + (size_t)i * ke);
+        put_lane(L, ks, xs, w, out->x_s + (size_t)i * ks);
+        put_lane(L, ke, ye, w, out->y_e + (size_t)i * ke);
+        put_lane(L, ks, ys, w, out->y_s + (size_t)i * ks);
       } else {
         all = 0;
       }
@@ -339,43 +344,55 @@ INLINE void solve_group(const int L, int i0, int count, int ke, int ks, const do
   }
 }
 
-/* The lowest eigenpair of P points (arrays row-major, one row a point; see modal_kernel.py).
-   Returns 0, or -1 if the workspace could not be allocated (nothing is solved then). */
-CLONES int modal_lowest(int P, int ke, int ks, const double *r_e, const double *a, const double *b,
-                 const double *d_s, const double *g_es, const double *g_se,
-                 const double *start_e, const double *start_s, const double *ceiling,
-                 double shift, double rtol, int first, int max_steps, double backward_tol,
-                 double *lam, double *x_e, double *x_s, double *y_e, double *y_s,
-                 int *status) {
-  double *work = workspace(LANES * (2 * (size_t)ks * ks + 5 * (size_t)ke + 6 * (size_t)ks));
-  if (!work) return -1;
-  for (int i0 = 0; i0 < P; i0 += LANES)
-    solve_group(LANES, i0, P - i0 < LANES ? P - i0 : LANES, ke, ks, r_e, a, b, d_s, g_es, g_se,
-                start_e, start_s, ceiling, shift, rtol, first, max_steps, backward_tol, work,
-                lam, x_e, x_s, y_e, y_s, status);
+/* The lowest eigenpair of P points of one family (_modal_kernel.h). */
+CLONES int modal_lowest(const ModalBatch *batch, const ModalControl *control,
+                        ModalEigenpairs *out) {
+  if (!batch || batch->P < 0 || batch->ke < 1 || batch->ks < 1 ||
+      (batch->P && (!batch->r_e || !batch->a || !batch->b || !batch->d_s)) || !batch->g_es ||
+      !batch->g_se || !batch->start_e || !batch->start_s)
+    return -1;
+  if (!control || control->first < 1 || control->max_steps < control->first) return -2;
+  if (!out || (batch->P && (!out->lam || !out->x_e || !out->x_s || !out->y_e || !out->y_s ||
+                            !out->status)))
+    return -3;
+  const size_t ke = batch->ke, ks = batch->ks;
+  double *work = workspace(LANES * (2 * ks * ks + 5 * ke + 6 * ks));
+  if (!work) return 1;
+  for (int i0 = 0; i0 < batch->P; i0 += LANES)
+    solve_group(LANES, i0, batch->P - i0 < LANES ? batch->P - i0 : LANES, batch, control, work,
+                out);
   release(work);
   return 0;
 }
 
 int modal_lanes(void) { return LANES; }
 
-/* One mode family at one degree, for modal_points: its modal form (eigensolver.ModalFamily),
-   the maps back to the pencil's vectors, its tail rows and its terms (eigensolver.py and
-   modal_kernel.py build it). */
-typedef struct {
-  int k1, k2, schur;                     /* block sizes; the Schur block, 1 or 2 */
-  int own2[2], own0[2], coupling[2];     /* per equation: MODAL_TERMS' indices into coef */
-  const double *lam1, *lam2;             /* (k1,), (k2,) */
-  const double *g12, *g21;               /* (k1, k2), (k2, k1) */
-  const double *u1, *u2;                 /* (k1, k1), (k2, k2): c_i = U_i z_i */
-  const double *left1, *left2;           /* (k1, k1), (k2, k2): y_i^T = w_i^T left_i */
-  const double *start;                   /* (k1 + k2,), a unit vector */
-  int tail_count;                        /* rows of tail_rows; the first 4 are the tail */
-  const double *tail_rows;               /* (tail_count, k1 + k2) */
-  const int *term_shape;                 /* (terms, 5), as for pencil_terms_dd */
-  const double *term_mats;
-  const int *mass;                       /* (terms,): 1 for a term of B */
-} Family;
+int modal_abi_version(void) { return MODAL_KERNEL_ABI; }
+
+const char *modal_isa(void) {
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__GLIBC__)
+  /* the order of target_clones' choice: the first level the CPU supports */
+  __builtin_cpu_init();
+  if (__builtin_cpu_supports("x86-64-v4")) return "x86-64-v4";
+  if (__builtin_cpu_supports("x86-64-v3")) return "x86-64-v3";
+  return "default";
+#else
+  return "portable";
+#endif
+}
+
+size_t modal_struct_size(int which) {
+  switch (which) {
+    case 0: return sizeof(ModalControl);
+    case 1: return sizeof(ModalBatch);
+    case 2: return sizeof(ModalEigenpairs);
+    case 3: return sizeof(Family);
+    case 4: return sizeof(ModalPoints);
+    case 5: return sizeof(ModalPointResults);
+    case 6: return sizeof(PencilForms);
+    default: return 0;
+  }
+}
 
 /* The pencil's bilinear forms y_e^T M_t x_f in double-double, for the two-sided Rayleigh
    quotient at large twist (eigensolver.pencil_rayleigh_quotient, Eq. inst1), where its terms
@@ -444,15 +461,19 @@ INLINE void terms_group(const int L, int i0, int count, int m, int T, const int 
 
 /* All P points: LANES at a time, a last group of fewer one at a time (a single point, as in a
    scalar call, would otherwise cost a whole group). */
-CLONES int pencil_terms_dd(int P, int m, int T, const int *shape, const double *mats,
-                           const double *x, const double *y, double *hi, double *lo) {
-  double *xt = workspace(LANES * 2 * (size_t)m);
-  if (!xt) return -1;
+CLONES int pencil_terms_dd(PencilForms *f) {
+  if (!f || f->P < 0 || f->m < 0 || f->T < 1 ||
+      (f->P && (!f->shape || !f->mats || !f->x || !f->y || !f->hi || !f->lo)))
+    return -1;
+  const int P = f->P, m = f->m, T = f->T;
+  double *xt = workspace(LANES * 2 * (size_t)(m > 0 ? m : 1));
+  if (!xt) return 1;
   double *yt = xt + (size_t)LANES * m;
   int i0 = 0;
   for (; P - i0 >= LANES; i0 += LANES)
-    terms_group(LANES, i0, LANES, m, T, shape, mats, x, y, xt, yt, hi, lo);
-  for (; i0 < P; i0++) terms_group(1, i0, 1, m, T, shape, mats, x, y, xt, yt, hi, lo);
+    terms_group(LANES, i0, LANES, m, T, f->shape, f->mats, f->x, f->y, xt, yt, f->hi, f->lo);
+  for (; i0 < P; i0++)
+    terms_group(1, i0, 1, m, T, f->shape, f->mats, f->x, f->y, xt, yt, f->hi, f->lo);
   release(xt);
   return 0;
 }
@@ -484,14 +505,16 @@ static double quotient_dd(int m, int T, const int *shape, const double *mats, co
 #endif
 
 /* One family at one point: the lowest eigenpair by the kernel (one lane), then the pencil's
-   vectors, the tail and, unless `loose`, the pencil's two-sided Rayleigh quotient: in double,
-   or where coef_lo (the coefficients' low parts) is given in double-double (quotient_dd). */
+   vectors, the tail and, unless control->loose, the pencil's two-sided Rayleigh quotient: in
+   double, or where coef_lo (the coefficients' low parts) is given in double-double
+   (quotient_dd). */
 INLINE void family_point(const Family *f, int terms, const double *coef, const double *coef_lo,
-                         const double *ceiling, double shift, double rtol, int first,
-                         int max_steps, double backward_tol, int loose, double *work,
+                         const double *ceiling, const ModalControl *ctl, double *work,
                          double *lam, double *tail, int *status) {
   const int k1 = f->k1, k2 = f->k2, m = k1 + k2, e1 = f->schur == 2;
   const int ke = e1 ? k1 : k2, ks = e1 ? k2 : k1;
+  const double shift = ctl->shift;
+  const int loose = ctl->loose;
   double *r_e = work, *d_s = r_e + ke, *v = d_s + ks, *x = v + 2 * m, *y = x + m;
   double *rest = y + m;  /* solve_group's workspace, one lane */
   const double *lam_e = e1 ? f->lam1 : f->lam2, *lam_s = e1 ? f->lam2 : f->lam1;
@@ -501,9 +524,11 @@ INLINE void family_point(const Family *f, int terms, const double *coef, const d
   for (int j = 0; j < ks; j++) d_s[j] = coef[f->own0[qs]] - coef[f->own2[qs]] * lam_s[j] - shift;
   const double a = 2.0 * coef[f->coupling[qe]], b = 2.0 * coef[f->coupling[qs]];
   double *ze = v, *zs = v + ke, *we = v + m, *ws = v + m + ke;
-  solve_group(1, 0, 1, ke, ks, r_e, &a, &b, d_s, e1 ? f->g12 : f->g21, e1 ? f->g21 : f->g12,
-              f->start + (e1 ? 0 : k1), f->start + (e1 ? k1 : 0), ceiling, shift, rtol, first,
-              max_steps, backward_tol, rest, lam, ze, zs, we, ws, status);
+  const ModalBatch one = {1, ke, ks, r_e, &a, &b, d_s, e1 ? f->g12 : f->g21,
+                          e1 ? f->g21 : f->g12, f->start + (e1 ? 0 : k1),
+                          f->start + (e1 ? k1 : 0), ceiling};
+  const ModalEigenpairs res = {lam, ze, zs, we, ws, status};
+  solve_group(1, 0, 1, &one, ctl, rest, &res);
   *tail = INFINITY;
   if (*status != CONVERGED) return;
   const double *z1 = e1 ? ze : zs, *z2 = e1 ? zs : ze, *w1 = e1 ? we : ws, *w2 = e1 ? ws : we;
@@ -554,13 +579,13 @@ INLINE void family_point(const Family *f, int terms, const double *coef, const d
 
 /* Both families (symmetric first, the antisymmetric one only shown to lie above
    (1 + close_rel) times it where it does, as collocation._solve_points) at P points, one at
-   a time: per point and family lambda, the tail and the status (the antisymmetric family's
-   tail is inf where it is above). `coef` (P, terms) are the INST1 coefficients and `coef_lo`,
-   NULL or (P, terms), their low parts for the quotient in double-double. */
-CLONES int modal_points(int P, const Family *fam, int terms, const double *coef,
-                        const double *coef_lo, double shift, double rtol, int first,
-                        int max_steps, double backward_tol, double close_rel, int loose,
-                        double *lam, double *tail, int *status) {
+   a time (_modal_kernel.h); the antisymmetric family's tail is inf where it is above. */
+CLONES int modal_points(const Family *fam, const ModalPoints *pts, const ModalControl *control,
+                        ModalPointResults *out) {
+  if (!fam) return -1;
+  if (!pts || pts->P < 0 || pts->terms < 1 || (pts->P && !pts->coef)) return -2;
+  if (!control || control->first < 1 || control->max_steps < control->first) return -3;
+  if (!out || (pts->P && (!out->lam || !out->tail || !out->status))) return -4;
   size_t size = 0;
   for (int q = 0; q < 2; q++) {
     const size_t k = (size_t)fam[q].k1 + fam[q].k2;
@@ -568,15 +593,19 @@ CLONES int modal_points(int P, const Family *fam, int terms, const double *coef,
     if (need > size) size = need;
   }
   double *work = workspace(size);
-  if (!work) return -1;
-  for (int i = 0; i < P; i++) {
-    const double *c = coef + (size_t)i * terms, *c_lo = coef_lo ? coef_lo + (size_t)i * terms : NULL;
-    family_point(&fam[0], terms, c, c_lo, NULL, shift, rtol, first, max_steps, backward_tol,
-                 loose, work, lam + 2 * i, tail + 2 * i, status + 2 * i);
-    const double ceiling = lam[2 * i] * (1.0 + close_rel);
-    family_point(&fam[1], terms, c, c_lo, status[2 * i] == CONVERGED ? &ceiling : NULL, shift,
-                 rtol, first < 4 ? first : 4, max_steps, backward_tol, loose, work,
-                 lam + 2 * i + 1, tail + 2 * i + 1, status + 2 * i + 1);
+  if (!work) return 1;
+  ModalControl anti = *control;  /* the antisymmetric family may stop early: an earlier test */
+  if (anti.first > 4) anti.first = 4;
+  const int terms = pts->terms;
+  for (int i = 0; i < pts->P; i++) {
+    const double *c = pts->coef + (size_t)i * terms;
+    const double *c_lo = pts->coef_lo ? pts->coef_lo + (size_t)i * terms : NULL;
+    double *lam = out->lam + 2 * i, *tail = out->tail + 2 * i;
+    int *status = out->status + 2 * i;
+    family_point(&fam[0], terms, c, c_lo, NULL, control, work, lam, tail, status);
+    const double ceiling = lam[0] * (1.0 + control->close_rel);
+    family_point(&fam[1], terms, c, c_lo, status[0] == CONVERGED ? &ceiling : NULL, &anti,
+                 work, lam + 1, tail + 1, status + 1);
   }
   release(work);
   return 0;

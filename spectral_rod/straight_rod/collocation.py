@@ -24,6 +24,7 @@ from numpy.typing import NDArray
 from spectral_rod._blas_threads import one_blas_thread
 from spectral_rod._validation import check_resolution, scalar_nu, scalar_twist
 from spectral_rod.families import CLOSE_REL, FAMILIES, TIE_REL, check_family
+from spectral_rod.straight_rod import modal_kernel
 from spectral_rod.straight_rod.discretisation import family_operator
 from spectral_rod.straight_rod.eigensolver import (
     ISOLATION_GAP,
@@ -199,7 +200,9 @@ def collocation_critical_load(twist: NDArray[np.float64], nu: NDArray[np.float64
                               n: int | None = None, tol: float = 1e-12) -> CollocationResult:
     """p* at flat arrays of points (|Omega|, nu), at degree ``n`` or chosen automatically for
     relative accuracy ``tol`` (module docstring); validated input expected. Runs on one BLAS
-    thread (:func:`spectral_rod._blas_threads.one_blas_thread`: its products are small)."""
+    thread (:func:`spectral_rod._blas_threads.one_blas_thread`: its products are small).
+    Without the C kernel the first call warns (:func:`.modal_kernel.warn_if_missing`)."""
+    modal_kernel.warn_if_missing()
     with one_blas_thread():
         return _collocation_critical_load(np.abs(twist), nu, n, tol)
 

@@ -321,6 +321,7 @@ def solve_one(n: int, twist: float, nu: float, rtol: float
             n, np.array([[t.coefficient(om, nv) for t in INST1]], dtype=dtype), rtol,
             loose_quotient(rtol, n))
         return lam1[0].tolist(), tails1[0].tolist(), bool(_accepted(status)[0])
+    modal_kernel.warn_if_missing()
     dp = dense_pencils(n)
     m = dp.mass.shape[1]
     coef = np.array([*(t.coefficient(twist, nu) for t in INST1), 1.0])

@@ -1,0 +1,132 @@
+"""The engine's contract (``_modal_kernel.h``): the ABI version and struct sizes checked at load,
+the switch to the numpy reference, the PerformanceWarning without the kernel, engine_info."""
+
+from __future__ import annotations
+
+import ctypes
+import subprocess
+import sys
+import warnings
+
+import numpy as np
+import pytest
+
+from spectral_rod.errors import PerformanceWarning
+from spectral_rod.straight_rod import modal_kernel
+
+needs_kernel = pytest.mark.skipif(not modal_kernel.available(),
+                                  reason="the C kernel is not built here")
+
+
+class _FakeLibrary:
+    """A stand-in for the CDLL whose ABI version or struct sizes are chosen by the test."""
+
+    def __init__(self, version: int, sizes: dict[int, int] | None = None):
+        real = modal_kernel._library()
+        self._sizes = {i: ctypes.sizeof(s) for i, s in enumerate(modal_kernel._STRUCTS)}
+        self._sizes.update(sizes or {})
+        self.modal_abi_version = lambda: version
+        self.modal_struct_size = lambda which: self._sizes.get(which, 0)
+        for name in ("modal_lowest", "modal_points", "pencil_terms_dd", "modal_lanes",
+                     "modal_isa"):
+            setattr(self, name, getattr(real, name))
+
+
+@needs_kernel
+def test_the_loader_accepts_the_build_it_was_written_for():
+    lib, reason = modal_kernel._checked(_FakeLibrary(modal_kernel.ABI_VERSION))
+    assert lib is not None and reason == ""
+
+
+@needs_kernel
+def test_an_abi_mismatch_refuses_the_kernel_with_a_clear_reason():
+    lib, reason = modal_kernel._checked(_FakeLibrary(modal_kernel.ABI_VERSION + 1))
+    assert lib is None
+    assert f"ABI version is {modal_kernel.ABI_VERSION + 1}" in reason
+
+
+@needs_kernel
+def test_a_struct_size_mismatch_refuses_the_kernel():
+    lib, reason = modal_kernel._checked(_FakeLibrary(modal_kernel.ABI_VERSION, {3: 8}))
+    assert lib is None and "Family" in reason
+
+
+@needs_kernel
+def test_the_build_reports_its_abi_isa_and_lanes():
+    info = modal_kernel.engine_info()
+    assert info["engine"] == "kernel" and info["available"] and info["reason"] == ""
+    assert info["abi_version"] == info["abi_expected"] == modal_kernel.ABI_VERSION
+    assert info["isa"] in ("x86-64-v4", "x86-64-v3", "default", "portable")
+    assert info["lanes"] == 32
+
+
+@needs_kernel
+def test_an_illegal_argument_is_named_by_its_position():
+    # INFO = -i for the i-th argument (_modal_kernel.h): a negative P in ModalBatch
+    lib = modal_kernel._library()
+    buf = np.zeros(16)
+    batch = modal_kernel.ModalBatch(-1, 2, 2, *[buf.ctypes.data] * 8, None)
+    control = modal_kernel.ModalControl(1.0, 1e-14, 1e-10, 0.0, 6, 40, 0)
+    out = modal_kernel.ModalEigenpairs()
+    assert lib.modal_lowest(ctypes.byref(batch), ctypes.byref(control), ctypes.byref(out)) == -1
+    batch.P = 0
+    control.first = 0  # first must be >= 1
+    assert lib.modal_lowest(ctypes.byref(batch), ctypes.byref(control), ctypes.byref(out)) == -2
+    control.first = 6
+    assert lib.modal_lowest(ctypes.byref(batch), ctypes.byref(control), ctypes.byref(out)) == 0
+
+
+_CHILD = """
+import warnings, json, sys
+warnings.simplefilter("always")
+from spectral_rod import critical_load
+from spectral_rod.straight_rod import modal_kernel
+with warnings.catch_warnings(record=True) as got:
+    warnings.simplefilter("always")
+    a = critical_load(3.0, 1.5)
+    b = critical_load([3.0, 4.0, 5.0], 1.5)
+    c = critical_load(6.0, 2.0)
+perf = [str(w.message) for w in got if w.category.__name__ == "PerformanceWarning"]
+print(json.dumps({"info": modal_kernel.engine_info(), "perf": perf, "p": a}))
+"""
+
+
+def _child(env_value: str | None) -> dict:
+    import json
+    import os
+
+    env = dict(os.environ)
+    env.pop(modal_kernel.DISABLE_ENV, None)
+    if env_value is not None:
+        env[modal_kernel.DISABLE_ENV] = env_value
+    out = subprocess.run([sys.executable, "-c", _CHILD], env=env, capture_output=True,
+                         text=True, check=True, timeout=300)
+    return json.loads(out.stdout.strip().splitlines()[-1])
+
+
+def test_without_the_kernel_the_first_solve_warns_once_and_says_how_to_get_it():
+    got = _child("1")
+    assert got["info"]["engine"] == "numpy" and not got["info"]["available"]
+    assert modal_kernel.DISABLE_ENV in got["info"]["reason"]
+    assert len(got["perf"]) == 1  # three solves, one warning
+    assert "C compiler" in got["perf"][0] and "reinstall" in got["perf"][0]
+    assert abs(got["p"] - 1.0780926110) < 1e-9
+
+
+@needs_kernel
+def test_with_the_kernel_no_performance_warning():
+    got = _child(None)
+    assert got["info"]["engine"] == "kernel" and got["perf"] == []
+
+
+def test_the_performance_warning_is_silenceable(monkeypatch):
+    monkeypatch.setattr(modal_kernel, "_library", lambda: None)
+    monkeypatch.setattr(modal_kernel, "_warned", False)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        warnings.filterwarnings("ignore", category=PerformanceWarning)
+        modal_kernel.warn_if_missing()  # filtered: no error
+    monkeypatch.setattr(modal_kernel, "_warned", False)
+    with pytest.warns(PerformanceWarning):
+        modal_kernel.warn_if_missing()
+    assert issubclass(PerformanceWarning, UserWarning)
