@@ -38,13 +38,18 @@ from spectral_rod.results import CriticalLoad, as_output
 from spectral_rod.router import METHOD_DTYPE, ROD_METHODS, check_route, route, route_point
 from spectral_rod.straight_rod import N_MAX, collocation_critical_load
 from spectral_rod.straight_rod.collocation import pick_family_scalar
-from spectral_rod.straight_rod.eigensolver import iteration_allowance, iteration_rtol
-from spectral_rod.straight_rod.few_points import LEAN_MAX_DEGREE, solve_one
+from spectral_rod.straight_rod.few_points import solve_one
 from spectral_rod.straight_rod.resolution import (
     error_estimate_scalar,
     initial_degree_scalar,
     raised_degree,
     shortfall_scalar,
+)
+from spectral_rod.straight_rod.tuning import (
+    CHUNK,
+    LEAN_MAX_DEGREE,
+    iteration_allowance,
+    iteration_rtol,
 )
 
 __all__ = ["critical_load"]
@@ -98,13 +103,6 @@ _MODULES = {"collocation": "spectral_rod.straight_rod",
             "characteristic": "spectral_rod.characteristic",
             "increment": "spectral_rod.increment", "ritz": "spectral_rod.ritz"}
 assert set(_SOLVERS) == set(ROD_METHODS) == set(_MODULES)
-
-
-#: Points solved together at most: bounds the memory of a large call (the batched engine holds
-#: ~k^2 doubles per point and family, the large-twist scan ~20 grid columns of 257 doubles per
-#: point; with 2^12 points a call of 10^6 random points peaks at a few hundred MB, measured by
-#: tests/test_safety.py, where 2^15 took 680 MB).
-CHUNK = 1 << 12
 
 
 def solve_points(tw: NDArray[np.float64], nv: NDArray[np.float64], methods: NDArray[np.str_],

@@ -95,16 +95,15 @@ def test_estimate_covers_the_eigen_iteration_above_the_default_tol(reference):
 
 
 def test_modal_quotient_round_off_is_far_below_the_loose_iteration_tolerance():
-    # eigensolver.LOOSE_DEGREE: from rtol = LOOSE_RTOL on and up to that degree the eigenvalue
+    # tuning.LOOSE_DEGREE: from rtol = LOOSE_RTOL on and up to that degree the eigenvalue
     # is the modal quotient; its difference from the pencil quotient (same converged vectors) is
     # K's round-off, largest at small Omega: measured <= 4e-11 at n = 50 and <= 1.1e-10 at n = 64
     from spectral_rod.straight_rod.eigensolver import (
-        LOOSE_DEGREE,
-        LOOSE_RTOL,
         lowest_eigenpair,
         modal_family,
         pencil_rayleigh_quotient,
     )
+    from spectral_rod.straight_rod.tuning import LOOSE_DEGREE, LOOSE_RTOL
 
     rng = np.random.default_rng(5)
     worst = {}

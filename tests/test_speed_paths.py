@@ -216,7 +216,7 @@ def _plan_cost(n, solved_at):
 @given(st.lists(st.integers(4, 40).map(lambda k: 2 * k), min_size=1, max_size=600))
 def test_pooled_degrees_never_lower_and_never_costlier(degrees):
     from spectral_rod.straight_rod.collocation import solve_degrees
-    from spectral_rod.straight_rod.few_points import LEAN_MAX_DEGREE
+    from spectral_rod.straight_rod.tuning import LEAN_MAX_DEGREE
 
     n = np.array(degrees)
     out = solve_degrees(n)

@@ -28,13 +28,11 @@ from spectral_rod.straight_rod import modal_kernel
 from spectral_rod.straight_rod.discretisation import family_operator
 from spectral_rod.straight_rod.eigensolver import (
     ISOLATION_GAP,
-    iteration_allowance,
-    iteration_rtol,
     lowest_gap,
     physical_eig,
     solve_family,
 )
-from spectral_rod.straight_rod.few_points import LEAN_MAX_DEGREE, solve_few
+from spectral_rod.straight_rod.few_points import solve_few
 from spectral_rod.straight_rod.resolution import (
     N_MAX,
     N_MIN,
@@ -44,11 +42,37 @@ from spectral_rod.straight_rod.resolution import (
     roundoff_floor,
     shortfall,
 )
+from spectral_rod.straight_rod.tuning import (
+    FEW_POINTS,
+    FIXED_COST,
+    LEAN_FACTOR,
+    LEAN_MAX_DEGREE,
+    POINT_COST,
+    few_points_limit,
+    iteration_allowance,
+    iteration_rtol,
+)
 
-__all__ = ["CLOSE_REL", "FEW_POINTS", "N_MAX", "N_MIN", "SMALL_PART", "TIE_REL",
-           "CollocationResult", "collocation_critical_load", "collocation_family_load",
-           "collocation_mode_coefficients", "pick_family", "pick_family_scalar", "solve_cost",
-           "solve_degrees"]
+__all__ = [
+    "CLOSE_REL",
+    "FEW_POINTS",
+    "FIXED_COST",
+    "LEAN_FACTOR",
+    "N_MAX",
+    "N_MIN",
+    "POINT_COST",
+    "SMALL_PART",
+    "TIE_REL",
+    "CollocationResult",
+    "collocation_critical_load",
+    "collocation_family_load",
+    "collocation_mode_coefficients",
+    "few_points_limit",
+    "pick_family",
+    "pick_family_scalar",
+    "solve_cost",
+    "solve_degrees",
+]
 
 
 class CollocationResult(NamedTuple):
@@ -60,41 +84,8 @@ class CollocationResult(NamedTuple):
     family: NDArray[np.int_]
 
 
-#: Up to FEW_POINTS points of one degree n <= 30 the lean solver (:mod:`.few_points`) is used,
-#: above it the batched engine (:mod:`.eigensolver`); the lean solver's cost grows faster with n,
-#: so the limit falls as n^-3 above n = 30 (see :func:`few_points_limit`).
-FEW_POINTS = 12
-
-
-def few_points_limit(n: int) -> int:
-    """Most points of degree n handed to the few-point path (:mod:`.few_points`), none above
-    :data:`LEAN_MAX_DEGREE`. ``python tests/bench/kernel_range.py`` (2026-12-05, random Figure 1
-    points forced to degree n, tol 1e-12, few-point / batched us a point): with the kernel one
-    point at a time, n = 16: 7.7/14.6 at 24 points, 6.5/8.7 at 48; n = 22: 11.7/12.6 at 32,
-    10.8/9.9 at 48; n = 30: 22.3/27.7 at 16, 19.3/18.9 at 24; n = 40: 37.4/45.3 at 12,
-    36.8/34.4 at 16. Points of degree above ~30 mostly have |Omega(L)| > 20, where the
-    few-point path at tight tol is the dense pencils' (e.g. 124/116 at 6 points, n = 40, before
-    the kernel), hence the steeper fall above n = 30."""
-    if n > LEAN_MAX_DEGREE:
-        return 0
-    return FEW_POINTS if n <= 30 else max(4, int(FEW_POINTS * (30 / n) ** 3))
-
-
-#: The cost model of degree pooling (:func:`solve_degrees`), measured with ``_solve_points`` at
-#: 30 and 300 points of one degree (Omega up to 1.8 (n - 16), nu in [1.1, 10];
-#: ``test_pooling_cost_model`` in ``tests/bench``): a batched solve of both families costs
-#: FIXED_COST whatever its size plus POINT_COST (n/22)^2 a point; the lean solver has no fixed
-#: cost and costs LEAN_FACTOR times as much a point. With the C kernel (2026-12-05, four runs):
-#: 0.30-0.62 ms and 2.9-5.6 us (n/22)^2 at n = 16, 22, 36; with numpy's engine before it,
-#: 1.2-2.7 ms and 14-15 us (n/22)^2. Empirical constants: only their ratios decide. LEAN_FACTOR
-#: (and FEW_POINTS = 12) were set for the dense-pencil few-point path, ~8 times a batched point
-#: at n = 22; on the kernel the few-point path is ~3 times (``tests/bench/kernel_range.py``:
-#: e.g. 12-13 against 4 us (n = 22) a point), so both are conservative where it answers.
-FIXED_COST, POINT_COST, LEAN_FACTOR = 0.5e-3, 4.6e-6, 8.0
-
-
 def solve_cost(points: int, degree: int) -> float:
-    """Modelled seconds to solve `points` points of one degree (see FIXED_COST)."""
+    """Modelled seconds to solve `points` points of one degree (:data:`.tuning.FIXED_COST`)."""
     per_point = POINT_COST * (degree / 22.0) ** 2
     if points <= few_points_limit(degree):
         return LEAN_FACTOR * points * per_point

@@ -46,6 +46,19 @@ from spectral_rod.straight_rod.discretisation import (
 )
 from spectral_rod.straight_rod.resolution import mode_tails
 from spectral_rod.straight_rod.stacked_inverse import BACKWARD_TOL, stacked_inverse
+from spectral_rod.straight_rod.tuning import (
+    CALIBRATED_TOL,
+    KERNEL_MAX_SCHUR,
+    LONG_TWIST,
+    POWER_RTOL,
+    POWER_STEPS,
+    SMALL_BATCH,
+    SMALL_DEGREE,
+    first_check,
+    iteration_allowance,
+    iteration_rtol,
+    loose_quotient,
+)
 
 __all__ = ["CALIBRATED_TOL", "ISOLATION_GAP", "KERNEL_MAX_SCHUR", "ModalFamily", "ModalParts",
            "first_check", "iteration_allowance", "iteration_rtol", "kernel_families",
@@ -55,61 +68,6 @@ __all__ = ["CALIBRATED_TOL", "ISOLATION_GAP", "KERNEL_MAX_SCHUR", "ModalFamily",
 
 #: Eigenvalues with |Im| above this fraction of |lambda| are complex, i.e. not physical.
 IMAG_REL = 1.0e-8
-#: Inverse iteration: first-order error bound of lambda accepted (relative), step cap, and the
-#: step of the first convergence check (every 2 steps after it; a check costs about a step).
-POWER_RTOL, POWER_STEPS, FIRST_CHECK = 1.0e-15, 40, 6
-#: From this rtol on the iteration is checked from step LOOSE_FIRST_CHECK, and up to degree
-#: LOOSE_DEGREE the eigenvalue is the modal quotient w^T K z / w^T z instead of the pencil's:
-#: K's round-off (eps n^4 in its diagonal) puts that quotient within 4e-11 of the pencil's at
-#: n = 50 and 1.1e-10 at n = 64 (relative, largest at small Omega; random points, Omega(L) < 50,
-#: nu <= 100, converged vectors; tests/test_accuracy_control.py), <= 0.011 of such an rtol and
-#: inside iteration_allowance, and it saves the pencil quotient's cost. A first check at step 4
-#: rather than 2 saves the check that few points pass (measured 2026-12-02, Figure 1 batch, two
-#: interleaved runs: tol 1e-2 9.3-9.8 -> 8.0-8.2 ms, 1e-4 11.0-11.2 -> 9.3-9.9, 1e-6 12.1-12.2
-#: -> 10.6-11.2).
-LOOSE_RTOL, LOOSE_DEGREE, LOOSE_FIRST_CHECK = 1.0e-8, 64, 4
-#: Above this |Omega| the final Rayleigh quotient is accumulated in extended precision. Measured
-#: 2026-12-05 on 4,000 random points (Omega(L) in [5, 20), nu up to 100, numpy 2.4.6 and 1.23.2;
-#: ``python tests/bench/accuracy_at_tol.py``) against the characteristic equation: with the
-#: quotient in double the error reached 0.90-0.96 of the estimate's round-off part
-#: eps (32 + 0.3 Omega^2) at Omega(L) in [16, 20), 0.63-0.81 in [10, 16) and 0.44-0.49 in
-#: [5, 10); in extended precision at most 0.24. It was 20 until the degree was held to a tenth
-#: of tol (higher degrees, more round-off in double).
-LONG_TWIST = 10.0
-#: Up to this many points per degree and family, and degree, the full eig is cheaper than the
-#: iteration (measured: 0.13 vs 0.37 ms for one point at n = 20, about equal at n = 40-45).
-SMALL_BATCH, SMALL_DEGREE = 4, 40
-
-
-def iteration_rtol(tol: float) -> float:
-    """The accepted relative error of the eigenvalue iteration for a requested `tol`: 1 % of it
-    (negligible beside the discretisation error the estimate covers), at least POWER_RTOL."""
-    return max(0.01 * tol, POWER_RTOL)
-
-
-#: The tol at which the error model of :func:`.resolution.error_estimate` was calibrated (the
-#: default of :func:`spectral_rod.critical_load`): the iteration error at its iteration_rtol
-#: (1e-14) is inside the model's measured round-off part.
-CALIBRATED_TOL = 1e-12
-_CALIBRATED_RTOL = iteration_rtol(CALIBRATED_TOL)
-
-
-def iteration_allowance(tol: float) -> float:
-    """What the eigenvalue iteration may add to p*'s relative error beyond the calibrated error
-    model, for a requested `tol`: iteration_rtol(tol) less that of CALIBRATED_TOL (0 for
-    tol <= 1e-12; 0.01 tol - 1e-14 above). The collocation error estimate adds it.
-
-    The iteration stops where its first-order error bound is <= iteration_rtol(tol) (the loose
-    quotients of LOOSE_RTOL are inside it too). The tail alone does not see that error: at a
-    degree above the a priori one (pooled or forced) the tail part can be far below it
-    (measured 2026-12-02: at tol 1e-4, forced collocation at Omega(L) 55-82 pooled at n = 64,
-    errors up to 1.5e-8 against estimates of 2e-13 before this allowance;
-    ``tests/test_accuracy_control.py``).
-
-    >>> iteration_allowance(1e-12), round(iteration_allowance(1e-4), 12)
-    (0.0, 1e-06)
-    """
-    return max(0.0, iteration_rtol(tol) - _CALIBRATED_RTOL)
 
 
 def _modal_terms() -> tuple[tuple[int, int, int], tuple[int, int, int]]:
@@ -338,16 +296,6 @@ class _ShiftedModal:
         return self._assemble(u - self.b * (z_s @ self.g_se) * self.r_e, z_s)
 
 
-#: The C kernel (:mod:`.modal_kernel`) iterates where the Schur block has at most this many
-#: unknowns (degree n <= ~128); above, its unblocked loops lose to LAPACK's blocked ones
-#: (``python tests/bench/kernel_range.py``, 2026-12-05, random points, tol 1e-12, kernel / numpy
-#: time; two runs of the final kernel: n = 22 0.14-0.25, 40 0.20-0.25, 64 0.32-0.36, 100
-#: 0.46-0.49, 128 0.50-0.53, 144 0.51-0.52, 160 0.80-0.83, 256 1.20-1.28; before its
-#: workspace was aligned, 160 0.69-1.08, 256 1.19-1.66). The limit is kept where it was set;
-#: with the aligned workspace the kernel also wins at n = 160.
-KERNEL_MAX_SCHUR = 64
-
-
 def uses_kernel(k_s: int) -> bool:
     """Whether :func:`lowest_eigenpair` iterates by the C kernel at Schur block size k_s."""
     return k_s <= KERNEL_MAX_SCHUR and modal_kernel.available()
@@ -484,19 +432,6 @@ def _start_vector(k: int) -> NDArray[np.float64]:
     v /= np.linalg.norm(v)
     v.setflags(write=False)
     return v
-
-
-def loose_quotient(rtol: float, n: int) -> bool:
-    """Whether the eigenvalue is the modal quotient rather than the pencil's (LOOSE_RTOL and
-    LOOSE_DEGREE: the iteration's own quotient is accurate enough there)."""
-    return rtol >= LOOSE_RTOL and n <= LOOSE_DEGREE
-
-
-def first_check(rtol: float, ceiling: bool) -> int:
-    """The step of the iteration's first convergence test: FIRST_CHECK, LOOSE_FIRST_CHECK from
-    LOOSE_RTOL on, at most 4 where a ceiling may stop the iteration early."""
-    first = FIRST_CHECK if rtol < LOOSE_RTOL else LOOSE_FIRST_CHECK
-    return min(first, 4) if ceiling else first
 
 
 def pencil_rayleigh_quotient(op: FamilyOperator, twist: NDArray[np.float64],

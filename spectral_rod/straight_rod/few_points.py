@@ -76,31 +76,25 @@ from spectral_rod.families import CLOSE_REL, FAMILIES, SHIFT
 from spectral_rod.straight_rod import modal_kernel
 from spectral_rod.straight_rod.discretisation import INST1, family_operator, term_coefficients
 from spectral_rod.straight_rod.eigensolver import (
-    LONG_TWIST,
-    LOOSE_RTOL,
-    POWER_STEPS,
     _start_vector,
-    first_check,
     kernel_families,
-    loose_quotient,
     pencil_rayleigh_quotient,
 )
 from spectral_rod.straight_rod.resolution import tail_from_parts, tail_parts
 from spectral_rod.straight_rod.stacked_inverse import BACKWARD_TOL
+from spectral_rod.straight_rod.tuning import (
+    LEAN_MAX_DEGREE,
+    LONG_TWIST,
+    LOOSE_RTOL,
+    POWER_STEPS,
+    SQUARING_MAX,
+    first_check,
+    loose_quotient,
+    power_steps,
+)
 
 __all__ = ["LEAN_MAX_DEGREE", "SQUARING_MAX", "DensePencils", "dense_pencils", "solve_few",
            "solve_one"]
-
-#: Up to this size m the powers of M are taken by squaring (a few matrix products), above it by
-#: products with the vectors: a squaring costs ~m^3, a step ~m^2 but ~1 us of call overhead;
-#: measured at one to 24 points: faster from n = 30 on (e.g. 24 points at n = 30: 67 -> 43 us a
-#: point; one point at n = 44: 357 -> 309 us).
-SQUARING_MAX = 27
-#: Above this degree the batched engine answers even a single point: the lean solver's dense
-#: pencils cost ~336 (n - 1)^2 bytes each in its cache (88 MB at n = 512) and it is slower
-#: there (measured, 4 points: n = 56 234 vs 244 us a point; n = 128 6.6 vs 2.8 ms).
-LEAN_MAX_DEGREE = 64
-
 
 @dataclass(frozen=True)
 class DensePencils:
@@ -153,11 +147,6 @@ def _inverses(f_t: NDArray[np.float64]) -> NDArray[np.float64] | None:
         if info != 0:
             return None
     return np.swapaxes(flat, -1, -2).reshape(f_t.shape)
-
-
-def _steps(rtol: float) -> int:
-    """Power steps k: 8 (3 squarings) from the batched engine's LOOSE_RTOL on, else 16 (4)."""
-    return 8 if rtol >= LOOSE_RTOL else 16
 
 
 def _power_iterates(mat: NDArray[np.float64], start: NDArray[np.float64], steps: int
@@ -218,7 +207,7 @@ def _solve_pencils(dp: DensePencils, mats: NDArray[np.float64], rtol: float,
         return None
     with np.errstate(all="ignore"):  # overflow (a spurious eigenvalue at SHIFT): rejected later
         mat = f_inv @ dp.mass
-        x, u = _power_iterates(mat, dp.start, _steps(rtol))
+        x, u = _power_iterates(mat, dp.start, power_steps(rtol))
         x1 = mat @ x
         both = np.concatenate((x, x1), axis=-1)  # (..., m, 2)
         sums = np.concatenate((dp.start @ both, (u[..., None, :] @ both)[..., 0, :]), axis=-1)

@@ -229,9 +229,10 @@ def warn_if_missing() -> None:
     if _warned or available():
         return
     _warned = True
+    reason = _loaded()[1] or "not loaded"
     warnings.warn(
-        f"spectral_rod runs its numpy engine, 2-5 times slower than the C kernel: the kernel "
-        f"is {_loaded()[1]}. To get it, install a C compiler (e.g. gcc) and reinstall the "
+        f"spectral_rod runs its numpy engine, 2-5 times slower than the C kernel (the kernel "
+        f"is {reason}). To get it, install a C compiler (e.g. gcc) and reinstall the "
         f"package (pip install --force-reinstall --no-deps .), unset {DISABLE_ENV}; "
         f"spectral_rod.straight_rod.modal_kernel.engine_info() shows the engine",
         PerformanceWarning, stacklevel=3)
@@ -242,7 +243,8 @@ def _call(name: str, *args: Any) -> None:
     illegal argument (INFO < 0), MemoryError if it could not allocate its workspace."""
     lib = _library()
     if lib is None:
-        raise RuntimeError(f"the compiled kernel _modal_kernel is not used: {_loaded()[1]}")
+        raise RuntimeError("the compiled kernel _modal_kernel is not used: "
+                           f"{_loaded()[1] or 'not loaded'}")
     info = getattr(lib, name)(*(ctypes.byref(a) for a in args))
     if info < 0:
         raise ValueError(f"{name}: argument {-info} has an illegal value (_modal_kernel.h)")
@@ -331,7 +333,8 @@ def modal_points(families: ctypes.Array, coef: NDArray[np.float64], *, shift: fl
     lo = None if coef_lo is None else _c_array(coef_lo)
     lib = _library()
     if lib is None:
-        raise RuntimeError(f"the compiled kernel _modal_kernel is not used: {_loaded()[1]}")
+        raise RuntimeError("the compiled kernel _modal_kernel is not used: "
+                           f"{_loaded()[1] or 'not loaded'}")
     info = lib.modal_points(families, ctypes.byref(ModalPoints(p, terms, _ptr(coef), _ptr(lo))),
                             ctypes.byref(_control(shift, rtol, first, max_steps, backward_tol,
                                                   close_rel, loose)),

@@ -25,6 +25,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from spectral_rod.straight_rod.discretisation import FamilyOperator
+from spectral_rod.straight_rod.tuning import TRUNCATION_SHARE
 
 __all__ = ["ERR_LINEAR", "ERR_QUADRATIC", "N_MAX", "N_MIN", "ROUNDOFF_TWIST", "TRUNCATION_SHARE",
            "error_estimate", "error_estimate_scalar", "initial_degree", "initial_degree_scalar",
@@ -36,8 +37,6 @@ N_MIN, N_MAX = 8, 512
 EPS = float(np.finfo(float).eps)
 #: Error model of :func:`error_estimate` (calibrated against the mpmath reference).
 ERR_LINEAR, ERR_QUADRATIC, ROUNDOFF_BASE, ROUNDOFF_TWIST = 5.0e-4, 200.0, 32.0, 0.3
-#: The share of tol the degree holds the tail's part of the estimate to (module docstring).
-TRUNCATION_SHARE = 0.1
 #: The a priori degree's constants c0..c3 (:func:`initial_degree`; fitted, see there).
 DEGREE_FIT = (5.0, 0.4, 0.3, 1.0)
 

@@ -41,12 +41,10 @@ from functools import lru_cache
 import numpy as np
 from numpy.typing import NDArray
 
+from spectral_rod.straight_rod.tuning import BLOCK_ENTRIES
+
 __all__ = ["BACKWARD_TOL", "BLOCK_ENTRIES", "block_inverse", "stacked_inverse", "uses_blocks"]
 
-#: :func:`stacked_inverse` uses :func:`block_inverse` for stacks of at least this many matrix
-#: entries (count k^2), LAPACK below: the block recursion's cost is mostly numpy calls per
-#: stack, LAPACK's a call per matrix (the measured crossovers of the module docstring).
-BLOCK_ENTRIES = 25_000
 #: A block inverse X of S is accepted where |S (X v) - v| <= BACKWARD_TOL d |X v| (max norms,
 #: v a fixed probe vector, d the largest |diagonal entry| of S, which is <= |S|: the test is at
 #: least as strict as one relative to |S| |X v|): a backward error far above a pivoted LU's

@@ -1,0 +1,189 @@
+r"""Every speed threshold and cost-model constant of the collocation solver of Eq. ``inst1``, and
+the one map from a requested ``tol`` to the solver's settings (:func:`solver_settings`).
+
+These constants decide how fast an answer comes, not what it is: each engine returns the same
+eigenvalue to within the error estimate, and the tests hold that for every path. Each constant
+names the script that measures it; re-tuning for another machine is a run of those scripts and
+an edit of this module only.
+
+What ``tol`` sets (:func:`solver_settings`)
+--------------------------------------------
+* the tail target ``TRUNCATION_SHARE tol``: the degree holds the tail's part of the error
+  estimate to it (:func:`.resolution.initial_degree`, :func:`.resolution.shortfall`);
+* the iteration's ``rtol = max(0.01 tol, POWER_RTOL)``: the accepted first-order error bound of
+  the eigenvalue iteration (:func:`iteration_rtol`);
+* the ``allowance`` the iteration may add beyond the calibrated error model, ``rtol`` less the
+  ``rtol`` of CALIBRATED_TOL (:func:`iteration_allowance`), added to the error estimate;
+* the loose quotient: from ``rtol >= LOOSE_RTOL`` on and up to degree LOOSE_DEGREE the
+  eigenvalue is the modal quotient instead of the pencil's (:func:`loose_quotient`);
+* the first convergence check: step FIRST_CHECK, LOOSE_FIRST_CHECK from LOOSE_RTOL on, at most
+  4 where a ceiling may stop the iteration (:func:`first_check`);
+* the numpy engine's power steps for a few points: 8 from LOOSE_RTOL on, else 16
+  (:func:`power_steps`);
+* the extended-precision quotient: above |Omega| = LONG_TWIST unless the quotient is loose.
+
+>>> s = solver_settings(1e-4)
+>>> s.tail_target, round(s.iteration_rtol, 12), round(s.allowance, 12), s.loose_rtol, s.power_steps
+(1e-05, 1e-06, 1e-06, True, 8)
+>>> solver_settings(1e-12).allowance
+0.0
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+__all__ = ["BLOCK_ENTRIES", "CALIBRATED_TOL", "CHUNK", "FEW_POINTS", "FIRST_CHECK", "FIXED_COST",
+           "KERNEL_MAX_SCHUR", "LEAN_FACTOR", "LEAN_MAX_DEGREE", "LONG_TWIST", "LOOSE_DEGREE",
+           "LOOSE_FIRST_CHECK", "LOOSE_RTOL", "POINT_COST", "POWER_RTOL", "POWER_STEPS",
+           "SMALL_BATCH", "SMALL_DEGREE", "SQUARING_MAX", "TRUNCATION_SHARE", "SolverSettings",
+           "few_points_limit", "first_check", "iteration_allowance", "iteration_rtol",
+           "loose_quotient", "power_steps", "solver_settings"]
+
+# --- what tol sets -------------------------------------------------------------------------
+
+#: The share of tol the degree holds the tail's part of the estimate to: where the estimate
+#: lands just below tol the error itself can come close to it, so the tail is held to a tenth.
+#: ``python tests/bench/accuracy_at_tol.py`` measures what each tol delivers with it.
+TRUNCATION_SHARE = 0.1
+#: The eigenvalue iteration's smallest accepted first-order error bound (relative), its step
+#: cap, and the step of its first convergence check (then every 2 steps; a check costs about a
+#: step). ``python tests/bench/work_per_point.py`` prints the steps taken.
+POWER_RTOL, POWER_STEPS, FIRST_CHECK = 1.0e-15, 40, 6
+#: From this rtol on the iteration is checked from step LOOSE_FIRST_CHECK, and up to degree
+#: LOOSE_DEGREE the eigenvalue is the modal quotient w^T K z / w^T z instead of the pencil's:
+#: K's round-off (eps n^4 in its diagonal) puts that quotient within 1.1e-10 of the pencil's up
+#: to n = 64 (``tests/test_accuracy_control.py`` measures it), <= 0.011 of such an rtol and
+#: inside :func:`iteration_allowance`. The Figure 1 batch at tol 1e-2..1e-6 in
+#: ``python -m pytest -m bench -k tol_trade`` times the first check.
+LOOSE_RTOL, LOOSE_DEGREE, LOOSE_FIRST_CHECK = 1.0e-8, 64, 4
+#: Above this |Omega| the pencil's Rayleigh quotient is accumulated in extended precision (its
+#: Omega^2 terms cancel to ~lambda/Omega^2): in double the error reached 0.96 of the
+#: estimate's round-off part eps (32 + 0.3 Omega^2) at Omega(L) in [16, 20), in extended
+#: precision at most 0.24 (``python tests/bench/accuracy_at_tol.py``, against the
+#: characteristic equation).
+LONG_TWIST = 10.0
+#: The tol at which the error model of :func:`.resolution.error_estimate` was calibrated (the
+#: default of :func:`spectral_rod.critical_load`): the iteration error at its iteration_rtol
+#: (1e-14) is inside the model's measured round-off part.
+CALIBRATED_TOL = 1e-12
+
+
+def iteration_rtol(tol: float) -> float:
+    """The accepted relative error of the eigenvalue iteration for a requested `tol`: 1 % of it
+    (negligible beside the discretisation error the estimate covers), at least POWER_RTOL."""
+    return max(0.01 * tol, POWER_RTOL)
+
+
+_CALIBRATED_RTOL = iteration_rtol(CALIBRATED_TOL)
+
+
+def iteration_allowance(tol: float) -> float:
+    """What the eigenvalue iteration may add to p*'s relative error beyond the calibrated error
+    model, for a requested `tol`: iteration_rtol(tol) less that of CALIBRATED_TOL (0 for
+    tol <= 1e-12; 0.01 tol - 1e-14 above). The collocation error estimate adds it.
+
+    The iteration stops where its first-order error bound is <= iteration_rtol(tol) (the loose
+    quotients of LOOSE_RTOL are inside it too). The tail alone does not see that error: at a
+    degree above the a priori one (pooled or forced) the tail part can be far below it (at tol
+    1e-4, forced collocation at Omega(L) 55-82 pooled at n = 64: errors up to 1.5e-8 against
+    tail estimates of 2e-13; ``tests/test_accuracy_control.py`` holds the estimate with it).
+
+    >>> iteration_allowance(1e-12), round(iteration_allowance(1e-4), 12)
+    (0.0, 1e-06)
+    """
+    return max(0.0, iteration_rtol(tol) - _CALIBRATED_RTOL)
+
+
+def loose_quotient(rtol: float, n: int) -> bool:
+    """Whether the eigenvalue is the modal quotient rather than the pencil's (LOOSE_RTOL and
+    LOOSE_DEGREE: the iteration's own quotient is accurate enough there)."""
+    return rtol >= LOOSE_RTOL and n <= LOOSE_DEGREE
+
+
+def first_check(rtol: float, ceiling: bool) -> int:
+    """The step of the iteration's first convergence test: FIRST_CHECK, LOOSE_FIRST_CHECK from
+    LOOSE_RTOL on, at most 4 where a ceiling may stop the iteration early."""
+    first = FIRST_CHECK if rtol < LOOSE_RTOL else LOOSE_FIRST_CHECK
+    return min(first, 4) if ceiling else first
+
+
+def power_steps(rtol: float) -> int:
+    """Power steps k of the numpy engine's dense pencils for a few points
+    (:mod:`.few_points`): 8 (3 squarings) from LOOSE_RTOL on, else 16 (4)."""
+    return 8 if rtol >= LOOSE_RTOL else 16
+
+
+class SolverSettings(NamedTuple):
+    """What a requested tol sets (module docstring): the tail target, the iteration's rtol, the
+    allowance added to the error estimate, whether the modal quotient is accepted (up to
+    LOOSE_DEGREE), the first check's step, and the dense pencils' power steps."""
+
+    tail_target: float
+    iteration_rtol: float
+    allowance: float
+    loose_rtol: bool
+    first_check: int
+    power_steps: int
+
+
+def solver_settings(tol: float) -> SolverSettings:
+    """Every setting of the collocation solver that follows from `tol` (module docstring)."""
+    rtol = iteration_rtol(tol)
+    return SolverSettings(TRUNCATION_SHARE * tol, rtol, iteration_allowance(tol),
+                          rtol >= LOOSE_RTOL, first_check(rtol, False), power_steps(rtol))
+
+
+# --- which engine answers a call shape -------------------------------------------------------
+
+#: The C kernel iterates where the Schur block has at most this many unknowns (degree
+#: n <= ~128); above, its unblocked loops lose to LAPACK's blocked ones (kernel / numpy time
+#: 0.50 at n = 128, 0.8 at 160, 1.2 at 256). ``python tests/bench/kernel_range.py``, part 1.
+KERNEL_MAX_SCHUR = 64
+#: Up to SMALL_BATCH points per degree and family, and degree SMALL_DEGREE, the batched solve
+#: of a family is the full ``eig`` (the iteration's fixed cost is larger there: 0.13 against
+#: 0.37 ms for one point at n = 20, about equal at n = 40-45). Reached only by points the
+#: few-point path hands back. ``python tests/bench/kernel_range.py`` measures the crossover.
+SMALL_BATCH, SMALL_DEGREE = 4, 40
+#: Up to FEW_POINTS points of one degree n <= 30 the few-point path (:mod:`.few_points`) is
+#: used, above it the batched engine; its cost grows faster with n, so the limit falls as n^-3
+#: above n = 30 (:func:`few_points_limit`). ``python tests/bench/kernel_range.py``, part 2.
+FEW_POINTS = 12
+#: Above this degree the batched engine answers even a single point: the dense pencils of the
+#: few-point numpy path cost ~336 (n - 1)^2 bytes each in its cache (88 MB at n = 512) and are
+#: slower there (4 points: n = 56 about equal, n = 128 2.4 times slower).
+#: ``python tests/bench/kernel_range.py``, part 2.
+LEAN_MAX_DEGREE = 64
+#: Up to this size m the numpy few-point path takes the powers of M by squaring (a few matrix
+#: products), above it by products with the vectors: a squaring costs ~m^3, a step ~m^2 but
+#: ~1 us of call overhead (faster from n = 30 on). ``python tests/bench/alternatives.py``.
+SQUARING_MAX = 27
+#: The cost model of degree pooling (:func:`.collocation.solve_degrees`): a batched solve of
+#: both families costs FIXED_COST seconds whatever its size plus POINT_COST (n/22)^2 a point;
+#: the few-point path has no fixed cost and costs LEAN_FACTOR times as much a point. Only the
+#: ratios decide. ``python -m pytest -m bench -k pooling_cost_model`` measures the first two
+#: (with the kernel 0.30-0.62 ms and 2.9-5.6 us); LEAN_FACTOR is the dense pencils' ratio
+#: (~8), conservative for the kernel's one-lane path (~3, ``tests/bench/kernel_range.py``).
+FIXED_COST, POINT_COST, LEAN_FACTOR = 0.5e-3, 4.6e-6, 8.0
+#: :func:`.stacked_inverse.stacked_inverse` (the numpy engine's Schur inverses) uses the block
+#: recursion for stacks of at least this many matrix entries (count k^2), LAPACK below: the
+#: recursion's cost is mostly numpy calls per stack, LAPACK's a call per matrix.
+#: ``tests/test_stacked_inverse.py`` checks the accuracy; ``python tests/bench/alternatives.py``
+#: times the two.
+BLOCK_ENTRIES = 25_000
+#: Points :func:`spectral_rod.critical_load` solves together at most: bounds the memory of a
+#: large call (the batched engine holds ~k^2 doubles per point and family, the large-twist scan
+#: ~20 grid columns of 257 doubles per point); ``tests/test_safety.py`` measures the peak.
+CHUNK = 1 << 12
+
+
+def few_points_limit(n: int) -> int:
+    """Most points of degree n handed to the few-point path (:mod:`.few_points`), none above
+    :data:`LEAN_MAX_DEGREE`: FEW_POINTS up to n = 30, falling as n^-3 above (at least 4).
+
+    >>> few_points_limit(22), few_points_limit(40), few_points_limit(66)
+    (12, 5, 0)
+    """
+    if n > LEAN_MAX_DEGREE:
+        return 0
+    return FEW_POINTS if n <= 30 else max(4, int(FEW_POINTS * (30 / n) ** 3))
