@@ -15,7 +15,6 @@ flagged and warned about) both end inside the bounds.
 from __future__ import annotations
 
 import importlib
-import math
 import warnings
 from typing import NamedTuple
 
@@ -36,21 +35,9 @@ from spectral_rod.errors import ConvergenceWarning
 from spectral_rod.families import FAMILIES, FAMILY_DTYPE
 from spectral_rod.results import CriticalLoad, as_output
 from spectral_rod.router import METHOD_DTYPE, ROD_METHODS, check_route, route, route_point
-from spectral_rod.straight_rod import N_MAX, collocation_critical_load
-from spectral_rod.straight_rod.collocation import pick_family_scalar
-from spectral_rod.straight_rod.few_points import solve_one
-from spectral_rod.straight_rod.resolution import (
-    error_estimate_scalar,
-    initial_degree_scalar,
-    raised_degree,
-    shortfall_scalar,
-)
-from spectral_rod.straight_rod.tuning import (
-    CHUNK,
-    LEAN_MAX_DEGREE,
-    iteration_allowance,
-    iteration_rtol,
-)
+from spectral_rod.straight_rod import collocation_critical_load
+from spectral_rod.straight_rod.collocation import collocation_point
+from spectral_rod.straight_rod.tuning import CHUNK
 
 __all__ = ["critical_load"]
 
@@ -58,18 +45,24 @@ _EPS = float(np.finfo(float).eps)
 
 
 class PointResults(NamedTuple):
-    """Flat arrays per point: p*, method, resolution, error estimate, family name."""
+    """Flat arrays per point: p*, method, resolution, error estimate, family name, engine
+    (collocation's "kernel" or "numpy", else the method's name)."""
 
     p_star: NDArray[np.float64]
     method: NDArray[np.str_]
     n: NDArray[np.int_]
     error_estimate: NDArray[np.float64]
     family: NDArray[np.str_]
+    engine: NDArray[np.str_]
+
+
+#: dtype of the engine names: "kernel", "numpy" or a method of :data:`ROD_METHODS`.
+ENGINE_DTYPE = f"<U{max(map(len, ('kernel', 'numpy', *ROD_METHODS)))}"
 
 
 def _collocation(tw, nv, n, tol):
     r = collocation_critical_load(tw, nv, n=n, tol=tol)
-    return r.p_star, r.n, r.error_estimate, np.asarray(FAMILIES)[r.family]
+    return r.p_star, r.n, r.error_estimate, np.asarray(FAMILIES)[r.family], r.engine
 
 
 def _characteristic(tw, nv, n, tol):
@@ -116,6 +109,7 @@ def solve_points(tw: NDArray[np.float64], nv: NDArray[np.float64], methods: NDAr
         return PointResults(*(np.concatenate(v) for v in zip(*parts, strict=True)))
     p, deg, err = np.empty(tw.size), np.zeros(tw.size, dtype=int), np.empty(tw.size)
     fam = np.empty(tw.size, dtype=FAMILY_DTYPE)
+    engine = methods.astype(ENGINE_DTYPE)  # a route other than collocation is its own engine
     # the methods present (np.unique on strings sorts: 0.17 ms for Figure 1's 1,201 points)
     names = [name for name in ROD_METHODS if np.any(methods == name)]
     for name in names:
@@ -123,8 +117,11 @@ def solve_points(tw: NDArray[np.float64], nv: NDArray[np.float64], methods: NDAr
     with one_blas_thread():
         for name in names:
             idx = np.flatnonzero(methods == name)
-            p[idx], deg[idx], err[idx], fam[idx] = _SOLVERS[name](tw[idx], nv[idx], n, tol)
-    return PointResults(p, methods, deg, err, fam)
+            out = _SOLVERS[name](tw[idx], nv[idx], n, tol)
+            p[idx], deg[idx], err[idx], fam[idx] = out[:4]
+            if len(out) > 4:
+                engine[idx] = out[4]
+    return PointResults(p, methods, deg, err, fam, engine)
 
 
 def apply_bounds(res: PointResults, nv: NDArray[np.float64]) -> None:
@@ -191,32 +188,14 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
         return _one_characteristic(om, nv, tol, full_output)
     if chosen != "collocation":
         return None
-    deg = initial_degree_scalar(om, tol)
-    if error_estimate_scalar(0.0, om) >= tol:
-        return None  # tol below the round-off floor: unconverged, the general path flags it
-    rtol, allowance = iteration_rtol(tol), iteration_allowance(tol)
-    while True:  # the degree loop of collocation_critical_load, for one point
-        if deg > LEAN_MAX_DEGREE:
-            return None
-        # no BLAS thread limit here: the lean solver's matrices (m < 100) are below
-        # OpenBLAS's threading thresholds, and the limit would cost 4 us of a ~60 us call
-        lam, tails, ok = solve_one(deg, om, nv, rtol)
-        if not ok:
-            return None
-        best, tail = pick_family_scalar(lam, tails)
-        short = shortfall_scalar(tail, tol)
-        if short <= 1.0:
-            break
-        if deg >= N_MAX:
-            return None  # unconverged: the general path warns and flags it
-        deg = int(raised_degree(deg, short))
-    err = error_estimate_scalar(tail, om) + allowance
-    if err > tol:
-        return None  # unconverged (round-off with the allowance): the general path flags it
-    p, err = bounded_point(lam[best] / math.pi**2, err, nv)
+    point = collocation_point(om, nv, tol)
+    if point is None:
+        return None
+    p, err = bounded_point(point.p_star, point.error_estimate, nv)
     if not full_output:
         return p
-    return CriticalLoad(p, "collocation", deg, err, FAMILIES[best], converged=True, tol=tol)
+    return CriticalLoad(p, "collocation", point.n, err, FAMILIES[point.family], converged=True,
+                        tol=tol, engine=point.engine)
 
 
 def _one_characteristic(om: float, nv: float, tol: float, full_output: bool):
@@ -234,7 +213,8 @@ def _one_characteristic(om: float, nv: float, tol: float, full_output: bool):
     p, _ = bounded_point(p, err, nv)
     if not full_output:
         return p
-    return CriticalLoad(p, "characteristic", 0, err, family, converged=True, tol=tol)
+    return CriticalLoad(p, "characteristic", 0, err, family, converged=True, tol=tol,
+                        engine="characteristic")
 
 
 def _one_element(twist_angle: object, nu: object, n: object, tol: object, method: object,
@@ -261,8 +241,9 @@ def _one_element(twist_angle: object, nu: object, n: object, tol: object, method
         return as_output(np.array([one]), shape)
     fields = [as_output(np.array([value], dtype=dtype), shape) for value, dtype in (
         (one.p_star, np.float64), (one.method, METHOD_DTYPE), (one.n, int),
-        (one.error_estimate, np.float64), (one.family, FAMILY_DTYPE), (True, bool))]
-    return CriticalLoad(*fields[:5], converged=fields[5], tol=one.tol)
+        (one.error_estimate, np.float64), (one.family, FAMILY_DTYPE), (True, bool),
+        (one.engine, ENGINE_DTYPE))]
+    return CriticalLoad(*fields[:5], converged=fields[5], tol=one.tol, engine=fields[6])
 
 
 def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None,
@@ -335,4 +316,5 @@ def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None
         return as_output(res.p_star, shape)
     return CriticalLoad(*(as_output(v, shape) for v in (res.p_star, res.method, res.n,
                                                           res.error_estimate, res.family)),
-                        converged=as_output(converged, shape), tol=tol)
+                        converged=as_output(converged, shape), tol=tol,
+                        engine=as_output(res.engine, shape))

@@ -45,7 +45,9 @@ class CriticalLoad(_ShortRepr):
     increment, Legendre degree for Rayleigh-Ritz, 0 for the characteristic equation, which has no
     discretisation); error_estimate: estimated relative error of p_star (each method's error
     model, see its module); family: 'symmetric' (omega1 even about the mid-point) or
-    'antisymmetric'; converged: error_estimate <= tol; tol: the requested tolerance.
+    'antisymmetric'; converged: error_estimate <= tol; tol: the requested tolerance; engine:
+    what computed it, "kernel" (the C kernel) or "numpy" (its numpy reference) for collocation,
+    the method's name for the other methods (None where a caller did not record it).
     """
 
     p_star: Any
@@ -55,6 +57,7 @@ class CriticalLoad(_ShortRepr):
     family: Any
     converged: Any
     tol: float
+    engine: Any = None
 
 
 @dataclass(frozen=True, repr=False)

@@ -130,3 +130,62 @@ def test_the_performance_warning_is_silenceable(monkeypatch):
     with pytest.warns(PerformanceWarning):
         modal_kernel.warn_if_missing()
     assert issubclass(PerformanceWarning, UserWarning)
+
+
+# --- which engine ran: CriticalLoad.engine -----------------------------------------------------
+
+def _figure1_sample():
+    from spectral_rod import load_figure1
+
+    d = load_figure1()
+    return d["twist_angle"].to_numpy()[::11], d["nu"].to_numpy()[::11]
+
+
+@needs_kernel
+def test_full_output_names_the_kernel_where_it_ran():
+    from spectral_rod import critical_load
+
+    twist, nu = _figure1_sample()
+    res = critical_load(twist, nu, full_output=True)
+    assert set(res.engine.tolist()) == {"kernel"}
+    one = critical_load(float(twist[3]), float(nu[3]), full_output=True)  # the scalar path
+    assert one.engine == "kernel"
+    # above the kernel's range (Schur block > KERNEL_MAX_SCHUR) numpy iterates: the record moves
+    forced = critical_load(twist[:20], nu[:20], n=200, full_output=True)
+    assert set(forced.engine.tolist()) == {"numpy"}
+
+
+def test_full_output_names_numpy_without_the_kernel(monkeypatch):
+    from spectral_rod import critical_load
+
+    monkeypatch.setattr(modal_kernel, "_library", lambda: None)
+    monkeypatch.setattr(modal_kernel, "_warned", True)  # the warning has its own test
+    twist, nu = _figure1_sample()
+    assert set(critical_load(twist, nu, full_output=True).engine.tolist()) == {"numpy"}
+    assert critical_load(3.0, 1.5, full_output=True).engine == "numpy"
+
+
+@needs_kernel
+def test_points_the_kernel_rejects_are_recorded_as_numpy(monkeypatch):
+    from spectral_rod.straight_rod.collocation import collocation_critical_load
+
+    twist, nu = _figure1_sample()
+    real = modal_kernel.modal_lowest
+
+    def reject_some(*args, **kwargs):
+        res = real(*args, **kwargs)
+        res.status[::3] = modal_kernel.REJECTED
+        return res
+
+    clean = collocation_critical_load(twist, nu)
+    monkeypatch.setattr(modal_kernel, "modal_lowest", reject_some)
+    res = collocation_critical_load(twist, nu)
+    assert (res.engine == "numpy").any() and (res.engine == "kernel").any()
+    assert np.max(np.abs(res.p_star / clean.p_star - 1)) <= 1e-14
+
+
+def test_other_routes_name_their_method():
+    from spectral_rod import critical_load
+
+    res = critical_load(np.array([300.0, 3.0]), 1.5, full_output=True)
+    assert res.engine.tolist()[0] == res.method.tolist()[0] == "characteristic"

@@ -107,7 +107,7 @@ def test_one_element_arrays_outside_the_scalar_path_take_the_general_path():
 def test_scalar_path_does_not_solve_below_the_round_off_floor(monkeypatch, reference):
     # tol under the floor eps (32 + 0.3 Omega^2) cannot be met: the scalar path must hand the
     # point to the general path before solving (it solved twice), which warns and flags it
-    import spectral_rod.critical as critical
+    import spectral_rod.straight_rod.collocation as collocation
 
     with pytest.warns(ConvergenceWarning):
         array = critical_load(np.array([45.0]), 1.5, tol=1e-14, full_output=True)
@@ -115,7 +115,7 @@ def test_scalar_path_does_not_solve_below_the_round_off_floor(monkeypatch, refer
     def _must_not_run(*args, **kwargs):
         raise AssertionError("the scalar path solved a point whose tol is below the floor")
 
-    monkeypatch.setattr(critical, "solve_one", _must_not_run)
+    monkeypatch.setattr(collocation, "solve_one", _must_not_run)
     with pytest.warns(ConvergenceWarning, match="tol=1e-14 not met"):
         res = critical_load(45.0, 1.5, tol=1e-14, full_output=True)
     assert not res.converged and res.error_estimate > 1e-14

@@ -32,15 +32,18 @@ from spectral_rod.straight_rod.eigensolver import (
     physical_eig,
     solve_family,
 )
-from spectral_rod.straight_rod.few_points import solve_few
+from spectral_rod.straight_rod.few_points import solve_few, solve_one
 from spectral_rod.straight_rod.resolution import (
     N_MAX,
     N_MIN,
     error_estimate,
+    error_estimate_scalar,
     initial_degree,
+    initial_degree_scalar,
     raised_degree,
     roundoff_floor,
     shortfall,
+    shortfall_scalar,
 )
 from spectral_rod.straight_rod.tuning import (
     FEW_POINTS,
@@ -67,6 +70,7 @@ __all__ = [
     "collocation_critical_load",
     "collocation_family_load",
     "collocation_mode_coefficients",
+    "collocation_point",
     "few_points_limit",
     "pick_family",
     "pick_family_scalar",
@@ -76,12 +80,19 @@ __all__ = [
 
 
 class CollocationResult(NamedTuple):
-    """Flat arrays per point: p*, degree n, error estimate, family index (0 symmetric)."""
+    """Flat arrays per point: p*, degree n, error estimate, family index (0 symmetric), and the
+    engine that computed it ("kernel" where the C kernel computed both families' results,
+    else "numpy")."""
 
     p_star: NDArray[np.float64]
     n: NDArray[np.int_]
     error_estimate: NDArray[np.float64]
     family: NDArray[np.int_]
+    engine: NDArray[np.str_]
+
+
+#: The engines' names (:data:`CollocationResult.engine`).
+ENGINES = ("kernel", "numpy")
 
 
 def solve_cost(points: int, degree: int) -> float:
@@ -120,13 +131,15 @@ def solve_degrees(n: NDArray[np.int_]) -> NDArray[np.int_]:
 
 
 def _solve_points(twist: NDArray[np.float64], nu: NDArray[np.float64], n: NDArray[np.int_],
-                  tol: float = 1e-12):
+                  tol: float = 1e-12, by_kernel: NDArray[np.bool_] | None = None):
     """p*, family index and tail for flat arrays of points at the given degrees.
 
     Per degree: up to :func:`few_points_limit` points by the lean solver (both families, dense LU
     and matrix powers), more by the batched engine: the symmetric family first, the
     antisymmetric one then only resolved where it is not clearly above (1 + CLOSE_REL times) the
     symmetric eigenvalue. Points the lean solver does not accept go to the batched engine.
+    ``by_kernel`` (bool, one per point), if given, is set True where the C kernel computed both
+    families' results.
 
     The two families are iterated one after the other. Iterating both in one stacked pass (half
     the numpy calls) was measured slower (2026-12-02, four interleaved runs against this code:
@@ -138,21 +151,73 @@ def _solve_points(twist: NDArray[np.float64], nu: NDArray[np.float64], n: NDArra
     fam = np.empty(twist.size, dtype=int)
     tails = np.empty(twist.size)
     rtol = iteration_rtol(tol)
+    kernel = modal_kernel.available()
     for deg in np.unique(n):
         sel = np.flatnonzero(n == deg)
         if sel.size <= few_points_limit(int(deg)):
             lam, tl, ok = solve_few(int(deg), twist[sel], nu[sel], rtol)
             p[sel], fam[sel], tails[sel] = pick_family(lam, tl)
+            if by_kernel is not None:
+                by_kernel[sel] = kernel
             sel = sel[~ok]
             if not sel.size:
                 continue
         lam = np.empty((2, sel.size))
         tl = np.empty((2, sel.size))
-        lam[0], tl[0], _ = solve_family(int(deg), FAMILIES[0], twist[sel], nu[sel], rtol=rtol)
+        used = np.empty((2, sel.size), dtype=bool)
+        lam[0], tl[0], _ = solve_family(int(deg), FAMILIES[0], twist[sel], nu[sel], rtol=rtol,
+                                        kernel_out=used[0])
         lam[1], tl[1], _ = solve_family(int(deg), FAMILIES[1], twist[sel], nu[sel], rtol=rtol,
-                                        ceiling=lam[0] * (1 + CLOSE_REL))
+                                        ceiling=lam[0] * (1 + CLOSE_REL), kernel_out=used[1])
         p[sel], fam[sel], tails[sel] = pick_family(lam, tl)
+        if by_kernel is not None:
+            by_kernel[sel] = used.all(axis=0)
     return p, fam, tails
+
+
+class PointResult(NamedTuple):
+    """One point's :class:`CollocationResult` in Python scalars."""
+
+    p_star: float
+    n: int
+    error_estimate: float
+    family: int
+    engine: str
+
+
+def collocation_point(twist: float, nu: float, tol: float) -> PointResult | None:
+    """The driver's lean path: :func:`collocation_critical_load` for one point given as Python
+    floats (validated; |Omega|) by the same degree loop and rules in Python floats, without a
+    batch's array bookkeeping (a scalar call's cost is mostly numpy's per-call overhead);
+    ``tests/test_speed_paths.py`` checks that both answer alike.
+
+    None wherever the array path must answer: tol below the round-off floor, a degree above
+    :data:`.tuning.LEAN_MAX_DEGREE`, a point the lean solver does not accept, or an estimate
+    that misses tol (the array path then flags and warns).
+    """
+    deg = initial_degree_scalar(twist, tol)
+    if error_estimate_scalar(0.0, twist) >= tol:
+        return None  # tol below the round-off floor: unconverged, the array path flags it
+    rtol, allowance = iteration_rtol(tol), iteration_allowance(tol)
+    while True:  # the degree loop of _collocation_critical_load, for one point
+        if deg > LEAN_MAX_DEGREE:
+            return None
+        # no BLAS thread limit here: the lean solver's matrices (m < 100) are below
+        # OpenBLAS's threading thresholds, and the limit costs more than they do
+        lam, tails, ok = solve_one(deg, twist, nu, rtol)
+        if not ok:
+            return None
+        best, tail = pick_family_scalar(lam, tails)
+        short = shortfall_scalar(tail, tol)
+        if short <= 1.0:
+            break
+        if deg >= N_MAX:
+            return None  # unconverged: the array path warns and flags it
+        deg = int(raised_degree(deg, short))
+    err = error_estimate_scalar(tail, twist) + allowance
+    if err > tol:
+        return None  # unconverged (round-off with the allowance): the array path flags it
+    return PointResult(lam[best] / math.pi**2, deg, err, best, modal_kernel.engine_name())
 
 
 def pick_family(lam: NDArray[np.float64], tails: NDArray[np.float64]
@@ -201,22 +266,33 @@ def collocation_critical_load(twist: NDArray[np.float64], nu: NDArray[np.float64
 def _collocation_critical_load(tw: NDArray[np.float64], nu: NDArray[np.float64],
                                n: int | None, tol: float) -> CollocationResult:
     allowance = iteration_allowance(tol)  # the eigenvalue iteration's share beyond the model
+    by_kernel = np.zeros(tw.size, dtype=bool)
     if n is not None:
         deg = np.full(tw.size, int(n))
-        p, fam, tails = _solve_points(tw, nu, deg, tol)
-        return CollocationResult(p, deg, error_estimate(tails, tw) + allowance, fam)
+        p, fam, tails = _solve_points(tw, nu, deg, tol, by_kernel)
+        return CollocationResult(p, deg, error_estimate(tails, tw) + allowance, fam,
+                                 _engine_names(by_kernel))
     deg = solve_degrees(initial_degree(tw, tol))
-    p, fam, tails = _solve_points(tw, nu, deg, tol)
+    p, fam, tails = _solve_points(tw, nu, deg, tol, by_kernel)
     # raise the degree where the tail's part of the estimate misses its share of tol, unless
     # round-off alone decides
     short = shortfall(tails, tol)
     todo = np.flatnonzero((short > 1.0) & (deg < N_MAX) & (roundoff_floor(tw) < tol))
     while todo.size:
         deg[todo] = raised_degree(deg[todo], short[todo])
-        p[todo], fam[todo], tails[todo] = _solve_points(tw[todo], nu[todo], deg[todo], tol)
+        used = np.zeros(todo.size, dtype=bool)
+        p[todo], fam[todo], tails[todo] = _solve_points(tw[todo], nu[todo], deg[todo], tol,
+                                                        used)
+        by_kernel[todo] = used
         short[todo] = shortfall(tails[todo], tol)
         todo = todo[(short[todo] > 1.0) & (deg[todo] < N_MAX)]
-    return CollocationResult(p, deg, error_estimate(tails, tw) + allowance, fam)
+    return CollocationResult(p, deg, error_estimate(tails, tw) + allowance, fam,
+                             _engine_names(by_kernel))
+
+
+def _engine_names(by_kernel: NDArray[np.bool_]) -> NDArray[np.str_]:
+    """ "kernel" where True, "numpy" where False."""
+    return np.where(by_kernel, ENGINES[0], ENGINES[1])
 
 
 def collocation_family_load(twist_angle: float, nu: float, family: str, n: int) -> float:

@@ -313,7 +313,7 @@ def _unit_rows(v: NDArray[np.float64]) -> NDArray[np.float64]:
 
 def lowest_eigenpair(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np.float64],
                      rtol: float = POWER_RTOL, ceiling: NDArray[np.float64] | None = None,
-                     max_steps: int = POWER_STEPS
+                     max_steps: int = POWER_STEPS, kernel_out: NDArray[np.bool_] | None = None
                      ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64],
                                 NDArray[np.bool_], NDArray[np.bool_]]:
     """Eigenvalue lambda of K nearest above SHIFT = 0.95 pi^2, its right and left eigenvectors
@@ -356,7 +356,10 @@ def lowest_eigenpair(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np
     pt = modal_parts(mf, twist, nu)
     start = _start_vector(mf.lam1.size + mf.lam2.size)
     first = first_check(rtol, ceiling is not None)
-    if not uses_kernel(pt.d_s.shape[1]):
+    by_kernel = uses_kernel(pt.d_s.shape[1])
+    if kernel_out is not None:
+        kernel_out[:] = by_kernel
+    if not by_kernel:
         return _iterate(_ShiftedModal.from_parts(mf, pt), start, rtol, ceiling, first,
                         max_steps)
     res = modal_kernel.modal_lowest(pt.r_e, pt.a, pt.b, pt.d_s, pt.g_es, pt.g_se,
@@ -371,6 +374,8 @@ def lowest_eigenpair(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np
     ok, above = res.status == modal_kernel.CONVERGED, res.status == modal_kernel.ABOVE
     rejected = np.flatnonzero(res.status == modal_kernel.REJECTED)
     if rejected.size:  # the numpy iteration, with LAPACK's pivoted inverse where needed
+        if kernel_out is not None:
+            kernel_out[rejected] = False
         sub = _iterate(_ShiftedModal.from_parts(mf, pt.take(rejected)), start, rtol,
                        None if ceiling is None else ceiling[rejected], first, max_steps)
         lam[rejected], vec[rejected], left[rejected], ok[rejected], above[rejected] = sub
@@ -535,7 +540,8 @@ def kernel_families(n: int) -> tuple[ctypes.Array, tuple]:
 
 
 def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np.float64],
-                 *, rtol: float = POWER_RTOL, ceiling: NDArray[np.float64] | None = None
+                 *, rtol: float = POWER_RTOL, ceiling: NDArray[np.float64] | None = None,
+                 kernel_out: NDArray[np.bool_] | None = None
                  ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
     """Lowest physical lambda = pi^2 p, its mode's coefficient tail, and the eigenvectors
     (coefficients c of :class:`FamilyOperator`), for arrays of points at degree n.
@@ -549,15 +555,21 @@ def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np
     shown to lie above ``ceiling`` (e.g. the other family's) stop early: their lambda and mode
     are then only approximate (lambda above ``ceiling``) and their tail is not computed (inf),
     as no caller uses either. Returns
-    lambda = inf where no eigenvalue passes the rule.
+    lambda = inf where no eigenvalue passes the rule. ``kernel_out`` (bool, one per point), if
+    given, is set True where the C kernel computed the result, False where numpy did.
     """
+    if kernel_out is not None:
+        kernel_out[:] = False
     if twist.size <= SMALL_BATCH and n <= SMALL_DEGREE:  # the full eig is cheaper here
         return solve_family_eig(n, family, twist, nu)
     mf = modal_family(n, family)
     op = mf.op
     try:
-        lam, z, w, ok, above = lowest_eigenpair(mf, twist, nu, rtol=rtol, ceiling=ceiling)
+        lam, z, w, ok, above = lowest_eigenpair(mf, twist, nu, rtol=rtol, ceiling=ceiling,
+                                                kernel_out=kernel_out)
     except np.linalg.LinAlgError:  # SHIFT an eigenvalue of some point (spurious): the rule
+        if kernel_out is not None:
+            kernel_out[:] = False
         return solve_family_eig(n, family, twist, nu)
     vec = mf.right_vectors(z)
     # the eigenvalue from the O(1) pencil itself: the two-sided Rayleigh quotient (its error is
@@ -571,6 +583,8 @@ def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np
     resolved = np.flatnonzero(~above & np.isfinite(lam) & (ok | above))
     tails[resolved] = mode_tails(op, vec[resolved])
     if bad.size:  # the full eig with the rule decides
+        if kernel_out is not None:
+            kernel_out[bad] = False
         lam[bad], tails[bad], vec[bad] = solve_family_eig(n, family, twist[bad], nu[bad])
     return lam, tails, vec
 
