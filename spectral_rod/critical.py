@@ -165,12 +165,9 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
     floats on the collocation or the large-twist route, or None wherever the general path must
     answer (any other input, the increment route, a forced degree, a point the lean solver does
     not accept or whose estimate misses tol). The computation is the general path's for one
-    point, without its array bookkeeping: collocation calls
-    :func:`spectral_rod.straight_rod.few_points.solve_one` with Python floats (measured
-    2026-12-05 by the benchmarks: 26.4-26.5 us a scalar call in a loop over Figure 1's points
-    where it runs on the C kernel, 58-60 us by the dense pencils; 2026-12-02: 210 us a one-point
-    array call by the general path), the large-twist route :func:`_one_characteristic`;
-    `python -m pytest -m bench` measures both scalar loops."""
+    point, without its array bookkeeping: collocation by the driver's one-point path
+    (:func:`spectral_rod.straight_rod.collocation.collocation_point`), the large-twist route
+    :func:`_one_characteristic`; ``python -m pytest -m bench`` measures both scalar loops."""
     if not (isinstance(twist_angle, (float, int)) and isinstance(nu, (float, int))
             and isinstance(tol, float) and n is None
             and method in ("auto", "collocation", "characteristic")
@@ -200,10 +197,10 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
 
 def _one_characteristic(om: float, nv: float, tol: float, full_output: bool):
     """:func:`_one_point` on the large-twist route: the characteristic equation in double
-    precision for one point (its refinement in Python floats: 0.19 ms a call against 1.2 ms by
-    the array path, measured 2026-12-05 on 30 random points, Omega(L) in [50, 1000]), bounds and
-    estimate as :func:`solve_points` and :func:`apply_bounds` give them; None where the estimate
-    misses tol (the general path warns and flags)."""
+    precision for one point (its refinement in Python floats; the benchmark row "a loop of
+    scalar calls, Omega(L) in [50, 1000]" measures it), bounds and estimate as
+    :func:`solve_points` and :func:`apply_bounds` give them; None where the estimate misses tol
+    (the general path warns and flags)."""
     from spectral_rod.characteristic import characteristic_double, double_error_estimate
 
     _, err = bounded_point(1.0, float(double_error_estimate(om)), nv)  # it does not need p*
@@ -222,8 +219,8 @@ def _one_element(twist_angle: object, nu: object, n: object, tol: object, method
     """One point given as arrays of one element (e.g. the (1,) vectors that
     ``scipy.optimize.least_squares`` and ``fsolve`` pass): :func:`_one_point`'s answer, shaped
     and typed as the general path returns it (``tests/test_speed_paths.py`` compares the two),
-    or None wherever the general path must answer. A one-point array call took 480 us by the
-    general path against 110 us for a scalar call (measured 2026-12-03)."""
+    or None wherever the general path must answer (the benchmark row "a loop of one-point
+    arrays" measures it)."""
     if not (isinstance(twist_angle, np.ndarray) or isinstance(nu, np.ndarray)):
         return None
     point = []
@@ -263,35 +260,47 @@ def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None
     full_output : return a :class:`spectral_rod.CriticalLoad` (method, resolution, error
         estimate, mode family, converged flag) instead of p* alone.
 
-    Returns p* as a float for scalar input, otherwise an ndarray of the broadcast shape. A
-    point whose error estimate exceeds ``tol`` gives a :class:`spectral_rod.ConvergenceWarning`
-    and ``converged=False``; it is never returned silently. A collocation estimate is the
-    calibrated model of the mode's Chebyshev tail and round-off
+    Returns
+    -------
+    float, ndarray or CriticalLoad
+        p* as a float for scalar input, otherwise an ndarray of the broadcast shape; with
+        ``full_output=True`` a :class:`spectral_rod.CriticalLoad` of such values whose
+        ``engine`` says what computed each point ("kernel" or "numpy" for collocation, the
+        method's name otherwise).
+
+    Raises
+    ------
+    ValueError, TypeError
+        An argument outside its range or of the wrong type (the message names it).
+
+    Warns
+    -----
+    ConvergenceWarning
+        A point whose error estimate exceeds ``tol``; it is flagged ``converged=False`` and
+        never returned silently.
+    PerformanceWarning
+        Once per process, at the first solve, where the C kernel is not available.
+
+    Notes
+    -----
+    A collocation estimate is the calibrated model of the mode's Chebyshev tail and round-off
     (:func:`spectral_rod.straight_rod.resolution.error_estimate`) plus, for tol > 1e-12, what
     the looser eigenvalue iteration may add, 0.01 tol - 1e-14
-    (:func:`spectral_rod.straight_rod.eigensolver.iteration_allowance`).
+    (:func:`spectral_rod.straight_rod.tuning.iteration_allowance`; every setting ``tol`` sets is
+    listed by :func:`spectral_rod.straight_rod.tuning.solver_settings`).
 
-    Scalar and array calls: a collocation point is solved by the lean solver
-    (:mod:`spectral_rod.straight_rod.few_points`) in a scalar call and whenever at most
-    ``few_points_limit(n)`` (12 up to n = 30, fewer above) points of a call share its degree, by
-    the batched engine otherwise; an array call pools degree groups at a higher degree where a
-    measured cost model says that is cheaper
-    (:func:`spectral_rod.straight_rod.collocation.solve_degrees`; per chunk of :data:`CHUNK`
-    points). A scalar call and a one-point array call give identical results (the latter, e.g.
-    scipy.optimize's (1,) vectors, takes the scalar path, at about its cost, and returns
-    arrays). A point in a larger call differs from its scalar call by at most the larger of the
-    two error estimates; where both use the same degree, by at most the round-off part
-    eps (32 + 0.3 Omega^2) at the default tol (the two engines round the same Rayleigh quotient
-    differently), and at a looser tol by at most that plus the eigenvalue iteration's tolerance
-    ``iteration_rtol(tol)`` = max(0.01 tol, 1e-15) (the engines stop their iterations
-    differently: from tol = 1e-8 on the round-off part alone is exceeded, 4.6 times at 1e-8 and
-    7.5e5 times at 1e-4 on Figure 1's points). Measured 2026-12-02: on Figure 1's 1,201 points
-    in one call (601 pooled) <= 7.1e-15, 0.54 of the round-off part; on 3,000 random points with
-    |Omega(L)| < 50, nu <= 100 (1,585 pooled) <= 8.8e-14, 0.61 of the larger estimate, and 0.77
-    of the round-off part at equal degree; at tol 1e-8 and 1e-4 on both sets, <= 0.74 of the
-    larger estimate and, at equal degree, <= 0.015 of round-off plus iteration tolerance
-    (``tests/test_safety.py`` computes and prints these).
+    One driver (:func:`spectral_rod.straight_rod.collocation.collocation_critical_load`) serves
+    every call shape; a scalar call, and a one-point array call (e.g. scipy.optimize's (1,)
+    vectors), take its one-point path and give identical results. A point in a larger call
+    differs from its scalar call by at most the larger of the two error estimates; where both
+    use the same degree, by at most the round-off part eps (32 + 0.3 Omega^2) at the default tol
+    (two computations round the same Rayleigh quotient differently), and at a looser tol by at
+    most that plus the iteration's tolerance ``iteration_rtol(tol)`` = max(0.01 tol, 1e-15).
+    ``tests/test_safety.py`` computes and prints these differences on Figure 1's points and on
+    3,000 random points.
 
+    Examples
+    --------
     >>> round(critical_load(6.283185307179586, 1.5), 9)
     1.195993681
     """

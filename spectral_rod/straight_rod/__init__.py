@@ -28,15 +28,35 @@ The modules
   mode family;
 * :mod:`.resolution` -- the a priori degree, the mode's coefficient tail and the error model;
 * :mod:`.eigensolver` -- the lowest physical eigenpair for batches (modal basis, Schur
-  complement, two-sided shift-and-invert iteration; full ``eig`` as the reference path);
-* :mod:`.modal_kernel` -- that iteration in C, 32 points side by side or one point at a time,
-  and the pencil's Rayleigh-quotient terms in double-double (``_modal_kernel.c``, optional:
-  the numpy code above is its reference and fallback);
-* :mod:`.few_points` -- the same eigenvalue for one point or a few (the kernel one point at a
-  time; or dense LU by LAPACK and powers of the shift-and-invert matrix): the scalar and
-  small-batch path;
-* :mod:`.collocation` -- p* for arrays of points with automatic resolution (picks the engine
-  per degree group by the measured crossover, ``few_points_limit``).
+  complement, two-sided shift-and-invert iteration): the numpy reference of the kernel, and
+  the full ``eig`` with the physical-eigenvalue rule, the test reference and last resort;
+* :mod:`.modal_kernel` -- the engine: that iteration in C, 32 points side by side or one point
+  at a time, and the pencil's Rayleigh-quotient terms in double-double; its contract is
+  ``_modal_kernel.h`` (structs, INFO returns, an ABI version checked at load);
+  :func:`.modal_kernel.engine_info` reports what runs here;
+* :mod:`.few_points` -- the eigenvalue for one point or a few: the kernel one lane at a time,
+  or without it dense pencils in numpy (kept for the no-kernel scalar and small-batch rows);
+* :mod:`.stacked_inverse` -- the numpy reference's Schur inverses for large stacks;
+* :mod:`.tuning` -- every speed threshold and cost-model constant, and
+  :func:`.tuning.solver_settings`, the one map from ``tol`` to the solver's settings;
+* :mod:`.collocation` -- the one driver: p* for any call shape with automatic resolution (its
+  degree loop; :func:`.collocation.collocation_point` is its one-point path).
+
+Which engine answers (decided in :mod:`.collocation` by the constants of :mod:`.tuning`):
+
+==================================  ===================================  ======================
+call shape                          with the C kernel                    without it
+==================================  ===================================  ======================
+a scalar call, <= few_points_limit  kernel, one lane (``modal_points``)  dense pencils (numpy)
+  points of a degree (n <= 64)
+more points of a degree, n <= 128   kernel, 32 lanes (``modal_lowest``)  numpy reference
+n > 128 (Schur block > 64)          numpy reference                      numpy reference
+a point the kernel rejects          numpy reference (pivoted inverse)    --
+not converged, or <= 4 points of a  full ``eig`` with the rule           full ``eig``
+  degree <= 40 in the batched path
+==================================  ===================================  ======================
+
+``CriticalLoad.engine`` records per point whether the kernel computed it.
 """
 
 from spectral_rod.straight_rod.collocation import (

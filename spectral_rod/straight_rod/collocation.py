@@ -141,11 +141,8 @@ def _solve_points(twist: NDArray[np.float64], nu: NDArray[np.float64], n: NDArra
     ``by_kernel`` (bool, one per point), if given, is set True where the C kernel computed both
     families' results.
 
-    The two families are iterated one after the other. Iterating both in one stacked pass (half
-    the numpy calls) was measured slower (2026-12-02, four interleaved runs against this code:
-    Figure 1 in one call 18-20 -> 21.5-24 ms, one call per curve 20-25 -> 27-28.5 ms, batches
-    of 100 31.5-33 -> 29-32 ms): a point then stays in the iteration until both families are
-    done, and from ~100 points on the per-point products, not the number of calls, dominate.
+    The two families are iterated one after the other, so that the antisymmetric family can
+    stop at its ceiling and a point leaves the iteration as soon as its family is done.
     """
     p = np.empty(twist.size)
     fam = np.empty(twist.size, dtype=int)
@@ -327,7 +324,7 @@ def collocation_mode_coefficients(twist_angle: float, nu: float, n: int, family:
     Omega(L) >= 0 (the mode of -Omega is the mirror image, omega2 -> -omega2).
 
     At small twist one field is O(Omega) (omega2 in the symmetric family). ``eig`` gets it to
-    an absolute error ~eps times the mode, so relative to itself it was off by ~1e-17/Omega
+    an absolute error ~eps times the mode, so relative to itself it is off by ~1e-17/Omega
     (non_planarity of the centreline 1.6e-9 off at Omega(L) = 1e-6, 5e-6 at 1e-12, nu = 1.5;
     0.35 at 1e-12, nu = 1.0009). Where it is below SMALL_PART of the other field it is
     therefore solved again from its own block row of the pencil, (A_ss - lambda V_s) c_s =

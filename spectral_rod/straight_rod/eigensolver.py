@@ -224,22 +224,10 @@ class _ShiftedModal:
     2 c1_2 (-4 Omega) in front of G21.
     Vectors are rows of one array (points x (k1 + k2)), omega1 block first.
 
-    The per-point inverse was, with ``numpy.linalg.inv`` (LAPACK per matrix), 34 % (tol 1e-4) and
-    39 % (tol 1e-12) of the Figure 1 batch's instructions (callgrind, 2026-12-02; 38.5 % on
-    2026-12-04 by ``tests/bench/instruction_counts.py --inverse-share``), so even a free inverse
-    would leave the batch 43.4 times below the baseline in instructions, not the 50 of issue 14.
-    Against it on 800 matrices of k = 6..32: a Gauss-Jordan inversion with partial pivoting
-    vectorised over the points took 1.5-3 times as long (points-last layout; 2.3-5.5 times
-    points-first), and ``scipy.linalg.inv`` on the stack 1.7-2.4 times. Since 2026-12-05 large
-    stacks are inverted by a checked 2 x 2-block recursion instead
-    (:func:`.stacked_inverse.stacked_inverse`: 0.58-0.80 of LAPACK's time, its check included,
-    from k = 10 and a few hundred matrices on; the Figure 1 batch 0.93 of its time).
-    Forming (K - SHIFT)^{-1} itself from these blocks (three products with the shared G's), so
-    that a step is one batched product, was measured on 2026-12-03 (:func:`lowest_eigenpair`,
-    symmetric family, random Figure 1 points, n = 18, 22, 26, 9 interleaved rounds): a step took
-    0.41-0.54 of the time at 100 points (0.82-1.12 at 1,200), but forming it 1.8 times this
-    setup (3.4-3.7 at 1,200); in all 0.86-1.11 of the time at 100 points, 1.02-1.19 at 200,
-    1.70-2.21 at 1,200. Not kept.
+    The per-point inverse of S is the numpy reference's largest single cost
+    (``tests/bench/instruction_counts.py --inverse-share`` measures its share); large stacks are
+    inverted by the checked 2 x 2-block recursion of :func:`.stacked_inverse.stacked_inverse`,
+    small ones by LAPACK (:data:`.tuning.BLOCK_ENTRIES`).
     """
 
     elim: slice  # columns of the eliminated block
@@ -276,13 +264,7 @@ class _ShiftedModal:
         return out
 
     def solve(self, v: NDArray[np.float64]) -> NDArray[np.float64]:
-        """(K - SHIFT)^{-1} v for each row v.
-
-        Writing both blocks into one preallocated output (``matmul(..., out=)`` on its column
-        slices, in-place scaling) instead of :meth:`_assemble`'s copy was measured on 2026-12-03
-        (Figure 1 batch, 12 interleaved rounds in one process, two runs): 1.03 and 1.03 of the
-        time at tol 1e-12, 1.01 and 1.00 at 1e-4 (matmul into strided slices is slower). Not kept.
-        """
+        """(K - SHIFT)^{-1} v for each row v."""
         u = v[:, self.elim] * self.r_e
         z_s = (self.schur_inv @ (v[:, self.kept] - self.b * (u @ self.g_se.T))[:, :, None]
                )[:, :, 0]
@@ -338,20 +320,16 @@ def lowest_eigenpair(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np
     The estimate assumes the eigenvalue is isolated: for two of the family's eigenvalues a gap
     delta apart it is ~delta^2 |mix|^2 while the error is ~delta |mix|^2, so a mixed vector
     passes once delta^2 < rtol lambda. Seen only in the antisymmetric family near nu = 4 at
-    small twist (Euler loads 4 and nu; found 2026-12-04: 15 of 800 random family
-    loads at n = 80, errors up to 2.0e-8 against the 40-digit family root, all with nu within
-    2e-7 of 4 and |Omega(L)| < 3e-7; the other 785 agreed to <= 1e-11). There the
+    small twist (Euler loads 4 and nu: 15 of 800 random family loads at n = 80 erred by up to
+    2.0e-8 against the 40-digit family root, all with nu within 2e-7 of 4 and
+    |Omega(L)| < 3e-7; the other 785 agreed to <= 1e-11). There the
     symmetric family (p* ~ 1) is far lower, so :func:`spectral_rod.critical_load` stops the
     antisymmetric iteration at "above" and is unaffected; a family on its own
     (:func:`.collocation.collocation_family_load`) is first checked by :func:`lowest_gap`
     against :data:`ISOLATION_GAP`.
 
-    In the numpy iteration the right and left solves are separate calls. Stacking them in one
-    (2, points, k) array, with [S^{-1}, S^{-T}] stored (half the numpy calls), was measured on
-    2026-12-02 against this code (symmetric family, tol 1e-12, 40 interleaved runs each):
-    faster only at 10 points (0.82 of the time), where the lean solver answers anyway; 0.94 at
-    100 points and slower from 400 on (1.20 at 400, 1.27 at 1,200 points at n = 22, 1.36 at
-    n = 40). The stored transpose doubles the memory each step reads.
+    In the numpy iteration the right and left solves are separate calls: a stored transpose
+    S^{-T} would double the memory each step reads.
     """
     pt = modal_parts(mf, twist, nu)
     start = _start_vector(mf.lam1.size + mf.lam2.size)

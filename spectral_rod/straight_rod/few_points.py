@@ -1,7 +1,13 @@
 r"""The lowest eigenvalue of both mode families for one point or a few (Eq. ``inst1``), lean.
 
 The batched engine (:mod:`.eigensolver`) pays a fixed cost per degree group of ~0.5 ms of array
-bookkeeping, which dominates for a scalar call or a batch of ten. Two implementations avoid it.
+bookkeeping, which dominates for a scalar call or a batch of ten. Two implementations avoid it:
+the C kernel on one lane (the engine), and, without the kernel, dense pencils in numpy. The
+second is a different iteration from the kernel's; it exists because the benchmark rows "a loop
+of scalar calls" and "batches of 10" without the kernel need it (the numpy reference of the
+kernel's algorithm, :func:`.eigensolver.lowest_eigenpair`, costs ~0.4 ms a family for one point,
+slower than the baseline's ~0.3 ms; ``python -m pytest -m bench -k scalar_loop`` with
+``SPECTRAL_ROD_NO_KERNEL=1`` measures the row).
 
 Where the C kernel is installed (:mod:`.modal_kernel`), the kernel solves the points one at a
 time in one call (``modal_points``): the batched engine's own algorithm and test with one lane
@@ -10,11 +16,8 @@ Rayleigh quotient, the mode's tail), and, as there, the antisymmetric family onl
 shown above the symmetric one (its tail is then inf). Above |Omega| = LONG_TWIST at tight tol
 the quotient, whose terms cancel to ~lambda/Omega^2, is summed in double-double from the
 coefficients in long double (the batched engine sums the same double-double forms in long
-double). The benchmark's loop of scalar calls over Figure 1's points: 26.4-29.0 us a call,
-against 58-60 us by the dense pencils below; at Omega(L) in [20, 50) 93-94 us against 290-400
-us (ad hoc) when the dense pencils answered there (``tests/bench/HISTORY.md``, 2026-12-05);
-at rtol = 1e-8 (modal quotient, as the batched engine's) within 1.2e-10 of the discrete
-eigenvalue on the 71 points of step 3 below (the largest at n = 64: K's round-off).
+double). At rtol = 1e-8 (modal quotient, as the batched engine's) it is within 1.2e-10 of the
+discrete eigenvalue on the 71 points of step 3 below (the largest at n = 64: K's round-off).
 
 Where the kernel is not installed each (point, family) keeps the dense collocation pencil
 (A, B) of :mod:`.discretisation` (m = n - 1 unknowns, both families the same size, so they are
@@ -52,12 +55,9 @@ the two iterations' different stopping, up to the iteration tolerance (measured:
 
 One point (a scalar call, or an array of one point) is :func:`solve_one`'s: the same steps on
 Python floats and (family, m, m) stacks, without the per-point index arrays of a batch (a scalar
-call's cost is mostly numpy's per-call overhead: 78-85 -> 66-68 us a call in a loop over
-Figure 1's points, measured 2026-12-02). Steps 1-3 leave only the few scalars step 4 needs
-(:class:`_Iterates`: four dot products and two tail maxima per family), so that for one point
-step 4 runs in Python floats (:func:`_judge_one`, the rule of :func:`_judge`): on a slower
-machine, the same loop took 175-199 -> 119-143 us a call (three interleaved pairs of processes,
-2026-12-02, a later session).
+call's cost is mostly numpy's per-call overhead). Steps 1-3 leave only the few scalars step 4
+needs (:class:`_Iterates`: four dot products and two tail maxima per family), so that for one
+point step 4 runs in Python floats (:func:`_judge_one`, the rule of :func:`_judge`).
 """
 
 from __future__ import annotations
@@ -134,12 +134,8 @@ def _inverses(f_t: NDArray[np.float64]) -> NDArray[np.float64] | None:
     flat = f_t.reshape(-1, *f_t.shape[-2:])
     for j in range(flat.shape[0]):
         # flat[j].T is F in Fortran order, which f2py hands to LAPACK without a copy: the LU
-        # and then the inverse overwrite it, so flat[j] ends as F^{-T} (no output array; 2-3 %
-        # of a scalar call, measured 2026-12-02 in 30 paired in-process runs of 200 points).
-        # M = F^{-1} B by dgesv instead (LU and a solve with B's m columns, no inverse and no
-        # product, the left vector through a stored B^{-1}) was slower: 22.7 vs 19.6 us for
-        # both families at n = 22, 59.9 vs 56.3 at n = 40 (OpenBLAS's solve with m columns
-        # costs more than the inverse; 2026-12-02, a later session)
+        # and then the inverse overwrite it, so flat[j] ends as F^{-T} (no output array). The
+        # inverse, not dgesv with B's m columns: OpenBLAS's solve with m columns costs more
         lu, piv, info = dgetrf(flat[j].T, overwrite_a=1)
         if info != 0:
             return None

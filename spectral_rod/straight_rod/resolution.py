@@ -7,14 +7,15 @@ calibrated function of that tail plus a measured round-off floor (:func:`error_e
 
 The degree is chosen for the tail's part of the estimate to be at most TRUNCATION_SHARE = 0.1 of
 the requested tol (:func:`initial_degree`, :func:`shortfall`), not tol itself: the estimate is a
-bound with safety factors, but where it lands just below tol the error itself came close to it
-(measured 2026-12-05 on the collocation part of a 200 x 200 map, Omega(L) < 50, nu in [1, 100],
-against the characteristic equation: at tol 1e-12, with the degree held to the whole estimate,
-errors up to 1.6e-13 and 226 of 20,000 points above 1e-13, all at Omega(L) > 30; with the
-share at most 4.6e-14 there, and at most a tenth of tol on 20,000 random points, Omega(L) < 50,
-nu up to 1e4, at every tol from 1e-4 to 1e-12: ``python tests/bench/accuracy_at_tol.py`` prints
-these; ``tests/test_accuracy_control.py`` checks a sample). A point is converged, as before,
-where the whole estimate is <= tol.
+bound with safety factors, but where it lands just below tol the error itself can come close to
+it (on the collocation part of a 200 x 200 map, Omega(L) < 50, nu in [1, 100], against the
+characteristic equation at tol 1e-12: with the degree held to the whole estimate, errors up to
+1.6e-13 and 226 of 20,000 points above 1e-13, all at Omega(L) > 30; with the share at most
+4.6e-14 there, and at most a tenth of tol on 20,000 random points, Omega(L) < 50, nu up to 1e4,
+at every tol from 1e-4 to 1e-12: ``python tests/bench/accuracy_at_tol.py`` prints these;
+``tests/test_accuracy_control.py`` checks a sample). A point is converged where the whole
+estimate is <= tol. TRUNCATION_SHARE lives in :mod:`.tuning` with the other settings ``tol``
+fans out into.
 """
 
 from __future__ import annotations
@@ -54,13 +55,11 @@ def initial_degree(twist_angle: NDArray[np.float64], tol: float) -> NDArray[np.i
         n0 = |Omega|/2 + c0 + c1 L + (c2 L + c3) (1 + |Omega|)^(1/3)   (rounded up to even)
 
     is fitted to the degree from which the tail's part of the estimate stays <= t
-    (``tests/bench/degree_fit.py``, 2026-12-05: Omega(L) = 0..49, nu 1.05..100, tol 1e-2..1e-12;
-    the expected cost, ~n0^2 plus a second solve where n0 falls short, at 1.06-1.17 of the
-    ideal and short at none of the 300 points at any tol; the a-posteriori check raises the
-    degree where it is). ``nu`` does not enter: the needed degree varies by at most 2 over nu
-    in [1, 100]. The form before (0.5 L + 1.3 (1 + |Omega|)^(1/3) sqrt(L), fitted to the
-    whole estimate meeting tol) fell short at 12 % of those points at tol 1e-12 once held to
-    the share, each a second solve.
+    (``tests/bench/degree_fit.py``: Omega(L) = 0..49, nu 1.05..100, tol 1e-2..1e-12; the
+    expected cost, ~n0^2 plus a second solve where n0 falls short, at 1.06-1.17 of the ideal
+    and short at none of the 300 points at any tol; the a-posteriori check raises the degree
+    where it is). ``nu`` does not enter: the needed degree varies by at most 2 over nu in
+    [1, 100].
     """
     om = np.abs(np.asarray(twist_angle, dtype=float))
     x = _degree_formula(om, -math.log10(TRUNCATION_SHARE * tol), np.cbrt)
@@ -89,8 +88,8 @@ def initial_degree_scalar(twist_angle: float, tol: float) -> int:
 def _degree_formula(om, big_l: float, cbrt):
     """n0 of :func:`initial_degree` before rounding (om = |Omega|, big_l = log10(1/t)).
 
-    big_l is taken >= 3.5: a fit to tol <= 1e-4 fell short at looser ones (with the form
-    before, at tol 1e-2, at 427 of Figure 1's 1,201 points, each a second solve).
+    big_l is taken >= 3.5: a fit to tol <= 1e-4 falls short at looser ones, each shortfall a
+    second solve (``tests/bench/degree_fit.py`` prints the shortfalls per tol).
     """
     big_l = max(big_l, 3.5)
     c0, c1, c2, c3 = DEGREE_FIT
@@ -139,7 +138,7 @@ def error_estimate(tail_value: ArrayLike, twist_angle: ArrayLike) -> NDArray[np.
     from 8 until the tail is below 1e-13 (2,120 cases): the discretisation error was at most
     3.3e-4 tail for tail < 1e-5 and at most 33 tail^2 for 1e-5 <= tail < 1e-2, so the two
     constants carry safety factors 1.5 and 6. The round-off floor (the Omega^2 terms of the
-    pencil cancel to ~lambda) was re-measured for the solver as it is (shift-and-invert, final
+    pencil cancel to ~lambda) is measured for this solver (shift-and-invert, final
     Rayleigh quotient in extended precision above |Omega| = LONG_TWIST) on Omega in [40, 100]:
     at most 0.19 eps Omega^2 (0.22 with the full ``eig``), hence the 0.3. With tail >= 1e-2 the mode
     is not resolved and the estimate (>= 2e-2) only says so.

@@ -2,7 +2,7 @@ r"""Inverses of a stack of small matrices, for the batched engine's Schur comple
 
 Used by the numpy iteration of :func:`.eigensolver.lowest_eigenpair`: where the C kernel
 (:mod:`.modal_kernel`) is built, only for degrees above its range (Schur blocks of more than
-:data:`.eigensolver.KERNEL_MAX_SCHUR` unknowns) and for points whose unpivoted factors the
+:data:`.tuning.KERNEL_MAX_SCHUR` unknowns) and for points whose unpivoted factors the
 kernel rejects; everywhere where it is not.
 
 ``numpy.linalg.inv`` calls LAPACK once per matrix, and at the sizes of the batched engine
@@ -20,15 +20,12 @@ singular.
 :func:`stacked_inverse` checks every result anyway (one product with a fixed probe vector) and
 redoes any matrix whose backward error is not small by LAPACK, with partial pivoting.
 
-Measured 2026-12-05 (minima of 25 interleaved rounds, one BLAS thread, the engine's Schur
-complements at Figure 1's and random points), the time per matrix of :func:`stacked_inverse`,
-check included, relative to ``numpy.linalg.inv`` at 100, 300 and 1,200 matrices: k = 5:
-1.44, 0.98, 0.75; k = 6: 1.62, 1.04, 0.80; k = 8: 1.42, 1.06, 0.98; k = 9: 1.16, 0.88, 0.86;
-k = 10: 1.08, 0.80, 0.78; k = 12: 1.02, 0.71, 0.74; k = 14: 0.91, 0.74, 0.77; k = 19: 0.78,
-0.68, 0.74; k = 27: 0.63, 0.58, 0.69 (the check is 10-25 % of it), hence
-:data:`BLOCK_ENTRIES`. In the engine (minima of 9 interleaved rounds, the map's of 4): the
-Figure 1 batch 0.93 of its time with LAPACK's inverse, one call per curve 0.89, the (Omega, nu)
-map's collocation points 0.89, batches of 100 unchanged. On the engine's own Schur complements
+The numpy engine needs it: without it the Figure 1 batch on the numpy engine (the benchmark row
+"one call, all 1,201 Figure 1 points" with ``SPECTRAL_ROD_NO_KERNEL=1``) takes ~1.08 times as
+long with LAPACK's inverse alone, close to that row's floor of 20 times the baseline. Above
+:data:`.tuning.BLOCK_ENTRIES` entries per stack it is faster than ``numpy.linalg.inv``
+(0.58-0.80 of its time from k = 10 and a few hundred matrices on, the check included; at 100
+matrices of k <= 12 slower, hence the threshold). On the engine's own Schur complements
 (n = 8..128, both families, 400 random points each, Omega(L) up to 50, nu up to 1e4, condition
 numbers up to 5e8) it agreed with LAPACK's inverse to <= 4.3e-14 relative, with backward errors
 <= 5.5e-16 (``tests/test_stacked_inverse.py`` holds n = 16..128 to 1e-12).
