@@ -143,7 +143,7 @@ KERNEL_MAX_SCHUR = 64
 #: Up to SMALL_BATCH points per degree and family, and degree SMALL_DEGREE, the batched solve
 #: of a family is the full ``eig`` (the iteration's fixed cost is larger there: 0.13 against
 #: 0.37 ms for one point at n = 20, about equal at n = 40-45). Reached only by points the
-#: few-point path hands back. ``python tests/bench/kernel_range.py`` measures the crossover.
+#: few-point path hands back. ``python tests/bench/tuning_crossovers.py``, part 1.
 SMALL_BATCH, SMALL_DEGREE = 4, 40
 #: Up to FEW_POINTS points of one degree n <= 30 the few-point path (:mod:`.few_points`) is
 #: used, above it the batched engine; its cost grows faster with n, so the limit falls as n^-3
@@ -152,11 +152,11 @@ FEW_POINTS = 12
 #: Above this degree the batched engine answers even a single point: the dense pencils of the
 #: few-point numpy path cost ~336 (n - 1)^2 bytes each in its cache (88 MB at n = 512) and are
 #: slower there (4 points: n = 56 about equal, n = 128 2.4 times slower).
-#: ``python tests/bench/kernel_range.py``, part 2.
+#: ``python tests/bench/tuning_crossovers.py``, part 2.
 LEAN_MAX_DEGREE = 64
 #: Up to this size m the numpy few-point path takes the powers of M by squaring (a few matrix
 #: products), above it by products with the vectors: a squaring costs ~m^3, a step ~m^2 but
-#: ~1 us of call overhead (faster from n = 30 on). ``python tests/bench/alternatives.py``.
+#: ~1 us of call overhead. ``python tests/bench/tuning_crossovers.py``, part 3.
 SQUARING_MAX = 27
 #: The cost model of degree pooling (:func:`.collocation.solve_degrees`): a batched solve of
 #: both families costs FIXED_COST seconds whatever its size plus POINT_COST (n/22)^2 a point;
@@ -168,8 +168,8 @@ FIXED_COST, POINT_COST, LEAN_FACTOR = 0.5e-3, 4.6e-6, 8.0
 #: :func:`.stacked_inverse.stacked_inverse` (the numpy engine's Schur inverses) uses the block
 #: recursion for stacks of at least this many matrix entries (count k^2), LAPACK below: the
 #: recursion's cost is mostly numpy calls per stack, LAPACK's a call per matrix.
-#: ``tests/test_stacked_inverse.py`` checks the accuracy; ``python tests/bench/alternatives.py``
-#: times the two.
+#: ``tests/test_stacked_inverse.py`` checks the accuracy;
+#: ``python tests/bench/tuning_crossovers.py``, part 4, times the two.
 BLOCK_ENTRIES = 25_000
 #: Points :func:`spectral_rod.critical_load` solves together at most: bounds the memory of a
 #: large call (the batched engine holds ~k^2 doubles per point and family, the large-twist scan
