@@ -189,3 +189,41 @@ def test_other_routes_name_their_method():
 
     res = critical_load(np.array([300.0, 3.0]), 1.5, full_output=True)
     assert res.engine.tolist()[0] == res.method.tolist()[0] == "characteristic"
+
+
+# --- one algorithm: the kernel's one-lane path against the numpy reference --------------------
+
+@needs_kernel
+@pytest.mark.parametrize("n", [16, 22, 40, 56])
+def test_one_lane_kernel_matches_the_numpy_reference(n):
+    # the kernel's convergence test, pencil quotient (double-double above LONG_TWIST) and tail
+    # on one lane, against the numpy reference's iteration, pencil_rayleigh_quotient and
+    # mode_tails on the same points: eigenvalues within the round-off part of the error model,
+    # error estimates (what the tail decides) within 1e-3 of each other
+    from spectral_rod.straight_rod import few_points
+    from spectral_rod.straight_rod.resolution import error_estimate
+    from spectral_rod.straight_rod.tuning import iteration_rtol
+
+    rng = np.random.default_rng(n)
+    tw, nv = rng.uniform(0.0, max(1.0, 1.8 * (n - 16)), 40), rng.uniform(1.1, 20.0, 40)
+    rtol = iteration_rtol(1e-12)
+    lam, tail, ok = few_points._solve_kernel(n, tw, nv, rtol)
+    library = modal_kernel._library
+    modal_kernel._library = lambda: None
+    try:
+        ref = [_numpy_reference(n, family, tw, nv, rtol) for family in ("symmetric", "antisymmetric")]
+    finally:
+        modal_kernel._library = library
+    assert ok.all()
+    round_off = np.finfo(float).eps * (32 + 0.3 * tw**2)
+    assert np.max(np.abs(lam[:, 0] / ref[0][0] - 1) / round_off) <= 1.0
+    est, ref_est = error_estimate(tail[:, 0], tw), error_estimate(ref[0][1], tw)
+    assert np.max(np.abs(est / ref_est - 1)) <= 1e-3
+    both = np.isfinite(tail[:, 1]) & np.isfinite(ref[1][1])  # antisymmetric resolved by both
+    assert np.max(np.abs(lam[both, 1] / ref[1][0][both] - 1) / round_off[both], initial=0) <= 1.0
+
+
+def _numpy_reference(n, family, tw, nv, rtol):
+    from spectral_rod.straight_rod.eigensolver import solve_family
+
+    return solve_family(n, family, tw, nv, rtol=rtol)[:2]
