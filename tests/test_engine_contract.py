@@ -211,7 +211,8 @@ def test_one_lane_kernel_matches_the_numpy_reference(n):
     library = modal_kernel._library
     modal_kernel._library = lambda: None
     try:
-        ref = [_numpy_reference(n, family, tw, nv, rtol) for family in ("symmetric", "antisymmetric")]
+        ref = [_numpy_reference(n, family, tw, nv, rtol)
+               for family in ("symmetric", "antisymmetric")]
     finally:
         modal_kernel._library = library
     assert ok.all()
