@@ -1,5 +1,5 @@
-"""What a requested tol delivers: the measurements behind ``resolution.TRUNCATION_SHARE`` and
-``eigensolver.LONG_TWIST``.
+"""What a requested tol delivers: the measurements behind ``tuning.TRUNCATION_SHARE`` and
+``tuning.LONG_TWIST``.
 
     python tests/bench/accuracy_at_tol.py
 

@@ -2,11 +2,11 @@
 
     python tests/bench/kernel_range.py
 
-1. ``eigensolver.KERNEL_MAX_SCHUR``: ``lowest_eigenpair`` by the C kernel against its numpy
+1. ``tuning.KERNEL_MAX_SCHUR``: ``lowest_eigenpair`` by the C kernel against its numpy
    iteration (the kernel switched off), per degree n and mode family, on random points
    (Omega(L) up to 1.8 (n - 16), nu in [1.1, 10]) at tol 1e-12, with the limit lifted; the
    ratio kernel / numpy time.
-2. ``collocation.few_points_limit``: the few-point path (the kernel one point at a time) against
+2. ``tuning.few_points_limit``: the few-point path (the kernel one point at a time) against
    the batched engine, ``_solve_points`` forced to either, on k random Figure 1 points at
    degree n; the cheaper one.
 3. The pencil's Rayleigh-quotient terms at |Omega(L)| > LONG_TWIST (``eigensolver._rayleigh_sums``
