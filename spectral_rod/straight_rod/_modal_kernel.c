@@ -504,6 +504,35 @@ static double quotient_dd(int m, int T, const int *shape, const double *mats, co
 #pragma GCC pop_options
 #endif
 
+/* The pencil's two-sided Rayleigh quotient y^T A x / y^T B x of one point (Eq. inst1's terms
+   weighted by their coefficients over the mass terms): the kernel's one pencil quotient, its
+   precision a parameter, double where coef_lo is NULL, double-double (quotient_dd) where it
+   gives the coefficients' low parts. The numpy reference's is
+   eigensolver.pencil_rayleigh_quotient, with its dtype as the precision. Inlined, so that the
+   double sums compile for the instruction set of the clone that calls it. */
+INLINE double pencil_quotient(const Family *f, int terms, const double *coef,
+                              const double *coef_lo, const double *x, const double *y,
+                              double *scratch) {
+  const int m = f->k1 + f->k2;
+  if (coef_lo)
+    return quotient_dd(m, terms, f->term_shape, f->term_mats, f->mass, coef, coef_lo, x, y,
+                       scratch);
+  double num = 0.0, den = 0.0;
+  for (int t = 0; t < terms; t++) {
+    const int *sh = f->term_shape + 5 * t;
+    const double *mat = f->term_mats + sh[4];
+    double acc = 0.0;
+    for (int j = 0; j < sh[1]; j++) {
+      double row = 0.0;
+      for (int k = 0; k < sh[3]; k++) row += mat[(size_t)j * sh[3] + k] * x[sh[2] + k];
+      acc += y[sh[0] + j] * row;
+    }
+    num += coef[t] * acc;
+    if (f->mass[t]) den += acc;
+  }
+  return num / den;
+}
+
 /* One family at one point: the lowest eigenpair by the kernel (one lane), then the pencil's
    vectors, the tail and, unless control->loose, the pencil's two-sided Rayleigh quotient: in
    double, or where coef_lo (the coefficients' low parts) is given in double-double
@@ -554,26 +583,8 @@ INLINE void family_point(const Family *f, int terms, const double *coef, const d
   *tail = scale > 0.0 ? last / scale : INFINITY;
   if (!isfinite(last) || !isfinite(other)) *status = NOT_CONVERGED;
   if (loose) return;
-  if (coef_lo) {  /* rest, solve_group's workspace, is free again */
-    *lam = quotient_dd(m, terms, f->term_shape, f->term_mats, f->mass, coef, coef_lo, x, y,
-                       rest);
-    if (!(*lam >= shift)) *status = NOT_CONVERGED;
-    return;
-  }
-  double num = 0.0, den = 0.0;
-  for (int t = 0; t < terms; t++) {
-    const int *sh = f->term_shape + 5 * t;
-    const double *mat = f->term_mats + sh[4];
-    double acc = 0.0;
-    for (int j = 0; j < sh[1]; j++) {
-      double row = 0.0;
-      for (int k = 0; k < sh[3]; k++) row += mat[(size_t)j * sh[3] + k] * x[sh[2] + k];
-      acc += y[sh[0] + j] * row;
-    }
-    num += coef[t] * acc;
-    if (f->mass[t]) den += acc;
-  }
-  *lam = num / den;
+  /* rest, solve_group's workspace, is free again: quotient_dd's scratch */
+  *lam = pencil_quotient(f, terms, coef, coef_lo, x, y, rest);
   if (!(*lam >= shift)) *status = NOT_CONVERGED;  /* a nan quotient is not an answer */
 }
 
