@@ -432,17 +432,171 @@ def _float_determinant(family: str, om: float, nu: float, p: float) -> float:
     return determinant(family, math.pi**2 * p, om, nu, lib=math)
 
 
+def _float_function(family: str, om: float, nu: float) -> Any:
+    """p -> D_sym or D_anti in Python floats: the phase form from |Omega| >=
+    BRACKET_MIN_TWIST (as the batched refinement), :func:`determinant` below it."""
+    if om >= BRACKET_MIN_TWIST:
+        hc, hs = math.cos(0.5 * om), math.sin(0.5 * om)
+        return lambda p: _phase_determinant(family == "symmetric", p, om, nu, hc, hs, math)
+    return partial(_float_determinant, family, om, nu)
+
+
 def characteristic_double(twist_angle: float, nu: float) -> tuple[float, str]:
     """Lowest root p* of the two determinants in double precision, and its family (one point
-    of :func:`characteristic_double_batch`).
+    of :func:`characteristic_double_batch`; from |Omega(L)| >= :data:`BRACKET_MIN_TWIST` the
+    same certified bracket in Python floats, :func:`_bracketed_point`).
 
     >>> p, family = characteristic_double(100.0, 1.5)
     >>> round(p, 6), family
     (1.199987, 'symmetric')
     """
-    p, fam = characteristic_double_batch(np.array([abs(float(twist_angle))]),
-                                         np.array([float(nu)]))
+    om, nv = abs(float(twist_angle)), float(nu)
+    if om >= BRACKET_MIN_TWIST and nv > 1.0:
+        found = _bracketed_point(om, nv)
+        if found is not None:
+            return found
+    p, fam = characteristic_double_batch(np.array([om]), np.array([nv]))
     return float(p[0]), FAMILIES[int(fam[0])]
+
+
+# --- the large-twist bracket ----------------------------------------------------------------
+#
+# From |Omega(L)| >= BRACKET_MIN_TWIST each family's lowest root is bracketed by its large-twist
+# expansion (spectral_rod.asymptotics.family_expansions, remainder O(Omega^-5)) instead of being
+# found by the sign scan. The certificate that the two roots found are the two lowest
+# eigenvalues: the lab-frame Rayleigh quotient of Eq. inst1 (spectral_rod.increment) is
+# [int |z''|^2 + (nu - 1) int omega2^2] / int |z'|^2 >= int |z''|^2 / int |z'|^2, whose
+# eigenvalues are k^2 pi^2, each twice (x1 and x2); by min-max the third eigenvalue of Eq.
+# inst1 is >= 4 pi^2, so at most two eigenvalues (with multiplicity) lie below p = 4. A sign
+# change of D_sym and one of D_anti, both in brackets below p = CERTIFICATE_LOAD = 4, are two
+# eigenvalues there: each is its family's only one below 4, hence its lowest, and p* is the
+# smaller. A point whose brackets do not both change sign is handed to the sign scan.
+
+#: |Omega(L)| from which the lowest root is bracketed by the large-twist expansion.
+BRACKET_MIN_TWIST = 50.0
+#: The bracket's half-width is BRACKET_REMAINDER / Omega^5 (the expansion's remainder: measured
+#: <= 128 Omega^-5 on 4,000 random points, Omega(L) in [20, 1e4], nu in [1, 1e4], by
+#: tests/bench/large_twist_bracket.py) plus BRACKET_NOISE times :func:`double_error_estimate`
+#: (so that the sign at the bracket's ends is decided by the root, not by rounding).
+BRACKET_REMAINDER, BRACKET_NOISE = 400.0, 64.0
+#: Below this load the lab-frame comparison problem has only two eigenvalues (see above).
+CERTIFICATE_LOAD = 4.0
+
+
+def _half_width(om: Any) -> Any:
+    """The bracket's half-width in p at |Omega| = om (floats or arrays)."""
+    return BRACKET_REMAINDER / om**5 + BRACKET_NOISE * _EPS * (8.0 + om)
+
+
+def _phase_terms(p: Any, om: Any, nv: Any, half_cos: Any, half_sin: Any, lib: Any
+                 ) -> tuple[Any, ...]:
+    """(C_-, S_-, C_+, S_+, lambda, mu, Omega^2, X_-, X_+) at lambda = pi^2 p for X_-, X_+ > 0
+    (here: Omega^2 > lambda), the phases sqrt(X)/2 = Omega/2 + r/2 with r = sqrt(X) - Omega
+    computed as (X - Omega^2)/(sqrt(X) + Omega) and cos, sin of Omega/2 + r/2 by the addition
+    theorem from the exact half_cos = cos(Omega/2), half_sin = sin(Omega/2): a phase of size
+    Omega is never rounded, which is the eps |Omega| error of :func:`determinants` there.
+    X_+ - Omega^2 = (lambda + mu + R)/2 and (X_+ - Omega^2)(X_- - Omega^2) = lambda mu -
+    2 Omega^2 (lambda + mu) (R^2 = (lambda - mu)^2 + 8 Omega^2 (lambda + mu)) hold without
+    cancellation at large twist. numpy arrays (lib=np) or Python floats (lib=math)."""
+    lam = math.pi**2 * p
+    mu = lam / nv
+    q = om * om
+    u_plus = 0.5 * (lam + mu + lib.sqrt((lam - mu) ** 2 + 8.0 * q * (lam + mu)))
+    u_minus = (lam * mu - 2.0 * q * (lam + mu)) / u_plus
+    out = []
+    for u in (u_minus, u_plus):
+        beta = lib.sqrt(q + u)
+        half_r = 0.5 * u / (beta + om)
+        cr, sr = lib.cos(half_r), lib.sin(half_r)
+        out += [half_cos * cr - half_sin * sr, (half_sin * cr + half_cos * sr) / beta]
+    return (*out, lam, mu, q, q + u_minus, q + u_plus)
+
+
+def _phase_determinant(sym: Any, p: Any, om: Any, nv: Any, half_cos: Any, half_sin: Any,
+                       lib: Any) -> Any:
+    """D_sym where `sym`, else D_anti (:func:`combine_determinant`) from :func:`_phase_terms`."""
+    cm, sm, cp, sp, lam, mu, q, xm, xp = _phase_terms(p, om, nv, half_cos, half_sin, lib)
+    d_sym = cp * sm * (lam - q - xm) - cm * sp * (lam - q - xp)
+    d_anti = (mu - q - xp) * sp * cm - (mu - q - xm) * sm * cp
+    if lib is math:
+        return d_sym if sym else d_anti
+    return np.where(sym, d_sym, d_anti)
+
+
+def _bracketed_batch(om: NDArray[np.float64], nv: NDArray[np.float64]
+                     ) -> tuple[NDArray[np.float64], NDArray[np.int_], NDArray[np.bool_]]:
+    """(p*, family index, certified) at flat arrays of points with |Omega| >= BRACKET_MIN_TWIST
+    and nu > 1: both families' roots in their asymptotic brackets, refined together
+    (:func:`~spectral_rod.sign_scan.bracketed_roots`); certified False where a bracket shows no
+    sign change (the caller scans those points)."""
+    from spectral_rod.asymptotics import family_expansions
+
+    n = om.size
+    both_om, both_nu = np.concatenate([om, om]), np.concatenate([nv, nv])
+    sym = np.repeat([True, False], n)
+    half = 0.5 * both_om
+    hc, hs = np.cos(half), np.sin(half)
+    centre = np.concatenate(family_expansions(om, nv))
+    w = _half_width(both_om)
+    a, b = centre - w, np.minimum(centre + w, CERTIFICATE_LOAD)
+
+    def f(j, x):
+        return _phase_determinant(sym[j], x, both_om[j], both_nu[j], hc[j], hs[j], np)
+
+    fa, fb = f(np.arange(2 * n), a), f(np.arange(2 * n), b)
+    ok = fa * fb <= 0
+    ok = ok[:n] & ok[n:]
+    # each point's lower bracket first; the other family's root only where its bracket reaches
+    # below the first root (:func:`_bracketed_point` does the same)
+    fam = (a[n:] < a[:n]).astype(int)
+    first = np.flatnonzero(ok) + n * fam[ok]
+    p = np.full(n, np.nan)
+    p[ok] = _refine_brackets(f, first, a, b)
+    other = first + np.where(first < n, n, -n)
+    need = a[other] < p[ok]
+    if need.any():
+        second, where = other[need], np.flatnonzero(ok)[need]
+        q = _refine_brackets(f, second, a, b)
+        lower = q < p[where]
+        p[where[lower]], fam[where[lower]] = q[lower], 1 - fam[where[lower]]
+    return p, fam, ok
+
+
+def _refine_brackets(f: Any, idx: NDArray[np.int_], a: NDArray[np.float64],
+                     b: NDArray[np.float64]) -> NDArray[np.float64]:
+    """The roots of the functions f(idx[j], .) in [a[idx], b[idx]] (all at once)."""
+    if not idx.size:
+        return np.empty(0)
+    return bracketed_roots(lambda j, x: f(idx[j], x), a[idx], b[idx])
+
+
+def _bracketed_point(om: float, nv: float) -> tuple[float, str] | None:
+    """:func:`_bracketed_batch` for one point in Python floats (the scalar path): (p*, family),
+    or None where the certificate fails."""
+    from spectral_rod.asymptotics import family_expansions
+
+    hc, hs = math.cos(0.5 * om), math.sin(0.5 * om)
+    w = _half_width(om)
+    brackets = []
+    for sym, centre in zip((True, False), family_expansions(om, nv), strict=True):
+        def f(x: float, sym: bool = sym) -> float:
+            return _phase_determinant(sym, x, om, nv, hc, hs, math)
+
+        a, b = centre - w, min(centre + w, CERTIFICATE_LOAD)
+        if f(a) * f(b) > 0:
+            return None
+        brackets.append((a, b, f))
+    # the family of the lower bracket first; the other's root is needed only if its bracket
+    # reaches below the first root (both are certified by their sign changes above)
+    k = int(brackets[1][0] < brackets[0][0])
+    a, b, f = brackets[k]
+    best = bracketed_root(f, a, b)
+    a, b, f = brackets[1 - k]
+    if a < best:
+        other = bracketed_root(f, a, b)
+        if other < best:
+            return other, FAMILIES[1 - k]
+    return best, FAMILIES[k]
 
 
 def _double_scan(om: NDArray[np.float64], nv: NDArray[np.float64], top: NDArray[np.float64],
@@ -462,14 +616,24 @@ def _double_scan(om: NDArray[np.float64], nv: NDArray[np.float64], top: NDArray[
         fam = k if family is None else family[points]
 
         if points.size <= FEW_POINTS:  # in Python floats, one bracket at a time
-            return np.array([bracketed_root(partial(_float_determinant, FAMILIES[fam[j]],
-                                                    float(om[i]), float(nv[i])),
+            return np.array([bracketed_root(_float_function(FAMILIES[fam[j]], float(om[i]),
+                                                            float(nv[i])),
                                             float(a[j]), float(b[j]))
                              for j, i in enumerate(points.tolist())])
+        # from BRACKET_MIN_TWIST on in the phase form (its roots lie below p = 2 there, where
+        # Omega^2 > lambda as _phase_terms needs): the same eps-level accuracy as the bracket
+        om_p, nv_p = om[points], nv[points]
+        phase = om_p >= BRACKET_MIN_TWIST
+        hc, hs = np.cos(0.5 * om_p), np.sin(0.5 * om_p)
 
         def f(j, x):
-            d = _determinants(x, om[points[j]], nv[points[j]], np.float64, False)
-            return np.where(fam[j] == 0, d[0], d[1])
+            d = _determinants(x, om_p[j], nv_p[j], np.float64, False)
+            direct = np.where(fam[j] == 0, d[0], d[1])
+            if not phase[j].any():
+                return direct
+            with np.errstate(invalid="ignore"):  # X_- < 0 where phase is False
+                ph = _phase_determinant(fam[j] == 0, x, om_p[j], nv_p[j], hc[j], hs[j], np)
+            return np.where(phase[j], ph, direct)
         return bracketed_roots(f, a, b)
 
     return lowest_roots(values, refine, np.full(om.size, SCAN_START), top,
@@ -491,7 +655,15 @@ def characteristic_double_batch(twist: NDArray[np.float64], nu: NDArray[np.float
     """
     om, nv = np.abs(np.asarray(twist, dtype=float)), np.asarray(nu, dtype=float)
     top = (1.0 + nv) / 2.0 + SCAN_MARGIN
-    p, fam = _double_scan(om, nv, top)
+    p, fam = np.empty(om.size), np.empty(om.size, dtype=int)
+    scan = np.ones(om.size, dtype=bool)
+    large = np.flatnonzero((om >= BRACKET_MIN_TWIST) & (nv > 1.0))
+    if large.size:
+        p[large], fam[large], ok = _bracketed_batch(om[large], nv[large])
+        scan[large[ok]] = False
+    scan = np.flatnonzero(scan)
+    if scan.size:
+        p[scan], fam[scan] = _double_scan(om[scan], nv[scan], top[scan])
     if (fam < 0).any():
         i = int(np.flatnonzero(fam < 0)[0])
         raise RootNotFoundError(f"no root of the characteristic equation for p* in "
@@ -521,10 +693,18 @@ def family_double_batch(twist: NDArray[np.float64], nu: NDArray[np.float64]
     return p[:n], p[n:]
 
 
+#: Relative error estimate of :func:`characteristic_double` from |Omega(L)| >=
+#: BRACKET_MIN_TWIST, in units of eps: the phase form's roots measured <= 2 eps against 40-digit
+#: references (tests/bench/hunt_routes.py, module docstring).
+PHASE_ERROR = 16.0
+
+
 def double_error_estimate(twist_angle: ArrayLike) -> NDArray[np.float64]:
-    """Relative error bound eps (8 + |Omega|) of :func:`characteristic_double` (empirical: the
-    measured error is <= 0.58 eps |Omega|, module docstring)."""
-    return _EPS * (8.0 + np.abs(np.asarray(twist_angle, dtype=float)))
+    """Relative error estimate of :func:`characteristic_double` (empirical, module docstring):
+    eps (8 + |Omega|) below :data:`BRACKET_MIN_TWIST` (the phases of size Omega are rounded:
+    measured <= 0.58 eps |Omega|), :data:`PHASE_ERROR` eps from it on (the phase form)."""
+    om = np.abs(np.asarray(twist_angle, dtype=float))
+    return np.where(om >= BRACKET_MIN_TWIST, PHASE_ERROR * _EPS, _EPS * (8.0 + om))
 
 
 def characteristic_determinant(family: str, p_star: float, twist_angle: float, nu: float,

@@ -11,12 +11,19 @@ characteristic equation (tests/test_extremes.py and the ``extremes`` scene):
   whereas collocation needs n ~ |Omega|/2 + 4.5 |Omega|^(1/3) + 10 at tol 1e-12 (n capped at 512;
   :func:`spectral_rod.straight_rod.resolution.initial_degree`) and loses accuracy to
   round-off (1e-12 at Omega(L) = 200);
-* nu - 1 <= :data:`NEAR_DEGENERATE` = 1e-3 (and |Omega(L)| < 50): p* = 1 + the increment of
-  :mod:`spectral_rod.increment` (the lowest eigenvalue is nearly double there and collocation's
-  p* - 1 loses its relative accuracy; the increment keeps p* - 1 to 1e-12 relative on the grid of
-  tests/test_increment.py; a hunt of 3,000 random points, Omega(L) in [1e-4, 50], nu - 1 in
-  [1e-14, 1e-3], measured <= 6.1e-13, <= 2.3e-14 for nu - 1 <= 1e-5);
-* otherwise Chebyshev collocation (:mod:`spectral_rod.straight_rod`, <= ~3e-14 relative).
+* otherwise Chebyshev collocation (:mod:`spectral_rod.straight_rod`, <= ~5e-14 relative),
+  near-degenerate points (nu - 1 <= :data:`NEAR_DEGENERATE` = 1e-3) included: p* itself is well
+  conditioned there (the nearly double pair of eigenvalues is split between the two parity
+  families, each solved on its own), measured <= 4.7e-14 relative with no unflagged miss at
+  tol 1e-12..1e-14 on 2,000 random points (Omega(L) in [0, 50], nu - 1 log-uniform in
+  [1e-14, 1e-3]) against the increment (tests/bench/hunt_routes.py). Only p* - 1 loses its
+  relative accuracy there: :func:`spectral_rod.critical_load_increment` carries it. Where the
+  two families' loads differ by less than the error estimate, the family reported is the one
+  collocation finds lower; either family's mode buckles at p* within the estimate.
+
+The buckling mode (:func:`route` with ``modes=True``) takes the increment at near-degenerate
+points: its parity test of the sin(pi s) coefficient decides the family however close the two
+families' loads are.
 
 A method can also be forced (``method=`` one of :data:`ROD_METHODS`), e.g. to cross-check:
 ``"ritz"`` is the Rayleigh-Ritz discretisation of the lab-frame *energy*
@@ -24,7 +31,7 @@ A method can also be forced (``method=`` one of :data:`ROD_METHODS`), e.g. to cr
 upper bound.
 
 >>> choose_method([10.0, 100.0, 10.0], [1.5, 1.5, 1.0001]).tolist()
-['collocation', 'characteristic', 'increment']
+['collocation', 'characteristic', 'collocation']
 """
 
 from __future__ import annotations
@@ -43,7 +50,8 @@ ROD_METHODS = ("collocation", "characteristic", "increment", "ritz")
 METHOD_DTYPE = f"<U{max(map(len, ROD_METHODS))}"
 #: |Omega(L)| from which the characteristic equation (double precision) is used.
 TWIST_ROUTE = 50.0
-#: nu - 1 up to which p* = 1 + increment (for |Omega(L)| < TWIST_ROUTE).
+#: nu - 1 up to which the buckling mode takes the increment's p* and family (|Omega(L)| <
+#: TWIST_ROUTE), and up to which method="increment" is accepted.
 NEAR_DEGENERATE = 1.0e-3
 #: |Omega(L)| limit of the increment (its sine basis needs N ~ 2|Omega|/pi + 48 modes).
 INCREMENT_MAX_TWIST = 1.0e3
@@ -76,9 +84,10 @@ def check_route(n: object, method: object) -> tuple[int | None, str]:
 
 
 def route(twist: NDArray[np.float64], nu: NDArray[np.float64], n: int | None = None,
-          method: str = "auto") -> NDArray[np.str_]:
+          method: str = "auto", *, modes: bool = False) -> NDArray[np.str_]:
     """The method per point for flat, validated arrays (module docstring); raises ValueError
-    where a forced method is outside its range."""
+    where a forced method is outside its range. ``modes=True`` (the buckling mode's route)
+    sends near-degenerate points to the increment."""
     if method == "increment":
         bad = (nu - 1.0 > NEAR_DEGENERATE) | (np.abs(twist) > INCREMENT_MAX_TWIST)
         if bad.any():
@@ -95,7 +104,8 @@ def route(twist: NDArray[np.float64], nu: NDArray[np.float64], n: int | None = N
     out = np.full(twist.shape, "collocation", dtype=METHOD_DTYPE)
     large = np.abs(twist) >= TWIST_ROUTE
     out[large] = "characteristic"
-    out[~large & (nu - 1.0 <= NEAR_DEGENERATE)] = "increment"
+    if modes:
+        out[~large & (nu - 1.0 <= NEAR_DEGENERATE)] = "increment"
     return out
 
 
@@ -107,9 +117,7 @@ def route_point(twist: float, nu: float, n: int | None = None, method: str = "au
         return method
     if n is not None:
         return "collocation"
-    if abs(twist) >= TWIST_ROUTE:
-        return "characteristic"
-    return "increment" if nu - 1.0 <= NEAR_DEGENERATE else "collocation"
+    return "characteristic" if abs(twist) >= TWIST_ROUTE else "collocation"
 
 
 def choose_method(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None,

@@ -156,6 +156,12 @@ def test_crossing_offset_from_n_pi_shrinks_like_n_cubed():
 def test_input_validation():
     with pytest.raises(ValueError):
         large_twist_expansion(10.0, 1.5, order=1)
+    # a complex, float or str order is a type error naming the parameter, whatever its value
+    for bad in (4 + 0j, 4.0, "4", None, True):
+        with pytest.raises(TypeError, match="order must be an integer"):
+            large_twist_expansion(10.0, 1.5, order=bad)
+    assert large_twist_expansion(10.0, 1.5, order=np.int64(4)) == large_twist_expansion(
+        10.0, 1.5, order=4)
     with pytest.raises(ValueError):
         large_twist_expansion(0.0, 1.5)
     with pytest.raises(ValueError):

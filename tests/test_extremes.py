@@ -110,10 +110,17 @@ def test_negative_twist_is_even():
         assert critical_load(-om, nu) == critical_load(om, nu)
 
 
-def test_unreachable_tolerance_at_large_twist_warns():
-    with pytest.warns(ConvergenceWarning, match="method characteristic"):
-        res = critical_load(1e4, 1.5, tol=1e-14, full_output=True)
-    assert not bool(res.converged)
+@pytest.mark.parametrize(("twist", "nu"), [(1e4, 1.5), (8775.08, 2.2524), (840.689, 1e4)])
+def test_large_twist_route_meets_the_tightest_tol(twist, nu):
+    # the phase form of the determinant (characteristic._phase_terms) rounds no phase of size
+    # Omega: p* to a few eps at any twist, so tol 1e-14 is met, and the estimate holds against
+    # a 60-digit reference (the scan's form erred up to 0.58 eps |Omega|: 1.3e-12 at 1e4)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", ConvergenceWarning)
+        res = critical_load(twist, nu, tol=1e-14, full_output=True)
+    err = abs(res.p_star / float(ref(twist, nu, dps=60).p_star) - 1)
+    assert res.method == "characteristic" and bool(res.converged)
+    assert err <= res.error_estimate <= 1e-14, (err, res.error_estimate)
 
 
 def test_asymptote_limit_and_leading_correction():
@@ -134,13 +141,23 @@ def test_asymptote_limit_and_leading_correction():
 
 
 def test_near_degenerate_route_reports_the_right_family():
-    # p* = 1 + increment there; the family comes from the sin(pi s) coefficient's orientation
+    # p* by collocation there (each family solved on its own: the near-double pair is split
+    # between them), p* - 1 = the increment for the mode's route, whose family comes from the
+    # sin(pi s) coefficient's orientation; both agree with the reference where the families'
+    # loads are apart (here by >= 1e-9 relative)
+    from spectral_rod.router import route
+
     twists = np.array([0.5, 2.0, 5.0, 8.0, 12.0, 20.0])
     for e in (1e-3, 1e-6):
-        res = critical_load(twists, np.full(twists.size, 1 + e), full_output=True)
-        assert np.all(res.method == "increment") and np.all(res.converged)
-        for om, fam in zip(twists, res.family, strict=True):
-            assert fam == ref(float(om), 1 + e).family, (om, e)
+        nu = np.full(twists.size, 1 + e)
+        res = critical_load(twists, nu, full_output=True)
+        assert np.all(res.method == "collocation") and np.all(res.converged)
+        assert np.all(route(twists, nu, modes=True) == "increment")
+        inc = critical_load(twists, nu, method="increment", full_output=True)
+        for om, fam, fam_inc, p in zip(twists, res.family, inc.family, res.p_star, strict=True):
+            r = ref(float(om), 1 + e)
+            assert fam == fam_inc == r.family, (om, e)
+            assert abs(p / float(r.p_star) - 1) <= 1e-13, (om, e)
 
 
 @pytest.mark.parametrize("nu", [1.3, 10.0, 100.0])
