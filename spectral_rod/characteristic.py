@@ -295,6 +295,10 @@ def _closed_form_root(family: str, twist_angle: float, nu: float, dps: int
         return CharacteristicRoot(r, family, xm, xp)
 
 
+#: The ranges of |Omega(L)| and nu the mpmath reference accepts (wider than the production
+#: routes': the reference checks them at their edges); :func:`~spectral_rod.closed_form.mode_fields`
+#: accepts the same.
+REFERENCE_MAX_TWIST, REFERENCE_MAX_NU = 1.0e6, 1.0e8
 #: Allowed ranges of the reference's knobs: working digits, and the scan step in p (below the
 #: default the cost grows, above 1/64 the lowest-root guarantee -- no two roots of one family
 #: within a step -- is no longer backed by the tests' grids).
@@ -304,8 +308,8 @@ DPS_RANGE, SCAN_STEP_RANGE = (15, 200), (1.0e-4, 1.0 / 64)
 def _reference_args(twist_angle: object, nu: object, dps: object, scan_step: object,
                     p_max: object, p_floor: float) -> tuple[float, float, int, float, float | None]:
     """Validated (twist, nu, dps, scan_step, p_max) of the mpmath reference (names in errors)."""
-    om = scalar_twist(twist_angle, max_abs=1e6)
-    nu = scalar_nu(nu, max_value=1e8)
+    om = scalar_twist(twist_angle, max_abs=REFERENCE_MAX_TWIST)
+    nu = scalar_nu(nu, max_value=REFERENCE_MAX_NU)
     dps = check_int(dps, "dps", *DPS_RANGE)
     scan_step = check_real(scan_step, "scan_step", *SCAN_STEP_RANGE)
     if p_max is not None:

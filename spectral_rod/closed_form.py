@@ -16,6 +16,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from spectral_rod._validation import check_int, scalar_nu, scalar_twist
 from spectral_rod.characteristic import (
+    REFERENCE_MAX_NU,
+    REFERENCE_MAX_TWIST,
     CharacteristicRoot,
     bracketed_root_mp,
     determinant,
@@ -171,7 +173,9 @@ def mode_fields(root: CharacteristicRoot, twist_angle: float, nu: float, s: Arra
     """
     if not isinstance(root, CharacteristicRoot):
         raise TypeError(f"root must be a CharacteristicRoot, got {type(root).__name__}")
-    twist_angle, nu = scalar_twist(twist_angle), scalar_nu(nu)
+    # the ranges of characteristic_critical_load, whose roots this accepts
+    twist_angle = scalar_twist(twist_angle, max_abs=REFERENCE_MAX_TWIST)
+    nu = scalar_nu(nu, max_value=REFERENCE_MAX_NU)
     dps = check_int(dps, "dps", 15, 200)
     if twist_angle == 0.0:
         raise ValueError("twist_angle must be non-zero for the closed-form mode (at zero twist "
