@@ -16,9 +16,9 @@ from spectral_rod.characteristic import characteristic_critical_load
 from spectral_rod.closed_form import characteristic_mode
 
 sys.path.insert(0, str(Path(__file__).parent / "bench"))
-import hunt_routes  # noqa: E402
+import hunt_routes
 
-#: The increment route's former silent miss: error 5.5e-14 at tol 1e-14, reported converged.
+#: A point where the increment route errs 5.5e-14 (tol 1e-14 cannot be met there).
 MISS = (840.689, 1.000954)
 
 
