@@ -39,22 +39,41 @@ block-diagonalised by the reflection symmetry.)
 
 The lowest root
 ---------------
-The Rayleigh quotient gives 1 <= p* <= (1 + nu)/2 (:mod:`spectral_rod.families`). Both determinants
-are scanned for sign changes on a grid in p from 1 - 1e-9 upward (:mod:`spectral_rod.sign_scan`)
-and the first bracket is refined: Anderson iteration (bisection fallback) in mpmath,
-Anderson-Bjorck regula falsi in double precision (all points of a batch at once, as is the
-scan). A root exactly at p = 1 (nu = 1 or Omega = 0) is returned in closed form.
-Scan steps (empirical): 1/128 in mpmath, 1/256 in double precision; one family's roots are
-O(1) apart in p on the ranges tested (tests/test_extremes.py, test_two_solvers.py).
+The Rayleigh quotient gives 1 <= p* <= (1 + nu)/2 (:mod:`spectral_rod.families`), and each
+family's lowest load lies in [1, nu]. The lab-frame quotient of Eq. ``inst1``
+(:mod:`spectral_rod.increment`) is >= int |z''|^2 / int |z'|^2, whose eigenvalues are k^2 pi^2,
+each twice (x1 and x2): by min-max at most two eigenvalues of Eq. ``inst1`` (with multiplicity)
+lie below p = 4. Hence a sign change of D_sym and one of D_anti in brackets below p = 4 are
+each family's only, and lowest, root there, and p* is the smaller: the *certificate* of the
+double-precision routes below.
 
-Double precision: the relative error of p* is ~ eps |Omega| (the slow phase sqrt(X_+) - sqrt(X_-)
-is a difference of two phases of size ~Omega); measured <= 7e-13 at 1e4 (tests/test_extremes.py)
-and <= 0.58 eps |Omega| on 3,000 random points (Omega(L) log-uniform in [50, 1e4], nu in
-[1, 1e4], against 40-digit roots; 2026-12-04, tests/bench/measure_error_floors.py): at most
-0.53 of :func:`double_error_estimate` = eps (8 + |Omega|), 8.4e-14 for Omega(L) <= 1000.
-(Its earlier eps (8 + |Omega|/2) was exceeded by up to 1.17 times, e.g. Omega(L) = 8775.08, nu =
-2.2524: error 1.15e-12 against 9.8e-13, so reported converged at tol 1e-12; tests/test_extremes.py
-keeps six such points.)
+* mpmath (the reference): both determinants are scanned for sign changes on a grid in p from
+  1 - 1e-9 upward (:mod:`spectral_rod.sign_scan`, step 1/128) and the first bracket is refined
+  (Anderson iteration, bisection fallback). A root exactly at p = 1 (nu = 1 or Omega = 0) is
+  returned in closed form.
+* double precision, |Omega(L)| >= :data:`BRACKET_MIN_TWIST` = 50: each family's root is
+  bracketed by its large-twist expansion to Omega^-4
+  (:func:`spectral_rod.asymptotics.family_expansions`, half-width :func:`_half_width`), the two
+  brackets are certified as above, and the roots are refined in the *phase form* of the
+  determinants (:func:`_phase_terms`), for all points at once; the scalar path runs the same
+  algorithm in Python floats (:func:`_bracketed_point`).
+* double precision, 1 < nu <= :data:`FAMILY_BOUND_MAX_NU` = 1 + 1e-3: each family's root is
+  refined in the bracket of its bounds [1, nu] (:func:`_family_bound_batch`).
+* elsewhere, and wherever a bracket shows no sign change: the scan in steps of 1/256, its
+  brackets refined together by Anderson-Bjorck regula falsi.
+
+Scan steps (empirical): one family's roots are O(1) apart in p on the ranges tested
+(tests/test_extremes.py, test_two_solvers.py).
+
+Double precision: from |Omega(L)| = 50 on, the phase form rounds no phase of size Omega
+(sqrt(X)/2 = Omega/2 + r/2, with cos and sin of Omega/2 exact and r = sqrt(X) - Omega without
+cancellation): p* to a few eps, measured <= 2 eps on 50 random points (Omega(L) log-uniform in
+[50, 1e4], nu in [1, 1e4], 40-digit references) and <= 3.6e-15 by tests/bench/hunt_routes.py
+(1,000 random points, Omega(L) log-uniform in [1e-3, 1e4]); :func:`double_error_estimate` is
+:data:`PHASE_ERROR` eps there. Below 50 the relative error of :func:`determinants`' roots is
+~eps |Omega| (the slow phase sqrt(X_+) - sqrt(X_-) is a difference of two phases of size Omega),
+measured <= 0.58 eps |Omega| and <= 7 eps at small twist: the estimate is
+eps (:data:`DIRECT_ERROR` + |Omega|).
 """
 
 from __future__ import annotations
@@ -455,10 +474,15 @@ def characteristic_double(twist_angle: float, nu: float) -> tuple[float, str]:
     (1.199987, 'symmetric')
     """
     om, nv = abs(float(twist_angle)), float(nu)
+    found = None
     if om >= BRACKET_MIN_TWIST and nv > 1.0:
         found = _bracketed_point(om, nv)
-        if found is not None:
-            return found
+    elif 1.0 < nv <= FAMILY_BOUND_MAX_NU:
+        found = _family_bound_point(om, nv)
+    elif nv == 1.0:
+        found = 1.0, FAMILIES[0]
+    if found is not None:
+        return found
     p, fam = characteristic_double_batch(np.array([om]), np.array([nv]))
     return float(p[0]), FAMILIES[int(fam[0])]
 
@@ -525,6 +549,53 @@ def _phase_determinant(sym: Any, p: Any, om: Any, nv: Any, half_cos: Any, half_s
     if lib is math:
         return d_sym if sym else d_anti
     return np.where(sym, d_sym, d_anti)
+
+
+#: Up to this nu every family's lowest root is bracketed by the family bounds [1, nu]
+#: (:func:`_family_bound_batch`) instead of being found by the sign scan.
+FAMILY_BOUND_MAX_NU = 1.0 + 1.0e-3
+
+
+def _family_bound_batch(om: NDArray[np.float64], nv: NDArray[np.float64]
+                        ) -> tuple[NDArray[np.float64], NDArray[np.int_], NDArray[np.bool_]]:
+    """(p*, family index, certified) at flat arrays of points with 1 < nu <= FAMILY_BOUND_MAX_NU
+    (any twist): each family's lowest root lies in [1, nu] (:func:`family_critical_load`: the
+    planar trial mode of each family has quotient <= nu) and is its only root below p = 4 (two
+    eigenvalues at most lie below 4, see CERTIFICATE_LOAD), so the brackets [SCAN_START,
+    nu + SCAN_MARGIN] hold exactly one root each. Both are refined together
+    (:func:`~spectral_rod.sign_scan.bracketed_roots` on :func:`determinants`); certified False
+    where the computed determinant shows no sign change over a bracket (the caller scans)."""
+    n = om.size
+    both_om, both_nu = np.concatenate([om, om]), np.concatenate([nv, nv])
+    sym = np.repeat([True, False], n)
+
+    def f(j, x):
+        d_sym, d_anti = _determinants(x, both_om[j], both_nu[j], np.float64, False)
+        return np.where(sym[j], d_sym, d_anti)
+
+    a, b = np.full(2 * n, SCAN_START), both_nu + SCAN_MARGIN
+    idx = np.arange(2 * n)
+    ok = f(idx, a) * f(idx, b) <= 0
+    ok = ok[:n] & ok[n:]
+    live = np.flatnonzero(np.concatenate([ok, ok]))
+    roots = np.full(2 * n, np.nan)
+    roots[live] = _refine_brackets(f, live, a, b)
+    fam = (roots[n:] < roots[:n]).astype(int)
+    return np.where(fam == 1, roots[n:], roots[:n]), fam, ok
+
+
+def _family_bound_point(om: float, nv: float) -> tuple[float, str] | None:
+    """:func:`_family_bound_batch` for one point in Python floats (the scalar path): (p*,
+    family), or None where a bracket shows no sign change."""
+    roots = []
+    for family in FAMILIES:
+        f = _float_function(family, om, nv)
+        a, b = SCAN_START, nv + SCAN_MARGIN
+        if f(a) * f(b) > 0:
+            return None
+        roots.append(bracketed_root(f, a, b))
+    k = int(roots[1] < roots[0])
+    return roots[k], FAMILIES[k]
 
 
 def _bracketed_batch(om: NDArray[np.float64], nv: NDArray[np.float64]
@@ -650,12 +721,14 @@ def characteristic_double_batch(twist: NDArray[np.float64], nu: NDArray[np.float
     """Lowest root p* of the two determinants in double precision, and its family index (0
     symmetric), at flat arrays of points (|Omega|, nu), all points at once.
 
-    One sign scan per point (steps :data:`DOUBLE_SCAN_STEP` from :data:`SCAN_START`, up to
-    (1 + nu)/2, :data:`DOUBLE_CHUNK` grid points at a time for every point still scanning)
-    brackets the first sign change of either family; the brackets of all points are refined
-    together (:func:`spectral_rod.sign_scan.bracketed_roots`, to 4 eps relative like Brent's
-    method). Raises RootNotFoundError if a point has no root. Intended for |Omega(L)| >= ~30
-    (any twist works).
+    The certified brackets of the module docstring where they apply (|Omega(L)| >=
+    :data:`BRACKET_MIN_TWIST`: the large-twist expansion; 1 < nu <= :data:`FAMILY_BOUND_MAX_NU`:
+    the family bounds), p* = 1 exactly at nu = 1, and elsewhere (or where a bracket shows no
+    sign change) one sign scan per point (steps :data:`DOUBLE_SCAN_STEP` from
+    :data:`SCAN_START`, up to (1 + nu)/2, :data:`DOUBLE_CHUNK` grid points at a time for every
+    point still scanning) brackets the first sign change of either family. The brackets of all
+    points are refined together (:func:`spectral_rod.sign_scan.bracketed_roots`, to 4 eps
+    relative like Brent's method). Raises RootNotFoundError if a point has no root.
     """
     om, nv = np.abs(np.asarray(twist, dtype=float)), np.asarray(nu, dtype=float)
     top = (1.0 + nv) / 2.0 + SCAN_MARGIN
@@ -665,6 +738,12 @@ def characteristic_double_batch(twist: NDArray[np.float64], nu: NDArray[np.float
     if large.size:
         p[large], fam[large], ok = _bracketed_batch(om[large], nv[large])
         scan[large[ok]] = False
+    isotropic = np.flatnonzero(nv == 1.0)  # the Euler load, exact (as the mpmath reference)
+    p[isotropic], fam[isotropic], scan[isotropic] = 1.0, 0, False
+    near = np.flatnonzero((om < BRACKET_MIN_TWIST) & (nv > 1.0) & (nv <= FAMILY_BOUND_MAX_NU))
+    if near.size:
+        p[near], fam[near], ok = _family_bound_batch(om[near], nv[near])
+        scan[near[ok]] = False
     scan = np.flatnonzero(scan)
     if scan.size:
         p[scan], fam[scan] = _double_scan(om[scan], nv[scan], top[scan])
@@ -703,12 +782,19 @@ def family_double_batch(twist: NDArray[np.float64], nu: NDArray[np.float64]
 PHASE_ERROR = 16.0
 
 
+#: The constant of the estimate eps (DIRECT_ERROR + |Omega|) below BRACKET_MIN_TWIST: errors of
+#: up to 7 eps measured at Omega(L) < 0.2, nu - 1 <= 1e-3 (3,000 random points against the
+#: increment, tests/bench/hunt_routes.py's near-degenerate sample).
+DIRECT_ERROR = 32.0
+
+
 def double_error_estimate(twist_angle: ArrayLike) -> NDArray[np.float64]:
     """Relative error estimate of :func:`characteristic_double` (empirical, module docstring):
-    eps (8 + |Omega|) below :data:`BRACKET_MIN_TWIST` (the phases of size Omega are rounded:
-    measured <= 0.58 eps |Omega|), :data:`PHASE_ERROR` eps from it on (the phase form)."""
+    eps (DIRECT_ERROR + |Omega|) below :data:`BRACKET_MIN_TWIST` (the phases of size Omega are
+    rounded: measured <= 0.58 eps |Omega|), :data:`PHASE_ERROR` eps from it on (the phase
+    form)."""
     om = np.abs(np.asarray(twist_angle, dtype=float))
-    return np.where(om >= BRACKET_MIN_TWIST, PHASE_ERROR * _EPS, _EPS * (8.0 + om))
+    return np.where(om >= BRACKET_MIN_TWIST, PHASE_ERROR * _EPS, _EPS * (DIRECT_ERROR + om))
 
 
 def characteristic_determinant(family: str, p_star: float, twist_angle: float, nu: float,

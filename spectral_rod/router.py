@@ -6,20 +6,24 @@ characteristic equation (tests/test_extremes.py and the ``extremes`` scene):
 
 * an explicit degree ``n``: Chebyshev collocation everywhere (``n`` is its parameter);
 * |Omega(L)| >= :data:`TWIST_ROUTE` = 50: the characteristic equation in double precision
-  (:func:`spectral_rod.characteristic.characteristic_double`): its cost does not grow with the
-  twist and its relative error is ~eps |Omega| (<= 0.58 eps |Omega|: 1.3e-13 at 1000, 7e-13 at 1e4),
-  whereas collocation needs n ~ |Omega|/2 + 4.5 |Omega|^(1/3) + 10 at tol 1e-12 (n capped at 512;
+  (:func:`spectral_rod.characteristic.characteristic_double`), each family's lowest root
+  bracketed by the large-twist expansion and certified the lowest: its cost does not grow with
+  the twist and its relative error is a few eps (the phases of size Omega are never rounded;
+  measured <= 2 eps against 40-digit references), whereas collocation needs n ~ |Omega|/2 + 4.5 |Omega|^(1/3) + 10 at tol 1e-12 (n capped at 512;
   :func:`spectral_rod.straight_rod.resolution.initial_degree`) and loses accuracy to
   round-off (1e-12 at Omega(L) = 200);
-* otherwise Chebyshev collocation (:mod:`spectral_rod.straight_rod`, <= ~5e-14 relative),
-  near-degenerate points (nu - 1 <= :data:`NEAR_DEGENERATE` = 1e-3) included: p* itself is well
+* nu - 1 <= :data:`NEAR_DEGENERATE` = 1e-3 (and |Omega(L)| < 50): the characteristic
+  equation in double precision too, each family's lowest root refined in the bracket of its
+  bounds [1, nu], which holds exactly that root
+  (:func:`spectral_rod.characteristic.characteristic_double_batch`): p* itself is well
   conditioned there (the nearly double pair of eigenvalues is split between the two parity
-  families, each solved on its own), measured <= 4.7e-14 relative with no unflagged miss at
-  tol 1e-12..1e-14 on 2,000 random points (Omega(L) in [0, 50], nu - 1 log-uniform in
-  [1e-14, 1e-3]) against the increment (tests/bench/hunt_routes.py). Only p* - 1 loses its
+  families), measured <= 4.9e-15 relative on 3,000 random points (Omega(L) in [0, 50], nu - 1
+  log-uniform in [1e-14, 1e-3]) against the increment, no unflagged miss at tol 1e-14 on 1,000
+  more against 40-digit references (tests/bench/hunt_routes.py). Only p* - 1 loses its
   relative accuracy there: :func:`spectral_rod.critical_load_increment` carries it. Where the
   two families' loads differ by less than the error estimate, the family reported is the one
-  collocation finds lower; either family's mode buckles at p* within the estimate.
+  whose computed root is lower; either family's mode buckles at p* within the estimate;
+* otherwise Chebyshev collocation (:mod:`spectral_rod.straight_rod`, <= ~5e-14 relative).
 
 The buckling mode (:func:`route` with ``modes=True``) takes the increment at near-degenerate
 points: its parity test of the sin(pi s) coefficient decides the family however close the two
@@ -31,7 +35,7 @@ A method can also be forced (``method=`` one of :data:`ROD_METHODS`), e.g. to cr
 upper bound.
 
 >>> choose_method([10.0, 100.0, 10.0], [1.5, 1.5, 1.0001]).tolist()
-['collocation', 'characteristic', 'collocation']
+['collocation', 'characteristic', 'characteristic']
 """
 
 from __future__ import annotations
@@ -102,10 +106,9 @@ def route(twist: NDArray[np.float64], nu: NDArray[np.float64], n: int | None = N
     if n is not None:
         return np.full(twist.shape, "collocation", dtype=METHOD_DTYPE)
     out = np.full(twist.shape, "collocation", dtype=METHOD_DTYPE)
-    large = np.abs(twist) >= TWIST_ROUTE
-    out[large] = "characteristic"
+    out[(np.abs(twist) >= TWIST_ROUTE) | (nu - 1.0 <= NEAR_DEGENERATE)] = "characteristic"
     if modes:
-        out[~large & (nu - 1.0 <= NEAR_DEGENERATE)] = "increment"
+        out[(np.abs(twist) < TWIST_ROUTE) & (nu - 1.0 <= NEAR_DEGENERATE)] = "increment"
     return out
 
 
@@ -117,7 +120,9 @@ def route_point(twist: float, nu: float, n: int | None = None, method: str = "au
         return method
     if n is not None:
         return "collocation"
-    return "characteristic" if abs(twist) >= TWIST_ROUTE else "collocation"
+    if abs(twist) >= TWIST_ROUTE or nu - 1.0 <= NEAR_DEGENERATE:
+        return "characteristic"
+    return "collocation"
 
 
 def choose_method(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None,
