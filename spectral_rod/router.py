@@ -9,7 +9,8 @@ characteristic equation (tests/test_extremes.py and the ``extremes`` scene):
   (:func:`spectral_rod.characteristic.characteristic_double`), each family's lowest root
   bracketed by the large-twist expansion and certified the lowest: its cost does not grow with
   the twist and its relative error is a few eps (the phases of size Omega are never rounded;
-  measured <= 2 eps against 40-digit references), whereas collocation needs n ~ |Omega|/2 + 4.5 |Omega|^(1/3) + 10 at tol 1e-12 (n capped at 512;
+  measured <= 2 eps against 40-digit references), whereas collocation needs
+  n ~ |Omega|/2 + 4.5 |Omega|^(1/3) + 10 at tol 1e-12 (n capped at 512;
   :func:`spectral_rod.straight_rod.resolution.initial_degree`) and loses accuracy to
   round-off (1e-12 at Omega(L) = 200);
 * nu - 1 <= :data:`NEAR_DEGENERATE` = 1e-3 (and |Omega(L)| < 50): the characteristic

@@ -142,9 +142,9 @@ def test_asymptote_limit_and_leading_correction():
 
 def test_near_degenerate_route_reports_the_right_family():
     # p* by the characteristic equation there (each family's root in the bracket of its bounds
-    # [1, nu]: the near-double pair is split between them), the increment for the mode's route, whose family comes from the
-    # sin(pi s) coefficient's orientation; both agree with the reference where the families'
-    # loads are apart (here by >= 1e-9 relative)
+    # [1, nu]: the near-double pair is split between them), the increment on the mode's route,
+    # whose family comes from the sin(pi s) coefficient's orientation; both agree with the
+    # reference where the families' loads are apart (here by >= 1e-9 relative)
     from spectral_rod.router import route
 
     twists = np.array([0.5, 2.0, 5.0, 8.0, 12.0, 20.0])
