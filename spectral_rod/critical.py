@@ -78,7 +78,7 @@ def _increment(tw, nv, n, tol):
     from spectral_rod.increment import galerkin_increments, increment_error_estimate
 
     d, fam, modes = galerkin_increments(tw, nv)
-    return 1.0 + d, modes, increment_error_estimate(tw, d), fam
+    return 1.0 + d, modes, increment_error_estimate(d), fam
 
 
 def _ritz(tw, nv, n, tol):
