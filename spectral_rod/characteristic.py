@@ -126,12 +126,12 @@ DOUBLE_CHUNK = 129
 #: A few points (or brackets): up to this many, a double-precision scan takes passes of
 #: ONE_POINT_CHUNK grid points, and its refinement runs one bracket at a time in Python floats
 #: (:func:`~spectral_rod.sign_scan.bracketed_root` on :func:`determinant` with ``lib=math``,
-#: 1.1 us an evaluation), where numpy's per-call cost on arrays of one or two entries made a
-#: scalar call at large twist take 1.2 ms (measured 2026-12-05: 0.21 ms now).
+#: 1.1 us an evaluation), where numpy's per-call cost on arrays of one or two entries would be
+#: most of the time (measured: 1.2 ms a scalar scan on arrays, 0.21 ms in floats).
 FEW_POINTS = 4
 #: One pass of this many grid points reaches p = 2, above the large-twist limit 2 nu/(1 + nu)
-#: (passes of DOUBLE_CHUNK, 71 us each for one point, took 1.8 a point on average on 30 random
-#: large-twist points; measured 2026-12-05).
+#: (passes of DOUBLE_CHUNK, 71 us each for one point, take 1.8 a point on average on 30 random
+#: large-twist points).
 ONE_POINT_CHUNK = 257
 _EPS = float(np.finfo(float).eps)
 #: The precisions of :func:`determinants` (those of :func:`entire_cs_double`).

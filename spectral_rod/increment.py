@@ -115,8 +115,8 @@ GALERKIN_MAX_GAIN, GALERKIN_MAX_GAIN_LARGE_TWIST = 1.0, 1.0e-2
 #: Below this |Omega(L)| the increment is solved at it and scaled by (Omega / QUADRATIC_TWIST)^2:
 #: p* - 1 is even and analytic in Omega, c(nu) Omega^2 (1 + O(nu^2 Omega^2)), so the scaling is
 #: exact to ~1e-192, whereas the moments' products underflow from |Omega| ~ 1e-142 on (measured
-#: 2026-12-04, nu - 1 = 1e-14: 8.8e-8 relative at 1e-144, -3.7e-4 at 1e-146, 0.0 at 1e-148;
-#: nu = 101 at 1e-160: -1.8e-320, i.e. a negative p* - 1).
+#: without the scaling, nu - 1 = 1e-14: 8.8e-8 relative at 1e-144, -3.7e-4 at 1e-146, 0.0 at
+#: 1e-148; nu = 101 at 1e-160: -1.8e-320, i.e. a negative p* - 1).
 QUADRATIC_TWIST = 1.0e-100
 _MAX_NEWTON = 60
 _EPS = float(np.finfo(float).eps)
