@@ -458,7 +458,7 @@ def _float_determinant(family: str, om: float, nu: float, p: float) -> float:
 def _float_function(family: str, om: float, nu: float) -> Any:
     """p -> D_sym or D_anti in Python floats: the phase form from |Omega| >=
     BRACKET_MIN_TWIST (as the batched refinement), :func:`determinant` below it."""
-    if om >= BRACKET_MIN_TWIST:
+    if om >= BRACKET_MIN_TWIST:  # roots below p = 4 there: X_- > 0 in their brackets
         hc, hs = math.cos(0.5 * om), math.sin(0.5 * om)
         return lambda p: _phase_determinant(family == "symmetric", p, om, nu, hc, hs, math)
     return partial(_float_determinant, family, om, nu)
@@ -698,7 +698,7 @@ def _double_scan(om: NDArray[np.float64], nv: NDArray[np.float64], top: NDArray[
         # from BRACKET_MIN_TWIST on in the phase form (its roots lie below p = 2 there, where
         # Omega^2 > lambda as _phase_terms needs): the same eps-level accuracy as the bracket
         om_p, nv_p = om[points], nv[points]
-        phase = om_p >= BRACKET_MIN_TWIST
+        phase = (om_p >= BRACKET_MIN_TWIST) & (np.pi**2 * b < 0.5 * om_p**2)  # X_- > 0 there
         hc, hs = np.cos(0.5 * om_p), np.sin(0.5 * om_p)
 
         def f(j, x):
