@@ -503,9 +503,10 @@ def characteristic_double(twist_angle: float, nu: float) -> tuple[float, str]:
 #: |Omega(L)| from which the lowest root is bracketed by the large-twist expansion.
 BRACKET_MIN_TWIST = 50.0
 #: The bracket's half-width is BRACKET_REMAINDER / Omega^5 (the expansion's remainder: measured
-#: <= 128 Omega^-5 on 4,000 random points, Omega(L) in [20, 1e4], nu in [1, 1e4], by
-#: tests/bench/large_twist_bracket.py) plus BRACKET_NOISE times :func:`double_error_estimate`
-#: (so that the sign at the bracket's ends is decided by the root, not by rounding).
+#: <= 77 Omega^-5 on 4,000 random points, Omega(L) log-uniform in [20, 1e4], nu in [1, 1e4],
+#: where it exceeds the scan's rounding, Omega(L) < 1e3; tests/bench/large_twist_bracket.py)
+#: plus BRACKET_NOISE eps (8 + |Omega|) (so that the sign at the bracket's ends is decided by
+#: the root, not by rounding).
 BRACKET_REMAINDER, BRACKET_NOISE = 400.0, 64.0
 #: Below this load the lab-frame comparison problem has only two eigenvalues (see above).
 CERTIFICATE_LOAD = 4.0
