@@ -95,7 +95,7 @@ from spectral_rod._validation import (
 from spectral_rod.errors import RootNotFoundError
 from spectral_rod.families import FAMILIES, check_family, euler_loads
 from spectral_rod.sign_scan import bracketed_root, bracketed_roots, lowest_root, lowest_roots
-from spectral_rod.wavenumbers import characteristic_roots
+from spectral_rod.wavenumbers import characteristic_roots, root_offsets
 
 if TYPE_CHECKING:  # mpmath is imported where it is used: the double-precision route needs none
     import mpmath as mp
@@ -524,14 +524,12 @@ def _phase_terms(p: Any, om: Any, nv: Any, half_cos: Any, half_sin: Any, lib: An
     computed as (X - Omega^2)/(sqrt(X) + Omega) and cos, sin of Omega/2 + r/2 by the addition
     theorem from the exact half_cos = cos(Omega/2), half_sin = sin(Omega/2): a phase of size
     Omega is never rounded, which is the eps |Omega| error of :func:`determinants` there.
-    X_+ - Omega^2 = (lambda + mu + R)/2 and (X_+ - Omega^2)(X_- - Omega^2) = lambda mu -
-    2 Omega^2 (lambda + mu) (R^2 = (lambda - mu)^2 + 8 Omega^2 (lambda + mu)) hold without
-    cancellation at large twist. numpy arrays (lib=np) or Python floats (lib=math)."""
+    X - Omega^2 from :func:`spectral_rod.wavenumbers.root_offsets`, without cancellation at
+    large twist. numpy arrays (lib=np) or Python floats (lib=math)."""
     lam = math.pi**2 * p
     mu = lam / nv
     q = om * om
-    u_plus = 0.5 * (lam + mu + lib.sqrt((lam - mu) ** 2 + 8.0 * q * (lam + mu)))
-    u_minus = (lam * mu - 2.0 * q * (lam + mu)) / u_plus
+    u_minus, u_plus = root_offsets(lam, mu, om, sqrt=lib.sqrt)
     out = []
     for u in (u_minus, u_plus):
         beta = lib.sqrt(q + u)

@@ -118,7 +118,7 @@ def buckling_mode(twist_angle: float, nu: float, *, n: int | None = None, tol: f
     tol, npts = check_tol(tol), _check_points(points)
     n, method = check_route(n, method)
     tw, nv = np.array([abs(twist)]), np.array([nu_f])
-    res = solve_points(tw, nv, route(tw, nv, n, method, modes=True), n, tol)
+    res = solve_points(tw, nv, route(tw, nv, n, method), n, tol)
     apply_bounds(res, nv)
     converged = res.error_estimate <= tol
     warn_unconverged("buckling_mode", converged, res, tw, nv, tol)

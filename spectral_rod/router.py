@@ -23,12 +23,9 @@ characteristic equation (tests/test_extremes.py and the ``extremes`` scene):
   more against 40-digit references (tests/bench/hunt_routes.py). Only p* - 1 loses its
   relative accuracy there: :func:`spectral_rod.critical_load_increment` carries it. Where the
   two families' loads differ by less than the error estimate, the family reported is the one
-  whose computed root is lower; either family's mode buckles at p* within the estimate;
+  whose computed root is lower; either family's mode buckles at p* within the estimate (the
+  buckling mode is that family's closed form, :mod:`spectral_rod.mode`);
 * otherwise Chebyshev collocation (:mod:`spectral_rod.straight_rod`, <= ~5e-14 relative).
-
-The buckling mode (:func:`route` with ``modes=True``) takes the increment at near-degenerate
-points: its parity test of the sin(pi s) coefficient decides the family however close the two
-families' loads are.
 
 A method can also be forced (``method=`` one of :data:`ROD_METHODS`), e.g. to cross-check:
 ``"ritz"`` is the Rayleigh-Ritz discretisation of the lab-frame *energy*
@@ -55,8 +52,8 @@ ROD_METHODS = ("collocation", "characteristic", "increment", "ritz")
 METHOD_DTYPE = f"<U{max(map(len, ROD_METHODS))}"
 #: |Omega(L)| from which the characteristic equation (double precision) is used.
 TWIST_ROUTE = 50.0
-#: nu - 1 up to which the buckling mode takes the increment's p* and family (|Omega(L)| <
-#: TWIST_ROUTE), and up to which method="increment" is accepted.
+#: nu - 1 up to which p* comes from the characteristic equation in the family bounds'
+#: brackets (|Omega(L)| < TWIST_ROUTE), and up to which method="increment" is accepted.
 NEAR_DEGENERATE = 1.0e-3
 #: |Omega(L)| limit of the increment (its sine basis needs N ~ 2|Omega|/pi + 48 modes).
 INCREMENT_MAX_TWIST = 1.0e3
@@ -89,10 +86,9 @@ def check_route(n: object, method: object) -> tuple[int | None, str]:
 
 
 def route(twist: NDArray[np.float64], nu: NDArray[np.float64], n: int | None = None,
-          method: str = "auto", *, modes: bool = False) -> NDArray[np.str_]:
+          method: str = "auto") -> NDArray[np.str_]:
     """The method per point for flat, validated arrays (module docstring); raises ValueError
-    where a forced method is outside its range. ``modes=True`` (the buckling mode's route)
-    sends near-degenerate points to the increment."""
+    where a forced method is outside its range."""
     if method == "increment":
         bad = (nu - 1.0 > NEAR_DEGENERATE) | (np.abs(twist) > INCREMENT_MAX_TWIST)
         if bad.any():
@@ -108,8 +104,6 @@ def route(twist: NDArray[np.float64], nu: NDArray[np.float64], n: int | None = N
         return np.full(twist.shape, "collocation", dtype=METHOD_DTYPE)
     out = np.full(twist.shape, "collocation", dtype=METHOD_DTYPE)
     out[(np.abs(twist) >= TWIST_ROUTE) | (nu - 1.0 <= NEAR_DEGENERATE)] = "characteristic"
-    if modes:
-        out[(np.abs(twist) < TWIST_ROUTE) & (nu - 1.0 <= NEAR_DEGENERATE)] = "increment"
     return out
 
 

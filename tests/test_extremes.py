@@ -142,17 +142,14 @@ def test_asymptote_limit_and_leading_correction():
 
 def test_near_degenerate_route_reports_the_right_family():
     # p* by the characteristic equation there (each family's root in the bracket of its bounds
-    # [1, nu]: the near-double pair is split between them), the increment on the mode's route,
-    # whose family comes from the sin(pi s) coefficient's orientation; both agree with the
-    # reference where the families' loads are apart (here by >= 1e-9 relative)
-    from spectral_rod.router import route
-
+    # [1, nu]: the near-double pair is split between them), and by the forced increment, whose
+    # family comes from the sin(pi s) coefficient's orientation: both agree with the reference
+    # where the families' loads are apart (here by >= 1e-9 relative)
     twists = np.array([0.5, 2.0, 5.0, 8.0, 12.0, 20.0])
     for e in (1e-3, 1e-6):
         nu = np.full(twists.size, 1 + e)
         res = critical_load(twists, nu, full_output=True)
         assert np.all(res.method == "characteristic") and np.all(res.converged)
-        assert np.all(route(twists, nu, modes=True) == "increment")
         inc = critical_load(twists, nu, method="increment", full_output=True)
         for om, fam, fam_inc, p in zip(twists, res.family, inc.family, res.p_star, strict=True):
             r = ref(float(om), 1 + e)
