@@ -782,8 +782,9 @@ PHASE_ERROR = 16.0
 
 
 #: The constant of the estimate eps (DIRECT_ERROR + |Omega|) below BRACKET_MIN_TWIST: errors of
-#: up to 7 eps measured at Omega(L) < 0.2, nu - 1 <= 1e-3 (3,000 random points against the
-#: increment, tests/bench/hunt_routes.py's near-degenerate sample).
+#: up to 7 eps occur at small twist near nu = 1 (Omega(L) < 0.2, nu - 1 <= 1e-3); with it the
+#: largest error / estimate of tests/bench/hunt_routes.py is 0.25 (characteristic) and 0.31
+#: (near-degenerate) on 1,000 random points each.
 DIRECT_ERROR = 32.0
 
 

@@ -18,9 +18,9 @@ characteristic equation (tests/test_extremes.py and the ``extremes`` scene):
   bounds [1, nu], which holds exactly that root
   (:func:`spectral_rod.characteristic.characteristic_double_batch`): p* itself is well
   conditioned there (the nearly double pair of eigenvalues is split between the two parity
-  families), measured <= 4.9e-15 relative on 3,000 random points (Omega(L) in [0, 50], nu - 1
-  log-uniform in [1e-14, 1e-3]) against the increment, no unflagged miss at tol 1e-14 on 1,000
-  more against 40-digit references (tests/bench/hunt_routes.py). Only p* - 1 loses its
+  families), measured <= 4.2e-15 relative (0.31 of its error estimate) on 1,000 random points
+  (Omega(L) in [0, 50], nu - 1 log-uniform in [1e-14, 1e-3]) against 40-digit references, no
+  unflagged miss at tol 1e-14 (tests/bench/hunt_routes.py). Only p* - 1 loses its
   relative accuracy there: :func:`spectral_rod.critical_load_increment` carries it. Where the
   two families' loads differ by less than the error estimate, the family reported is the one
   whose computed root is lower; either family's mode buckles at p* within the estimate (the
