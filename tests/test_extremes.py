@@ -41,9 +41,9 @@ def test_large_twist(twist):
         assert abs(p / r - 1) <= (1e-12 if twist <= 1000 else 1e-10), (twist, nu)
 
 
-#: Points where the large-twist route's error exceeded its former estimate eps (8 + |Omega|/2)
-#: (found in 10,000 random points, 2026-12-04); the first three were reported converged at
-#: tol 1e-12 with errors 1.0-1.15e-12.
+#: Points where the scan's form of the determinant errs most against eps (8 + |Omega|/2) (found
+#: in 10,000 random points: errors 1.0-1.15e-12 there); the large-twist route must hold its
+#: estimate at each.
 _ESTIMATE_CASES = [(8775.081227357037, 2.2523657938590413), (8685.003035619822, 41.93491002652112),
                    (8960.961019974397, 54.54391487902656), (1539.9474543687268, 1.0003099460011529),
                    (523.9620830216875, 1.00005013732912), (4165.799573797133, 1.254058073853725)]

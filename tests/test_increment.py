@@ -147,7 +147,7 @@ def test_increment_at_vanishing_twist_is_quadratic(twist, nu):
     the quartic term is ~1e-12 relative at 1e-6): the reference is c from the mpmath
     characteristic equation at Omega(L) = 1e-6. Down to the subnormal range (where the spacing
     of doubles, 4.9e-324, limits any answer) the increment keeps it, and it is never negative
-    (before 2026-12-04: -3.7e-4 relative at 1e-146, 0.0 at 1e-148, -1.7e-316 at 1e-159)."""
+    (unscaled moments give -3.7e-4 relative at 1e-146, 0.0 at 1e-148, -1.7e-316 at 1e-159)."""
     c = ref_increment(1e-6, nu, dps=80) / 1e-12
     ref = c * twist * twist
     got = critical_load_increment(twist, nu)

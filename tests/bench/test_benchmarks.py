@@ -50,7 +50,7 @@ FLOORS = {
     "figure1 batch": 30.0, "figure1 per curve": 22.0, "batches of 100": 12.0,
     "batches of 10": 4.0, "scalar loop": 4.5, "one-point arrays": 4.5, "brentq search": 4.5,
     "map collocation part": 10.0, "map colloc., equal n": 30.0, "map all points": 5.0,
-    # against the baseline: the targets of issue 37 (met: tests/bench/HISTORY.md)
+    # against the baseline: the targets of these patterns (met: tests/bench/HISTORY.md)
     "large twist": 20.0, "near-degenerate": 20.0, "10^6 random points": 20.0,
     "large twist, scalar": 5.0, "near-degenerate, scalar": 5.0,
     "scalar loop, twist 20-50": 1.7,
@@ -525,7 +525,7 @@ def test_near_degenerate_scalar_loop(benchmark, near_degenerate, bench_registry)
 
 #: Points of the one-call row, and the sample the baseline is timed (and accuracy judged) on.
 MILLION, MILLION_SAMPLE = 1_000_000, 200
-#: Peak memory allowed for the one-call row (issue 37).
+#: Peak memory allowed for the one-call row.
 MILLION_PEAK_MB = 500.0
 
 
