@@ -255,7 +255,8 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
         "* Large twist, both methods measured (table below): collocation's n grows with Ω(L) "
         "and its round-off with n; the characteristic equation costs the same at any twist. "
         f"Routing: |Ω(L)| >= {TWIST_ROUTE:g} -> characteristic equation; ν − 1 <= "
-        f"{NEAR_DEGENERATE:g} (|Ω| < {TWIST_ROUTE:g}) -> 1 + increment; else collocation.",
+        f"{NEAR_DEGENERATE:g} (|Ω| < {TWIST_ROUTE:g}) -> characteristic equation (each family's "
+        "root in its bounds [1, ν]); else collocation.",
         "* Asymptote (not used for values): p* = p_inf [1 − π²(ν−1)²/(4(ν+1)²Ω²)] + "
         "O(Ω⁻³) with p_inf = 2ν/(1+ν); the O(Ω⁻³) term is the ripple "
         "−π²(ν−1)/(ν+1) p_inf |sin Ω|/Ω³ (`spectral_rod.asymptotics`).",

@@ -39,22 +39,41 @@ block-diagonalised by the reflection symmetry.)
 
 The lowest root
 ---------------
-The Rayleigh quotient gives 1 <= p* <= (1 + nu)/2 (:mod:`spectral_rod.families`). Both determinants
-are scanned for sign changes on a grid in p from 1 - 1e-9 upward (:mod:`spectral_rod.sign_scan`)
-and the first bracket is refined: Anderson iteration (bisection fallback) in mpmath,
-Anderson-Bjorck regula falsi in double precision (all points of a batch at once, as is the
-scan). A root exactly at p = 1 (nu = 1 or Omega = 0) is returned in closed form.
-Scan steps (empirical): 1/128 in mpmath, 1/256 in double precision; one family's roots are
-O(1) apart in p on the ranges tested (tests/test_extremes.py, test_two_solvers.py).
+The Rayleigh quotient gives 1 <= p* <= (1 + nu)/2 (:mod:`spectral_rod.families`), and each
+family's lowest load lies in [1, nu]. The lab-frame quotient of Eq. ``inst1``
+(:mod:`spectral_rod.increment`) is >= int |z''|^2 / int |z'|^2, whose eigenvalues are k^2 pi^2,
+each twice (x1 and x2): by min-max at most two eigenvalues of Eq. ``inst1`` (with multiplicity)
+lie below p = 4. Hence a sign change of D_sym and one of D_anti in brackets below p = 4 are
+each family's only, and lowest, root there, and p* is the smaller: the *certificate* of the
+double-precision routes below.
 
-Double precision: the relative error of p* is ~ eps |Omega| (the slow phase sqrt(X_+) - sqrt(X_-)
-is a difference of two phases of size ~Omega); measured <= 7e-13 at 1e4 (tests/test_extremes.py)
-and <= 0.58 eps |Omega| on 3,000 random points (Omega(L) log-uniform in [50, 1e4], nu in
-[1, 1e4], against 40-digit roots; 2026-12-04, tests/bench/measure_error_floors.py): at most
-0.53 of :func:`double_error_estimate` = eps (8 + |Omega|), 8.4e-14 for Omega(L) <= 1000.
-(Its earlier eps (8 + |Omega|/2) was exceeded by up to 1.17 times, e.g. Omega(L) = 8775.08, nu =
-2.2524: error 1.15e-12 against 9.8e-13, so reported converged at tol 1e-12; tests/test_extremes.py
-keeps six such points.)
+* mpmath (the reference): both determinants are scanned for sign changes on a grid in p from
+  1 - 1e-9 upward (:mod:`spectral_rod.sign_scan`, step 1/128) and the first bracket is refined
+  (Anderson iteration, bisection fallback). A root exactly at p = 1 (nu = 1 or Omega = 0) is
+  returned in closed form.
+* double precision, |Omega(L)| >= :data:`BRACKET_MIN_TWIST` = 50: each family's root is
+  bracketed by its large-twist expansion to Omega^-4
+  (:func:`spectral_rod.asymptotics.family_expansions`, half-width :func:`_half_width`), the two
+  brackets are certified as above, and the roots are refined in the *phase form* of the
+  determinants (:func:`_phase_terms`), for all points at once; the scalar path runs the same
+  algorithm in Python floats (:func:`_bracketed_point`).
+* double precision, 1 < nu <= :data:`FAMILY_BOUND_MAX_NU` = 1 + 1e-3: each family's root is
+  refined in the bracket of its bounds [1, nu] (:func:`_family_bound_batch`).
+* elsewhere, and wherever a bracket shows no sign change: the scan in steps of 1/256, its
+  brackets refined together by Anderson-Bjorck regula falsi.
+
+Scan steps (empirical): one family's roots are O(1) apart in p on the ranges tested
+(tests/test_extremes.py, test_two_solvers.py).
+
+Double precision: from |Omega(L)| = 50 on, the phase form rounds no phase of size Omega
+(sqrt(X)/2 = Omega/2 + r/2, with cos and sin of Omega/2 exact and r = sqrt(X) - Omega without
+cancellation): p* to a few eps, measured <= 2 eps on 50 random points (Omega(L) log-uniform in
+[50, 1e4], nu in [1, 1e4], 40-digit references) and <= 3.6e-15 by tests/bench/hunt_routes.py
+(1,000 random points, Omega(L) log-uniform in [1e-3, 1e4]); :func:`double_error_estimate` is
+:data:`PHASE_ERROR` eps there. Below 50 the relative error of :func:`determinants`' roots is
+~eps |Omega| (the slow phase sqrt(X_+) - sqrt(X_-) is a difference of two phases of size Omega),
+measured <= 0.58 eps |Omega| and <= 7 eps at small twist: the estimate is
+eps (:data:`DIRECT_ERROR` + |Omega|).
 """
 
 from __future__ import annotations
@@ -76,7 +95,7 @@ from spectral_rod._validation import (
 from spectral_rod.errors import RootNotFoundError
 from spectral_rod.families import FAMILIES, check_family, euler_loads
 from spectral_rod.sign_scan import bracketed_root, bracketed_roots, lowest_root, lowest_roots
-from spectral_rod.wavenumbers import characteristic_roots
+from spectral_rod.wavenumbers import characteristic_roots, root_offsets
 
 if TYPE_CHECKING:  # mpmath is imported where it is used: the double-precision route needs none
     import mpmath as mp
@@ -107,12 +126,12 @@ DOUBLE_CHUNK = 129
 #: A few points (or brackets): up to this many, a double-precision scan takes passes of
 #: ONE_POINT_CHUNK grid points, and its refinement runs one bracket at a time in Python floats
 #: (:func:`~spectral_rod.sign_scan.bracketed_root` on :func:`determinant` with ``lib=math``,
-#: 1.1 us an evaluation), where numpy's per-call cost on arrays of one or two entries made a
-#: scalar call at large twist take 1.2 ms (measured 2026-12-05: 0.21 ms now).
+#: 1.1 us an evaluation), where numpy's per-call cost on arrays of one or two entries would be
+#: most of the time (measured: 1.2 ms a scalar scan on arrays, 0.21 ms in floats).
 FEW_POINTS = 4
 #: One pass of this many grid points reaches p = 2, above the large-twist limit 2 nu/(1 + nu)
-#: (passes of DOUBLE_CHUNK, 71 us each for one point, took 1.8 a point on average on 30 random
-#: large-twist points; measured 2026-12-05).
+#: (passes of DOUBLE_CHUNK, 71 us each for one point, take 1.8 a point on average on 30 random
+#: large-twist points).
 ONE_POINT_CHUNK = 257
 _EPS = float(np.finfo(float).eps)
 #: The precisions of :func:`determinants` (those of :func:`entire_cs_double`).
@@ -295,6 +314,10 @@ def _closed_form_root(family: str, twist_angle: float, nu: float, dps: int
         return CharacteristicRoot(r, family, xm, xp)
 
 
+#: The ranges of |Omega(L)| and nu the mpmath reference accepts (wider than the production
+#: routes': the reference checks them at their edges); :func:`~spectral_rod.closed_form.mode_fields`
+#: accepts the same.
+REFERENCE_MAX_TWIST, REFERENCE_MAX_NU = 1.0e6, 1.0e8
 #: Allowed ranges of the reference's knobs: working digits, and the scan step in p (below the
 #: default the cost grows, above 1/64 the lowest-root guarantee -- no two roots of one family
 #: within a step -- is no longer backed by the tests' grids).
@@ -304,8 +327,8 @@ DPS_RANGE, SCAN_STEP_RANGE = (15, 200), (1.0e-4, 1.0 / 64)
 def _reference_args(twist_angle: object, nu: object, dps: object, scan_step: object,
                     p_max: object, p_floor: float) -> tuple[float, float, int, float, float | None]:
     """Validated (twist, nu, dps, scan_step, p_max) of the mpmath reference (names in errors)."""
-    om = scalar_twist(twist_angle, max_abs=1e6)
-    nu = scalar_nu(nu, max_value=1e8)
+    om = scalar_twist(twist_angle, max_abs=REFERENCE_MAX_TWIST)
+    nu = scalar_nu(nu, max_value=REFERENCE_MAX_NU)
     dps = check_int(dps, "dps", *DPS_RANGE)
     scan_step = check_real(scan_step, "scan_step", *SCAN_STEP_RANGE)
     if p_max is not None:
@@ -432,17 +455,222 @@ def _float_determinant(family: str, om: float, nu: float, p: float) -> float:
     return determinant(family, math.pi**2 * p, om, nu, lib=math)
 
 
+def _float_function(family: str, om: float, nu: float) -> Any:
+    """p -> D_sym or D_anti in Python floats: the phase form from |Omega| >=
+    BRACKET_MIN_TWIST (as the batched refinement), :func:`determinant` below it."""
+    if om >= BRACKET_MIN_TWIST:  # roots below p = 4 there: X_- > 0 in their brackets
+        hc, hs = math.cos(0.5 * om), math.sin(0.5 * om)
+        return lambda p: _phase_determinant(family == "symmetric", p, om, nu, hc, hs, math)
+    return partial(_float_determinant, family, om, nu)
+
+
 def characteristic_double(twist_angle: float, nu: float) -> tuple[float, str]:
     """Lowest root p* of the two determinants in double precision, and its family (one point
-    of :func:`characteristic_double_batch`).
+    of :func:`characteristic_double_batch`; from |Omega(L)| >= :data:`BRACKET_MIN_TWIST` the
+    same certified bracket in Python floats, :func:`_bracketed_point`).
 
     >>> p, family = characteristic_double(100.0, 1.5)
     >>> round(p, 6), family
     (1.199987, 'symmetric')
     """
-    p, fam = characteristic_double_batch(np.array([abs(float(twist_angle))]),
-                                         np.array([float(nu)]))
+    om, nv = abs(float(twist_angle)), float(nu)
+    found = None
+    if om >= BRACKET_MIN_TWIST and nv > 1.0:
+        found = _bracketed_point(om, nv)
+    elif 1.0 < nv <= FAMILY_BOUND_MAX_NU:
+        found = _family_bound_point(om, nv)
+    elif nv == 1.0:
+        found = 1.0, FAMILIES[0]
+    if found is not None:
+        return found
+    p, fam = characteristic_double_batch(np.array([om]), np.array([nv]))
     return float(p[0]), FAMILIES[int(fam[0])]
+
+
+# --- the large-twist bracket ----------------------------------------------------------------
+#
+# From |Omega(L)| >= BRACKET_MIN_TWIST each family's lowest root is bracketed by its large-twist
+# expansion (spectral_rod.asymptotics.family_expansions, remainder O(Omega^-5)) instead of being
+# found by the sign scan. The certificate that the two roots found are the two lowest
+# eigenvalues: the lab-frame Rayleigh quotient of Eq. inst1 (spectral_rod.increment) is
+# [int |z''|^2 + (nu - 1) int omega2^2] / int |z'|^2 >= int |z''|^2 / int |z'|^2, whose
+# eigenvalues are k^2 pi^2, each twice (x1 and x2); by min-max the third eigenvalue of Eq.
+# inst1 is >= 4 pi^2, so at most two eigenvalues (with multiplicity) lie below p = 4. A sign
+# change of D_sym and one of D_anti, both in brackets below p = CERTIFICATE_LOAD = 4, are two
+# eigenvalues there: each is its family's only one below 4, hence its lowest, and p* is the
+# smaller. A point whose brackets do not both change sign is handed to the sign scan.
+
+#: |Omega(L)| from which the lowest root is bracketed by the large-twist expansion.
+BRACKET_MIN_TWIST = 50.0
+#: The bracket's half-width is BRACKET_REMAINDER / Omega^5 (the expansion's remainder: measured
+#: <= 77 Omega^-5 on 4,000 random points, Omega(L) log-uniform in [20, 1e4], nu in [1, 1e4],
+#: where it exceeds the scan's rounding, Omega(L) < 1e3; tests/bench/large_twist_bracket.py)
+#: plus BRACKET_NOISE eps (8 + |Omega|) (so that the sign at the bracket's ends is decided by
+#: the root, not by rounding).
+BRACKET_REMAINDER, BRACKET_NOISE = 400.0, 64.0
+#: Below this load the lab-frame comparison problem has only two eigenvalues (see above).
+CERTIFICATE_LOAD = 4.0
+
+
+def _half_width(om: Any) -> Any:
+    """The bracket's half-width in p at |Omega| = om (floats or arrays)."""
+    return BRACKET_REMAINDER / om**5 + BRACKET_NOISE * _EPS * (8.0 + om)
+
+
+def _phase_terms(p: Any, om: Any, nv: Any, half_cos: Any, half_sin: Any, lib: Any
+                 ) -> tuple[Any, ...]:
+    """(C_-, S_-, C_+, S_+, lambda, mu, Omega^2, X_-, X_+) at lambda = pi^2 p for X_-, X_+ > 0
+    (here: Omega^2 > lambda), the phases sqrt(X)/2 = Omega/2 + r/2 with r = sqrt(X) - Omega
+    computed as (X - Omega^2)/(sqrt(X) + Omega) and cos, sin of Omega/2 + r/2 by the addition
+    theorem from the exact half_cos = cos(Omega/2), half_sin = sin(Omega/2): a phase of size
+    Omega is never rounded, which is the eps |Omega| error of :func:`determinants` there.
+    X - Omega^2 from :func:`spectral_rod.wavenumbers.root_offsets`, without cancellation at
+    large twist. numpy arrays (lib=np) or Python floats (lib=math)."""
+    lam = math.pi**2 * p
+    mu = lam / nv
+    q = om * om
+    u_minus, u_plus = root_offsets(lam, mu, om, sqrt=lib.sqrt)
+    out = []
+    for u in (u_minus, u_plus):
+        beta = lib.sqrt(q + u)
+        half_r = 0.5 * u / (beta + om)
+        cr, sr = lib.cos(half_r), lib.sin(half_r)
+        out += [half_cos * cr - half_sin * sr, (half_sin * cr + half_cos * sr) / beta]
+    return (*out, lam, mu, q, q + u_minus, q + u_plus)
+
+
+def _phase_determinant(sym: Any, p: Any, om: Any, nv: Any, half_cos: Any, half_sin: Any,
+                       lib: Any) -> Any:
+    """D_sym where `sym`, else D_anti (:func:`combine_determinant`) from :func:`_phase_terms`."""
+    cm, sm, cp, sp, lam, mu, q, xm, xp = _phase_terms(p, om, nv, half_cos, half_sin, lib)
+    d_sym = cp * sm * (lam - q - xm) - cm * sp * (lam - q - xp)
+    d_anti = (mu - q - xp) * sp * cm - (mu - q - xm) * sm * cp
+    if lib is math:
+        return d_sym if sym else d_anti
+    return np.where(sym, d_sym, d_anti)
+
+
+#: Up to this nu every family's lowest root is bracketed by the family bounds [1, nu]
+#: (:func:`_family_bound_batch`) instead of being found by the sign scan.
+FAMILY_BOUND_MAX_NU = 1.0 + 1.0e-3
+
+
+def _family_bound_batch(om: NDArray[np.float64], nv: NDArray[np.float64]
+                        ) -> tuple[NDArray[np.float64], NDArray[np.int_], NDArray[np.bool_]]:
+    """(p*, family index, certified) at flat arrays of points with 1 < nu <= FAMILY_BOUND_MAX_NU
+    (any twist): each family's lowest root lies in [1, nu] (:func:`family_critical_load`: the
+    planar trial mode of each family has quotient <= nu) and is its only root below p = 4 (two
+    eigenvalues at most lie below 4, see CERTIFICATE_LOAD), so the brackets [SCAN_START,
+    nu + SCAN_MARGIN] hold exactly one root each. Both are refined together
+    (:func:`~spectral_rod.sign_scan.bracketed_roots` on :func:`determinants`); certified False
+    where the computed determinant shows no sign change over a bracket (the caller scans)."""
+    n = om.size
+    both_om, both_nu = np.concatenate([om, om]), np.concatenate([nv, nv])
+    sym = np.repeat([True, False], n)
+
+    def f(j, x):
+        d_sym, d_anti = _determinants(x, both_om[j], both_nu[j], np.float64, False)
+        return np.where(sym[j], d_sym, d_anti)
+
+    a, b = np.full(2 * n, SCAN_START), both_nu + SCAN_MARGIN
+    idx = np.arange(2 * n)
+    ok = f(idx, a) * f(idx, b) <= 0
+    ok = ok[:n] & ok[n:]
+    live = np.flatnonzero(np.concatenate([ok, ok]))
+    roots = np.full(2 * n, np.nan)
+    roots[live] = _refine_brackets(f, live, a, b)
+    fam = (roots[n:] < roots[:n]).astype(int)
+    return np.where(fam == 1, roots[n:], roots[:n]), fam, ok
+
+
+def _family_bound_point(om: float, nv: float) -> tuple[float, str] | None:
+    """:func:`_family_bound_batch` for one point in Python floats (the scalar path): (p*,
+    family), or None where a bracket shows no sign change."""
+    roots = []
+    for family in FAMILIES:
+        f = _float_function(family, om, nv)
+        a, b = SCAN_START, nv + SCAN_MARGIN
+        if f(a) * f(b) > 0:
+            return None
+        roots.append(bracketed_root(f, a, b))
+    k = int(roots[1] < roots[0])
+    return roots[k], FAMILIES[k]
+
+
+def _bracketed_batch(om: NDArray[np.float64], nv: NDArray[np.float64]
+                     ) -> tuple[NDArray[np.float64], NDArray[np.int_], NDArray[np.bool_]]:
+    """(p*, family index, certified) at flat arrays of points with |Omega| >= BRACKET_MIN_TWIST
+    and nu > 1: both families' roots in their asymptotic brackets, refined together
+    (:func:`~spectral_rod.sign_scan.bracketed_roots`); certified False where a bracket shows no
+    sign change (the caller scans those points)."""
+    from spectral_rod.asymptotics import family_expansions
+
+    n = om.size
+    both_om, both_nu = np.concatenate([om, om]), np.concatenate([nv, nv])
+    sym = np.repeat([True, False], n)
+    half = 0.5 * both_om
+    hc, hs = np.cos(half), np.sin(half)
+    centre = np.concatenate(family_expansions(om, nv))
+    w = _half_width(both_om)
+    a, b = centre - w, np.minimum(centre + w, CERTIFICATE_LOAD)
+
+    def f(j, x):
+        return _phase_determinant(sym[j], x, both_om[j], both_nu[j], hc[j], hs[j], np)
+
+    fa, fb = f(np.arange(2 * n), a), f(np.arange(2 * n), b)
+    ok = fa * fb <= 0
+    ok = ok[:n] & ok[n:]
+    # each point's lower bracket first; the other family's root only where its bracket reaches
+    # below the first root (:func:`_bracketed_point` does the same)
+    fam = (a[n:] < a[:n]).astype(int)
+    first = np.flatnonzero(ok) + n * fam[ok]
+    p = np.full(n, np.nan)
+    p[ok] = _refine_brackets(f, first, a, b)
+    other = first + np.where(first < n, n, -n)
+    need = a[other] < p[ok]
+    if need.any():
+        second, where = other[need], np.flatnonzero(ok)[need]
+        q = _refine_brackets(f, second, a, b)
+        lower = q < p[where]
+        p[where[lower]], fam[where[lower]] = q[lower], 1 - fam[where[lower]]
+    return p, fam, ok
+
+
+def _refine_brackets(f: Any, idx: NDArray[np.int_], a: NDArray[np.float64],
+                     b: NDArray[np.float64]) -> NDArray[np.float64]:
+    """The roots of the functions f(idx[j], .) in [a[idx], b[idx]] (all at once)."""
+    if not idx.size:
+        return np.empty(0)
+    return bracketed_roots(lambda j, x: f(idx[j], x), a[idx], b[idx])
+
+
+def _bracketed_point(om: float, nv: float) -> tuple[float, str] | None:
+    """:func:`_bracketed_batch` for one point in Python floats (the scalar path): (p*, family),
+    or None where the certificate fails."""
+    from spectral_rod.asymptotics import family_expansions
+
+    hc, hs = math.cos(0.5 * om), math.sin(0.5 * om)
+    w = _half_width(om)
+    brackets = []
+    for sym, centre in zip((True, False), family_expansions(om, nv), strict=True):
+        def f(x: float, sym: bool = sym) -> float:
+            return _phase_determinant(sym, x, om, nv, hc, hs, math)
+
+        a, b = centre - w, min(centre + w, CERTIFICATE_LOAD)
+        if f(a) * f(b) > 0:
+            return None
+        brackets.append((a, b, f))
+    # the family of the lower bracket first; the other's root is needed only if its bracket
+    # reaches below the first root (both are certified by their sign changes above)
+    k = int(brackets[1][0] < brackets[0][0])
+    a, b, f = brackets[k]
+    best = bracketed_root(f, a, b)
+    a, b, f = brackets[1 - k]
+    if a < best:
+        other = bracketed_root(f, a, b)
+        if other < best:
+            return other, FAMILIES[1 - k]
+    return best, FAMILIES[k]
 
 
 def _double_scan(om: NDArray[np.float64], nv: NDArray[np.float64], top: NDArray[np.float64],
@@ -462,14 +690,24 @@ def _double_scan(om: NDArray[np.float64], nv: NDArray[np.float64], top: NDArray[
         fam = k if family is None else family[points]
 
         if points.size <= FEW_POINTS:  # in Python floats, one bracket at a time
-            return np.array([bracketed_root(partial(_float_determinant, FAMILIES[fam[j]],
-                                                    float(om[i]), float(nv[i])),
+            return np.array([bracketed_root(_float_function(FAMILIES[fam[j]], float(om[i]),
+                                                            float(nv[i])),
                                             float(a[j]), float(b[j]))
                              for j, i in enumerate(points.tolist())])
+        # from BRACKET_MIN_TWIST on in the phase form (its roots lie below p = 2 there, where
+        # Omega^2 > lambda as _phase_terms needs): the same eps-level accuracy as the bracket
+        om_p, nv_p = om[points], nv[points]
+        phase = (om_p >= BRACKET_MIN_TWIST) & (np.pi**2 * b < 0.5 * om_p**2)  # X_- > 0 there
+        hc, hs = np.cos(0.5 * om_p), np.sin(0.5 * om_p)
 
         def f(j, x):
-            d = _determinants(x, om[points[j]], nv[points[j]], np.float64, False)
-            return np.where(fam[j] == 0, d[0], d[1])
+            d = _determinants(x, om_p[j], nv_p[j], np.float64, False)
+            direct = np.where(fam[j] == 0, d[0], d[1])
+            if not phase[j].any():
+                return direct
+            with np.errstate(invalid="ignore"):  # X_- < 0 where phase is False
+                ph = _phase_determinant(fam[j] == 0, x, om_p[j], nv_p[j], hc[j], hs[j], np)
+            return np.where(phase[j], ph, direct)
         return bracketed_roots(f, a, b)
 
     return lowest_roots(values, refine, np.full(om.size, SCAN_START), top,
@@ -482,16 +720,32 @@ def characteristic_double_batch(twist: NDArray[np.float64], nu: NDArray[np.float
     """Lowest root p* of the two determinants in double precision, and its family index (0
     symmetric), at flat arrays of points (|Omega|, nu), all points at once.
 
-    One sign scan per point (steps :data:`DOUBLE_SCAN_STEP` from :data:`SCAN_START`, up to
-    (1 + nu)/2, :data:`DOUBLE_CHUNK` grid points at a time for every point still scanning)
-    brackets the first sign change of either family; the brackets of all points are refined
-    together (:func:`spectral_rod.sign_scan.bracketed_roots`, to 4 eps relative like Brent's
-    method). Raises RootNotFoundError if a point has no root. Intended for |Omega(L)| >= ~30
-    (any twist works).
+    The certified brackets of the module docstring where they apply (|Omega(L)| >=
+    :data:`BRACKET_MIN_TWIST`: the large-twist expansion; 1 < nu <= :data:`FAMILY_BOUND_MAX_NU`:
+    the family bounds), p* = 1 exactly at nu = 1, and elsewhere (or where a bracket shows no
+    sign change) one sign scan per point (steps :data:`DOUBLE_SCAN_STEP` from
+    :data:`SCAN_START`, up to (1 + nu)/2, :data:`DOUBLE_CHUNK` grid points at a time for every
+    point still scanning) brackets the first sign change of either family. The brackets of all
+    points are refined together (:func:`spectral_rod.sign_scan.bracketed_roots`, to 4 eps
+    relative like Brent's method). Raises RootNotFoundError if a point has no root.
     """
     om, nv = np.abs(np.asarray(twist, dtype=float)), np.asarray(nu, dtype=float)
     top = (1.0 + nv) / 2.0 + SCAN_MARGIN
-    p, fam = _double_scan(om, nv, top)
+    p, fam = np.empty(om.size), np.empty(om.size, dtype=int)
+    scan = np.ones(om.size, dtype=bool)
+    large = np.flatnonzero((om >= BRACKET_MIN_TWIST) & (nv > 1.0))
+    if large.size:
+        p[large], fam[large], ok = _bracketed_batch(om[large], nv[large])
+        scan[large[ok]] = False
+    isotropic = np.flatnonzero(nv == 1.0)  # the Euler load, exact (as the mpmath reference)
+    p[isotropic], fam[isotropic], scan[isotropic] = 1.0, 0, False
+    near = np.flatnonzero((om < BRACKET_MIN_TWIST) & (nv > 1.0) & (nv <= FAMILY_BOUND_MAX_NU))
+    if near.size:
+        p[near], fam[near], ok = _family_bound_batch(om[near], nv[near])
+        scan[near[ok]] = False
+    scan = np.flatnonzero(scan)
+    if scan.size:
+        p[scan], fam[scan] = _double_scan(om[scan], nv[scan], top[scan])
     if (fam < 0).any():
         i = int(np.flatnonzero(fam < 0)[0])
         raise RootNotFoundError(f"no root of the characteristic equation for p* in "
@@ -521,10 +775,26 @@ def family_double_batch(twist: NDArray[np.float64], nu: NDArray[np.float64]
     return p[:n], p[n:]
 
 
+#: Relative error estimate of :func:`characteristic_double` from |Omega(L)| >=
+#: BRACKET_MIN_TWIST, in units of eps: the phase form's roots measured <= 2 eps against 40-digit
+#: references (tests/bench/hunt_routes.py, module docstring).
+PHASE_ERROR = 16.0
+
+
+#: The constant of the estimate eps (DIRECT_ERROR + |Omega|) below BRACKET_MIN_TWIST: errors of
+#: up to 7 eps occur at small twist near nu = 1 (Omega(L) < 0.2, nu - 1 <= 1e-3); with it the
+#: largest error / estimate of tests/bench/hunt_routes.py is 0.25 (characteristic) and 0.31
+#: (near-degenerate) on 1,000 random points each.
+DIRECT_ERROR = 32.0
+
+
 def double_error_estimate(twist_angle: ArrayLike) -> NDArray[np.float64]:
-    """Relative error bound eps (8 + |Omega|) of :func:`characteristic_double` (empirical: the
-    measured error is <= 0.58 eps |Omega|, module docstring)."""
-    return _EPS * (8.0 + np.abs(np.asarray(twist_angle, dtype=float)))
+    """Relative error estimate of :func:`characteristic_double` (empirical, module docstring):
+    eps (DIRECT_ERROR + |Omega|) below :data:`BRACKET_MIN_TWIST` (the phases of size Omega are
+    rounded: measured <= 0.58 eps |Omega|), :data:`PHASE_ERROR` eps from it on (the phase
+    form)."""
+    om = np.abs(np.asarray(twist_angle, dtype=float))
+    return np.where(om >= BRACKET_MIN_TWIST, PHASE_ERROR * _EPS, _EPS * (DIRECT_ERROR + om))
 
 
 def characteristic_determinant(family: str, p_star: float, twist_angle: float, nu: float,

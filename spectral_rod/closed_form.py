@@ -16,6 +16,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from spectral_rod._validation import check_int, scalar_nu, scalar_twist
 from spectral_rod.characteristic import (
+    REFERENCE_MAX_NU,
+    REFERENCE_MAX_TWIST,
     CharacteristicRoot,
     bracketed_root_mp,
     determinant,
@@ -95,7 +97,7 @@ def _null_coefficients(family: str, amp: list[tuple[mp.mpf, mp.mpf]],
 
 #: Working digits of the closed-form mode beyond -2 log10 |Omega(L)| (:func:`fields_at_load`).
 #: An empirical margin: with it the modes agree with collocation eigenvectors to <= 1e-13 from
-#: Omega(L) = 5e-324 to 45 (measured <= 8.5e-15 on 1,100 random modes, 2026-12-04), and the
+#: Omega(L) = 5e-324 to 45 (measured <= 8.5e-15 on 1,100 random modes), and the
 #: out-of-plane part x2 / Omega at Omega(L) = 5e-300..1e-12 equals its value at 1e-7 to <= 1e-10
 #: (measured <= 1.4e-12; tests/test_two_solvers.py).
 MODE_DIGITS = 20
@@ -150,19 +152,19 @@ def mode_fields(root: CharacteristicRoot, twist_angle: float, nu: float, s: Arra
     (mu - Omega^2 - X_k) sin(beta_k t)/beta_k, eta = -sum_k c_k 2 Omega cos(beta_k t). Needs
     Omega != 0 (at zero twist the mode is Euler's planar sin(pi s)). The weights are divided by
     the largest of them before they leave mpmath: unnormalised they carry a factor ~Omega that
-    underflows double precision at tiny twist (at Omega(L) = 1e-322 every field was 0, so the
-    scaled mode was nan; at 1e-320 it had one significant digit).
+    underflows double precision at tiny twist (unnormalised, at Omega(L) = 1e-322 every field is
+    0, so the scaled mode is nan; at 1e-320 it has one significant digit).
 
     The mode is ill-conditioned at small twist: the part of order Omega is decided by
     lam - Omega^2 - X_+, which is O(Omega^2), so the load and the wavenumbers X_k must agree to
     well below Omega^2 for that part to be right relative to itself. They are therefore
     computed at max(dps, MODE_DIGITS - 2 log10 |Omega(L)|) digits: the load refined on the
     family's determinant from root.p_star, the X_k again from it (root.x_plus/x_minus, at the
-    root's precision, are not used). Measured 2026-12-04 on the code before: with the root's
-    X_k at 30 digits a 40-digit root's mode was wrong (O(1)) for |Omega(L)| <= 1e-40; at
-    MODE_DIGITS - log10 |Omega(L)| digits the mode was right, but its out-of-plane part was off
-    by 2e-2 (relative to itself) at 1e-20 and 0.3 at 1e-200 against an evaluation wholly in
-    mpmath (a one-off check; the committed test is the Omega-scaling of MODE_DIGITS).
+    root's precision, are not used). With the root's X_k at 30 digits a 40-digit root's mode is
+    wrong (O(1)) for |Omega(L)| <= 1e-40; at MODE_DIGITS - log10 |Omega(L)| digits the mode is
+    right, but its out-of-plane part is off by 2e-2 (relative to itself) at 1e-20 and 0.3 at
+    1e-200 against an evaluation wholly in mpmath (the committed test is the Omega-scaling of
+    MODE_DIGITS, tests/test_two_solvers.py).
 
     At a split pair (the antisymmetric family near nu = 4, roots ~2.2 Omega apart) the mode is
     that of whichever root root.p_star is nearest, so the root must separate the pair: a
@@ -171,23 +173,25 @@ def mode_fields(root: CharacteristicRoot, twist_angle: float, nu: float, s: Arra
     """
     if not isinstance(root, CharacteristicRoot):
         raise TypeError(f"root must be a CharacteristicRoot, got {type(root).__name__}")
-    twist_angle, nu = scalar_twist(twist_angle), scalar_nu(nu)
+    # the ranges of characteristic_critical_load, whose roots this accepts
+    twist_angle = scalar_twist(twist_angle, max_abs=REFERENCE_MAX_TWIST)
+    nu = scalar_nu(nu, max_value=REFERENCE_MAX_NU)
     dps = check_int(dps, "dps", 15, 200)
     if twist_angle == 0.0:
         raise ValueError("twist_angle must be non-zero for the closed-form mode (at zero twist "
                          "the mode is Euler's planar sin(pi s))")
     _check_root_is_of(root, twist_angle, nu)
     xi, eta = fields_at_load(root.family, root.p_star, twist_angle, nu, s, dps)
-    # -Omega is the mirror image (omega2 -> -omega2), as in buckling_mode; before 2026-12-04
-    # the +|Omega| mode was returned, which does not solve inst1 at -Omega (residual ~1e3)
+    # -Omega is the mirror image (omega2 -> -omega2), as in buckling_mode: the +|Omega| mode
+    # does not solve inst1 at -Omega (residual ~1e3)
     return xi, (-eta if twist_angle < 0 else eta)
 
 
 def _check_root_is_of(root: CharacteristicRoot, twist_angle: float, nu: float) -> None:
     """ValueError unless ``root`` was computed at (twist_angle, nu): its X_+ (stored with it)
-    recomputed from root.p_star here (a sum of positive terms: no cancellation) must agree.
-    Before 2026-12-04 a root of another point was accepted and gave a mode that is not one
-    (x(1) = 0.017 instead of 0 for the root of (5, 1.5) used at (6, 1.5))."""
+    recomputed from root.p_star here (a sum of positive terms: no cancellation) must agree: a
+    root of another point gives a mode that is not one (x(1) = 0.017 instead of 0 for the root
+    of (5, 1.5) used at (6, 1.5))."""
     lam = math.pi**2 * float(root.p_star)
     x_plus = characteristic_roots(lam, lam / nu, twist_angle, sqrt=math.sqrt)[1]
     if abs(x_plus - float(root.x_plus)) > 1e-9 * x_plus:

@@ -6,17 +6,26 @@ characteristic equation (tests/test_extremes.py and the ``extremes`` scene):
 
 * an explicit degree ``n``: Chebyshev collocation everywhere (``n`` is its parameter);
 * |Omega(L)| >= :data:`TWIST_ROUTE` = 50: the characteristic equation in double precision
-  (:func:`spectral_rod.characteristic.characteristic_double`): its cost does not grow with the
-  twist and its relative error is ~eps |Omega| (<= 0.58 eps |Omega|: 1.3e-13 at 1000, 7e-13 at 1e4),
-  whereas collocation needs n ~ |Omega|/2 + 4.5 |Omega|^(1/3) + 10 at tol 1e-12 (n capped at 512;
+  (:func:`spectral_rod.characteristic.characteristic_double`), each family's lowest root
+  bracketed by the large-twist expansion and certified the lowest: its cost does not grow with
+  the twist and its relative error is a few eps (the phases of size Omega are never rounded;
+  measured <= 2 eps against 40-digit references), whereas collocation needs
+  n ~ |Omega|/2 + 4.5 |Omega|^(1/3) + 10 at tol 1e-12 (n capped at 512;
   :func:`spectral_rod.straight_rod.resolution.initial_degree`) and loses accuracy to
   round-off (1e-12 at Omega(L) = 200);
-* nu - 1 <= :data:`NEAR_DEGENERATE` = 1e-3 (and |Omega(L)| < 50): p* = 1 + the increment of
-  :mod:`spectral_rod.increment` (the lowest eigenvalue is nearly double there and collocation's
-  p* - 1 loses its relative accuracy; the increment keeps p* - 1 to 1e-12 relative on the grid of
-  tests/test_increment.py; a hunt of 3,000 random points, Omega(L) in [1e-4, 50], nu - 1 in
-  [1e-14, 1e-3], measured <= 6.1e-13, <= 2.3e-14 for nu - 1 <= 1e-5);
-* otherwise Chebyshev collocation (:mod:`spectral_rod.straight_rod`, <= ~3e-14 relative).
+* nu - 1 <= :data:`NEAR_DEGENERATE` = 1e-3 (and |Omega(L)| < 50): the characteristic
+  equation in double precision too, each family's lowest root refined in the bracket of its
+  bounds [1, nu], which holds exactly that root
+  (:func:`spectral_rod.characteristic.characteristic_double_batch`): p* itself is well
+  conditioned there (the nearly double pair of eigenvalues is split between the two parity
+  families), measured <= 4.2e-15 relative (0.31 of its error estimate) on 1,000 random points
+  (Omega(L) in [0, 50], nu - 1 log-uniform in [1e-14, 1e-3]) against 40-digit references, no
+  unflagged miss at tol 1e-14 (tests/bench/hunt_routes.py). Only p* - 1 loses its
+  relative accuracy there: :func:`spectral_rod.critical_load_increment` carries it. Where the
+  two families' loads differ by less than the error estimate, the family reported is the one
+  whose computed root is lower; either family's mode buckles at p* within the estimate (the
+  buckling mode is that family's closed form, :mod:`spectral_rod.mode`);
+* otherwise Chebyshev collocation (:mod:`spectral_rod.straight_rod`, <= ~5e-14 relative).
 
 A method can also be forced (``method=`` one of :data:`ROD_METHODS`), e.g. to cross-check:
 ``"ritz"`` is the Rayleigh-Ritz discretisation of the lab-frame *energy*
@@ -24,7 +33,7 @@ A method can also be forced (``method=`` one of :data:`ROD_METHODS`), e.g. to cr
 upper bound.
 
 >>> choose_method([10.0, 100.0, 10.0], [1.5, 1.5, 1.0001]).tolist()
-['collocation', 'characteristic', 'increment']
+['collocation', 'characteristic', 'characteristic']
 """
 
 from __future__ import annotations
@@ -43,7 +52,8 @@ ROD_METHODS = ("collocation", "characteristic", "increment", "ritz")
 METHOD_DTYPE = f"<U{max(map(len, ROD_METHODS))}"
 #: |Omega(L)| from which the characteristic equation (double precision) is used.
 TWIST_ROUTE = 50.0
-#: nu - 1 up to which p* = 1 + increment (for |Omega(L)| < TWIST_ROUTE).
+#: nu - 1 up to which p* comes from the characteristic equation in the family bounds'
+#: brackets (|Omega(L)| < TWIST_ROUTE), and up to which method="increment" is accepted.
 NEAR_DEGENERATE = 1.0e-3
 #: |Omega(L)| limit of the increment (its sine basis needs N ~ 2|Omega|/pi + 48 modes).
 INCREMENT_MAX_TWIST = 1.0e3
@@ -93,9 +103,7 @@ def route(twist: NDArray[np.float64], nu: NDArray[np.float64], n: int | None = N
     if n is not None:
         return np.full(twist.shape, "collocation", dtype=METHOD_DTYPE)
     out = np.full(twist.shape, "collocation", dtype=METHOD_DTYPE)
-    large = np.abs(twist) >= TWIST_ROUTE
-    out[large] = "characteristic"
-    out[~large & (nu - 1.0 <= NEAR_DEGENERATE)] = "increment"
+    out[(np.abs(twist) >= TWIST_ROUTE) | (nu - 1.0 <= NEAR_DEGENERATE)] = "characteristic"
     return out
 
 
@@ -107,9 +115,9 @@ def route_point(twist: float, nu: float, n: int | None = None, method: str = "au
         return method
     if n is not None:
         return "collocation"
-    if abs(twist) >= TWIST_ROUTE:
+    if abs(twist) >= TWIST_ROUTE or nu - 1.0 <= NEAR_DEGENERATE:
         return "characteristic"
-    return "increment" if nu - 1.0 <= NEAR_DEGENERATE else "collocation"
+    return "collocation"
 
 
 def choose_method(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None,

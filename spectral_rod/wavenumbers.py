@@ -29,7 +29,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from spectral_rod._validation import broadcast_points, check_nu, check_twist, real_array
 
-__all__ = ["P_STAR_MAX", "beta_difference", "characteristic_roots", "critical_wavenumbers"]
+__all__ = ["P_STAR_MAX", "beta_difference", "characteristic_roots", "critical_wavenumbers",
+           "root_offsets"]
 
 #: The largest load accepted (as :func:`spectral_rod.characteristic_determinant`'s): far above
 #: any critical load (p* <= nu <= 1e4) and far below where (lambda - mu)^2 overflows (p ~ 1e153).
@@ -46,6 +47,23 @@ def characteristic_roots(lam: Any, mu: Any, twist_angle: Any,
     om2 = twist_angle * twist_angle
     x_plus = (lam + mu + 2 * om2 + sqrt((lam - mu) ** 2 + 8 * om2 * (lam + mu))) / 2
     return (lam - om2) * (mu - om2) / x_plus, x_plus
+
+
+def root_offsets(lam: Any, mu: Any, twist_angle: Any,
+                 sqrt: Callable[[Any], Any] = np.sqrt) -> tuple[Any, Any]:
+    """(X_- - Omega^2, X_+ - Omega^2), the roots of :func:`characteristic_roots` less Omega^2:
+    (lambda + mu + R)/2 with R^2 = (lambda - mu)^2 + 8 Omega^2 (lambda + mu), and the product
+    of the two, lambda mu - 2 Omega^2 (lambda + mu), over it. Both without cancellation where
+    Omega^2 >> lambda (the large-twist phase form of :mod:`spectral_rod.characteristic`), where
+    X - Omega^2 is O(Omega) and X itself O(Omega^2). Python floats (``sqrt=math.sqrt``), numpy
+    arrays or mpmath numbers.
+
+    >>> [round(v, 12) for v in root_offsets(2.0, 1.0, 0.0, sqrt=lambda x: x**0.5)]
+    [1.0, 2.0]
+    """
+    om2 = twist_angle * twist_angle
+    u_plus = (lam + mu + sqrt((lam - mu) ** 2 + 8 * om2 * (lam + mu))) / 2
+    return (lam * mu - 2 * om2 * (lam + mu)) / u_plus, u_plus
 
 
 def _loads(p_star: ArrayLike, twist_angle: ArrayLike, nu: ArrayLike

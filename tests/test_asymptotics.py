@@ -156,6 +156,12 @@ def test_crossing_offset_from_n_pi_shrinks_like_n_cubed():
 def test_input_validation():
     with pytest.raises(ValueError):
         large_twist_expansion(10.0, 1.5, order=1)
+    # a complex, float or str order is a type error naming the parameter, whatever its value
+    for bad in (4 + 0j, 4.0, "4", None, True):
+        with pytest.raises(TypeError, match="order must be an integer"):
+            large_twist_expansion(10.0, 1.5, order=bad)
+    assert large_twist_expansion(10.0, 1.5, order=np.int64(4)) == large_twist_expansion(
+        10.0, 1.5, order=4)
     with pytest.raises(ValueError):
         large_twist_expansion(0.0, 1.5)
     with pytest.raises(ValueError):
@@ -181,8 +187,8 @@ def test_crossing_offset_asymptotics_has_error_of_order_n_to_the_minus_five(nu):
 def test_collocation_crossing_error_estimates_bound_the_closed_form_errors():
     """40 random crossings (n = 2..59, nu = 1 + 1e-6 .. 1e3; fixed seed): the collocation
     crossing is within its twist_error and p_error of the closed form, and twist_error is inf
-    (not resolved) only where the branches are nearly parallel, nu - 1 < 1e-3 (a 200-point run
-    of 2026-12-04: twist errors there up to 3.0e-7 relative; elsewhere err/estimate <= 0.18)."""
+    (not resolved) only where the branches are nearly parallel, nu - 1 < 1e-3 (on 200 random
+    crossings: twist errors there up to 3.0e-7 relative; elsewhere err/estimate <= 0.18)."""
     rng = np.random.default_rng(2026)
     unresolved = 0
     for _ in range(40):

@@ -1,4 +1,4 @@
-"""The benchmark run fails below a pattern's ratio floor and passes above it (issue 13).
+"""The benchmark run fails below a pattern's ratio floor and passes above it.
 
 The ratio check of ``tests/bench/test_benchmarks.py`` (``_yardstick`` then ``_new``) is run
 with a stand-in for pytest-benchmark's fixture whose timings are set by the test, so the check

@@ -91,3 +91,67 @@ def test_double_determinants_follow_mpmath_in_both_precisions():
             determinants(p, om, nu, dtype=bad)
     with pytest.raises(TypeError, match="real_wavenumbers"):
         determinants(p, om, nu, real_wavenumbers="no")
+
+
+# --- the certified brackets of the double-precision route ---------------------------------
+
+def _points():
+    import numpy as np
+
+    rng = np.random.default_rng(37)
+    return np.exp(rng.uniform(np.log(50.0), np.log(1e4), 12)), np.exp(rng.uniform(0, 9.2, 12))
+
+
+def test_large_twist_brackets_are_certified_and_meet_the_reference():
+    import numpy as np
+
+    from spectral_rod.characteristic import _bracketed_batch, characteristic_double
+
+    tw, nv = _points()
+    p, fam, ok = _bracketed_batch(tw, nv)
+    assert ok.all()
+    for i in range(0, tw.size, 3):
+        r = characteristic_critical_load(float(tw[i]), float(nv[i]), dps=40)
+        assert abs(p[i] / float(r.p_star) - 1) <= 4 * np.finfo(float).eps
+        assert ("symmetric", "antisymmetric")[fam[i]] == r.family
+        # the scalar path runs the same algorithm in Python floats
+        p_one, family = characteristic_double(float(tw[i]), float(nv[i]))
+        assert p_one == pytest.approx(p[i], rel=4e-16) and family == r.family
+
+
+def test_a_bracket_that_misses_the_root_is_not_certified(monkeypatch):
+    # the evidence perturbed: expansions shifted by 1e-3 (far beyond the bracket's half-width)
+    # leave no sign change in the brackets, the points go to the scan, and p* stays right
+    import numpy as np
+
+    import spectral_rod.asymptotics as asymptotics
+    from spectral_rod.characteristic import (
+        _bracketed_batch,
+        _bracketed_point,
+        characteristic_double_batch,
+        double_error_estimate,
+    )
+
+    tw, nv = _points()
+    right = characteristic_double_batch(tw, nv)[0]
+    real = asymptotics.family_expansions
+    monkeypatch.setattr(asymptotics, "family_expansions",
+                        lambda om, nu: tuple(p + 1e-3 for p in real(om, nu)))
+    assert not _bracketed_batch(tw, nv)[2].any()
+    assert _bracketed_point(float(tw[0]), float(nv[0])) is None
+    scanned = characteristic_double_batch(tw, nv)[0]
+    assert np.all(np.abs(scanned / right - 1) <= double_error_estimate(tw))
+
+
+def test_family_bound_brackets_near_nu_1():
+    import numpy as np
+
+    from spectral_rod.characteristic import _family_bound_batch
+
+    tw = np.array([0.0, 1e-6, 0.5, 3.0, 20.0, 49.0])
+    nv = 1.0 + np.array([1e-3, 1e-12, 1e-8, 1e-5, 1e-4, 1e-3])
+    p, _, ok = _family_bound_batch(tw, nv)
+    assert ok.all()
+    for i in range(tw.size):
+        r = characteristic_critical_load(float(tw[i]), float(nv[i]), dps=40)
+        assert abs(p[i] / float(r.p_star) - 1) <= 8 * np.finfo(float).eps, i

@@ -1,4 +1,4 @@
-"""critical_load_increment: p* - 1 to full relative accuracy (issue 6, extreme 1).
+"""critical_load_increment: p* - 1 to full relative accuracy.
 
 References are independent of the code under test: the paper's characteristic equation in
 mpmath at 60 digits, and closed-form leading terms of the two perturbation expansions.
@@ -7,13 +7,18 @@ mpmath at 60 digits, and closed-form leading terms of the two perturbation expan
 from __future__ import annotations
 
 import math
+import sys
+from pathlib import Path
 
 import mpmath as mp
 import numpy as np
 import pytest
 
 from spectral_rod.characteristic import characteristic_critical_load
-from spectral_rod.increment import critical_load_increment
+from spectral_rod.increment import critical_load_increment, galerkin_increments
+
+sys.path.insert(0, str(Path(__file__).parent / "bench"))
+import hunt_increment
 
 NU_MINUS_1 = (1e-8, 1e-6, 1e-4, 1e-2, 0.5, 9.0, 9999.0)
 TWISTS = (1e-6, 1e-4, 1e-2, 1.0, 3.0, 10.0, 30.0)
@@ -29,9 +34,8 @@ def test_relative_accuracy_on_the_grid(twist):
     for e in NU_MINUS_1:
         ref = ref_increment(twist, 1 + e)
         got = critical_load_increment(twist, 1 + e)
-        # the router's increment route (nu - 1 <= 1e-3) is documented to 1e-12; beyond it
-        # p* - 1 comes partly from the characteristic equation in double precision (1e-9)
-        assert abs(got / ref - 1) <= (1e-12 if e <= 1e-3 else 1e-9), (twist, e, got, ref)
+        # documented to 1e-12 over the whole range
+        assert abs(got / ref - 1) <= 1e-12, (twist, e, got, ref)
 
 
 def test_corner_matches_double_expansion():
@@ -143,9 +147,29 @@ def test_increment_at_vanishing_twist_is_quadratic(twist, nu):
     the quartic term is ~1e-12 relative at 1e-6): the reference is c from the mpmath
     characteristic equation at Omega(L) = 1e-6. Down to the subnormal range (where the spacing
     of doubles, 4.9e-324, limits any answer) the increment keeps it, and it is never negative
-    (before 2026-12-04: -3.7e-4 relative at 1e-146, 0.0 at 1e-148, -1.7e-316 at 1e-159)."""
+    (unscaled moments give -3.7e-4 relative at 1e-146, 0.0 at 1e-148, -1.7e-316 at 1e-159)."""
     c = ref_increment(1e-6, nu, dps=80) / 1e-12
     ref = c * twist * twist
     got = critical_load_increment(twist, nu)
     assert got >= 0.0
     assert abs(got - ref) <= 1e-9 * ref + 8 * 5e-324, (got, ref)
+
+
+def test_a_sample_of_the_random_hunt_holds_1e_12():
+    # tests/bench/hunt_increment.py runs 1,000 points; here 30 of its range
+    h = hunt_increment.hunt(30, seed=7)
+    assert h.misses == 0 and h.error.max() <= hunt_increment.GAIN_TOL, h.error.max()
+
+
+@pytest.mark.parametrize(("twist", "nu"),
+                         [(2e-3, 9e3), (2.98128e-06, 3948.27), (840.689, 1.000954)])
+def test_the_compliance_form_holds_where_the_energy_form_loses_digits(twist, nu):
+    # the energy form's coupling nu - 1 (up to 1e4) cancels in its Schur complement, and its
+    # moments lose accuracy at large twist: 5e-12..1e-10 relative here; the compliance form's
+    # coupling 1 - 1/nu < 1 does not
+    ref = ref_increment(twist, nu)
+    tw, nv = np.array([twist]), np.array([nu])
+    energy = galerkin_increments(tw, nv, compliance=False)[0][0]
+    compliance = galerkin_increments(tw, nv)[0][0]
+    assert abs(energy / ref - 1) > 1e-12
+    assert abs(compliance / ref - 1) <= 1e-13

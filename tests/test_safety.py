@@ -93,7 +93,7 @@ def test_increment_at_large_twist_is_bounded(monkeypatch):
     sizes = []
     real = inc._bucket_increments
     monkeypatch.setattr(inc, "_bucket_increments",
-                        lambda om, e, n: sizes.append(n) or real(om, e, n))
+                        lambda om, e, n, *form: sizes.append(n) or real(om, e, n, *form))
     monkeypatch.setattr(inc, "_newton_cholesky", _must_not_run("a Cholesky factorisation"))
     d = sr.critical_load_increment(1000.0, 1.0005)
     assert sizes == [inc.bucket(1000.0)] and sizes[0] <= 2 * 1000 / math.pi + 56

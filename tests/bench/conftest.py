@@ -1,5 +1,5 @@
-"""Benchmarks of issue 14 (pytest-benchmark): the registry the tests fill and the terminal table
-of same-run ratios (yardstick / new) per call pattern.
+"""Benchmarks (pytest-benchmark): the registry the tests fill and the terminal table of same-run
+ratios (yardstick / new) per call pattern, with extra columns for earlier-route yardsticks.
 
 Run with ``python -m pytest -m bench`` (the marker is excluded from the default run); add
 ``--benchmark-autosave`` to keep the results (with ``extra_info``) under ``.benchmarks/`` and
@@ -27,13 +27,18 @@ def pytest_terminal_summary(terminalreporter, exitstatus, config) -> None:
     if not rows and not {"import", "tol trade", "pooling"} & set(reg):
         return
     tr = terminalreporter
-    tr.write_sep("=", "issue 14: same-run ratios, yardstick / new (minimum over rounds)")
+    tr.write_sep("=", "same-run ratios, yardstick / new (minimum over rounds)")
     tr.write_line(f"{'pattern':<22}{'yardstick':<28}{'yardstick/pt':>14}{'new/pt':>12}"
                   f"{'ratio':>8}{'floor':>7}{'interleaved':>13}")
     for name, e in rows:
         tr.write_line(f"{name:<22}{e['yardstick_name']:<28}{_us(e['yardstick'][0]):>14}"
                       f"{_us(e['new'][0]):>12}{e['ratio']:>8.1f}{e['floor']:>7.1f}"
                       f"{e['interleaved']:>13.1f}")
+        for extra, seconds in e.get("extra", {}).items():  # earlier-route yardsticks
+            tr.write_line(f"{'':<22}{extra:<28}{_us(seconds):>14}{'':>12}"
+                          f"{seconds / e['new'][0]:>8.1f}")
+        if "peak_mb" in e:
+            tr.write_line(f"{'':<22}peak memory of the call: {e['peak_mb']:.0f} MB")
     if "tol trade" in reg:
         tt = reg["tol trade"]
         tr.write_line(f"tol trade, Figure 1 batch (interleaved minima): tol 1e-4 costs "

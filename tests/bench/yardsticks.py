@@ -1,8 +1,7 @@
-"""The pre-change per-point routes, kept here only as the yardsticks of the benchmarks for the
-patterns the baseline cannot do (large twist, near-degenerate): the code of the routes before
-issue 14 (commit 5beb5ca), condensed to what they ran; they reuse the library's basis and
-determinant helpers (unchanged by the speed work), and the benchmarks check their answers
-against the mpmath reference. Not part of the library.
+"""The per-point routes of the package's first large-twist and near-degenerate solvers (commit
+5beb5ca), condensed to what they ran: the extra columns of the benchmarks at those patterns,
+whose yardstick is the baseline. They reuse the library's basis and determinant helpers, and
+the benchmarks check their answers against the mpmath reference. Not part of the library.
 """
 
 from __future__ import annotations
@@ -74,7 +73,7 @@ def _lowest_root(values: Callable[[list[Any]], Sequence[Sequence[Any]]],
 
 
 def pre_change_characteristic(twist_angle: float, nu: float) -> float:
-    """The large-twist route before issue 14 (one point): scan of 257 points, then brentq."""
+    """The per-point large-twist route (one point): scan of 257 points, then brentq."""
     om, nu = abs(float(twist_angle)), float(nu)
     top = (1.0 + nu) / 2.0 + 1e-6
 
@@ -89,7 +88,8 @@ def pre_change_characteristic(twist_angle: float, nu: float) -> float:
 
 def pre_change_increment(twist_angle: float, nu: float, n: int | None = None
                               ) -> tuple[float, str]:
-    """The increment route before issue 14 (one point): leggauss recomputed, BLAS threads as set."""
+    """The per-point increment route (one point, energy form): leggauss recomputed, BLAS threads
+    as set."""
     om, e = abs(float(twist_angle)), float(nu) - 1.0
     if om == 0.0 or e == 0.0:
         return 0.0, "symmetric"
@@ -143,7 +143,7 @@ def pre_change_increment(twist_angle: float, nu: float, n: int | None = None
 
 
 def _min_eig2_scalar(t: np.ndarray) -> tuple[float, np.ndarray]:
-    """The pre-change scalar 2x2 kernel (the library's is batched now)."""
+    """The scalar 2x2 kernel (the library's is batched)."""
     a, b, c = t[0, 0], t[0, 1], t[1, 1]
     lmax = 0.5 * (a + c + math.hypot(a - c, 2 * b))
     lmin = (a * c - b * b) / lmax if lmax > 0 else 0.0
@@ -154,6 +154,6 @@ def _min_eig2_scalar(t: np.ndarray) -> tuple[float, np.ndarray]:
 
 
 def _mode_family_scalar(c1: np.ndarray, twist_angle: float) -> str:
-    """The pre-change scalar parity test (the library's is batched now)."""
+    """The scalar parity test (the library's is batched)."""
     ang = math.atan2(c1[1], c1[0]) - twist_angle / 2
     return "symmetric" if abs(math.cos(ang)) >= abs(math.sin(ang)) else "antisymmetric"
