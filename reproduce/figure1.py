@@ -244,7 +244,8 @@ def readme_sentence(fx: Forensics) -> str:
     n_ok = dev["points"]
     bound = ("every one of them" if dev["within_band"] == n_ok else
              f"{dev['within_band']} of them")
-    where = (f"so digitised − p* lies in [{dev['min']:.1e}, {dev['max']:.1e}] there (within one "
+    where = (f"so computed − digitised lies in [{-dev['max']:.1e}, {-dev['min']:.1e}] there "
+             f"(within one "
              f"scan step plus the print rounding at {bound})" if n_ok else "none of them")
     s = (f"Figure 1 is explained point by point: {n_ok} of {len(p)} plotted points are exactly "
          f"(to the {FIGURE1_PRINT_QUANTUM:g} print quantum) what the authors' procedure gives "
@@ -360,20 +361,22 @@ def _model_band(ax, fx: Forensics, nu: float) -> None:
     for r in fx.runs:
         mine = (s["run"] == r).to_numpy() & np.isfinite(hi)
         if mine.any():
-            ax.fill_between(s["twist_angle"], lo * 1e4, hi * 1e4, where=mine, color="0.85",
+            # the band is of digitised - p*; drawn in the figures' convention, computed - digitised
+            ax.fill_between(s["twist_angle"], -hi * 1e4, -lo * 1e4, where=mine, color="0.85",
                             lw=0, step="mid",
                             label="model band: one scan step" if r == "high" else None)
 
 
 def draw_forensics(fx: Forensics):
-    """Residuals digitised − p* per curve, coloured by class, physical windows marked."""
+    """Residuals computed − digitised (the convention of figure1.png) per curve, coloured by
+    class, physical windows marked."""
     fig, axes = plt.subplots(3, 1, figsize=(9.0, 9.5), sharex=True,
                              gridspec_kw={"hspace": 0.12})
     colors = plt.get_cmap("tab10").colors
     for ax, nu in zip(axes, FIGURE1_NU, strict=True):
         s = fx.sites[fx.sites["nu"] == nu]
         d = s[s["in_data"]]
-        res = (d["p_digitised"] - d["p_true"]) * 1e4
+        res = (d["p_true"] - d["p_digitised"]) * 1e4
         _model_band(ax, fx, nu)
         _mark_physics(ax, fx, nu)
         ok = d["ok"].to_numpy()
@@ -386,18 +389,18 @@ def draw_forensics(fx: Forensics):
             ax.plot(d["twist_angle"][m], res[m], "o", ms=3.5, mfc="none", mew=1.0,
                     color=colors[(k + 1) % 10],
                     label=f"C{k + 1}: {c['kind']} ({c['points']})")
-            ax.annotate(f"C{k + 1}", (d["twist_angle"][m].mean(), res[m].max()),
-                        xytext=(0, 6), textcoords="offset points", ha="center", fontsize=8,
+            ax.annotate(f"C{k + 1}", (d["twist_angle"][m].mean(), res[m].min()),
+                        xytext=(0, -12), textcoords="offset points", ha="center", fontsize=8,
                         color=colors[(k + 1) % 10])
         miss = s[~s["in_data"]]
         if len(miss):
             ax.plot(miss["twist_angle"], np.zeros(len(miss)), "x", color="tab:red", ms=6,
                     label=f"missing grid points ({len(miss)})")
         ax.axhline(0, color="k", lw=0.5)
-        ax.set_ylabel(f"ν = {nu}\ndigitised − p*  [10⁻⁴]")
+        ax.set_ylabel(f"ν = {nu}\ncomputed − digitised  [10⁻⁴]")
         ax.legend(loc="upper right", fontsize=6.5, ncol=2, frameon=False)
-        ax.set_ylim(-3.5, 6.0)
-    axes[0].set_title("Figure 1 point by point: digitised − converged p* "
+        ax.set_ylim(-7.0, 5.0)
+    axes[0].set_title("Figure 1 point by point: converged p* − digitised "
                       f"(print quantum {FIGURE1_PRINT_QUANTUM / FIGURE1_Y_PER_P:.1e}, "
                       f"dot {FIGURE1_DOT / FIGURE1_Y_PER_P:.1e})",
                       fontsize=10)
