@@ -52,6 +52,7 @@ from spectral_rod import (
     load_figure1,
     picture_lines,
 )
+from spectral_rod.figure_data import check_picture_matches
 
 #: The twist ranges of Forensics.range_sizes (its order) in words.
 RANGE_WORDS = "below / in / above"
@@ -513,6 +514,9 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
     t0 = time.perf_counter()
     reference = load_figure1()
     progress(f"loaded {len(reference)} digitised points (spectral_rod/data/figure1_digitised.csv)")
+    # the picture is read first: a broken file stops the scene before any output is written
+    pic = picture_lines(figure1_picture())
+    check_picture_matches(pic, reference)
     table = comparison_table(reference)
     t_sweep = time.perf_counter() - t0
     progress(f"collocation at all digitised points to tol {TOL:g} in {t_sweep:.2f} s")
@@ -545,7 +549,6 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
               "curve, nu, picture_x, picture_y, twist_angle, p_star_digitised, p_star_computed, "
               "deviation, n, error_estimate, mode_family)."]
     t1 = time.perf_counter()
-    pic = picture_lines(figure1_picture())
     fx = analyse_figure1(reference, pic, p_true=table["p_star_computed"].to_numpy())
     t_fx = time.perf_counter() - t1
     progress(f"forensics: best model reproduces {int(fx.points['ok'].sum())} of "
