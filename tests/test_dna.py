@@ -1,0 +1,40 @@
+"""The DNA scene: the twist-to-length conversion and the window, recomputed by hand."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from reproduce import dna
+from reproduce._runner import SCENE_MODULES
+from spectral_rod import large_twist_coefficients, large_twist_limit
+
+
+def test_the_scene_is_registered():
+    assert "dna" in SCENE_MODULES
+
+
+def test_twist_and_length_by_hand():
+    h = 10.5 * 0.34  # nm per turn
+    assert dna.twist_of_length(20.0, h) == pytest.approx(2 * math.pi * 20.0 / 3.57, rel=1e-12)
+    # Figure 1 ends at Omega(L) = 10: 10 / (2 pi) turns of 3.57 nm
+    assert dna.length_of_twist(10.0, h) == pytest.approx(10.0 / (2 * math.pi) * 3.57)
+    assert dna.length_of_twist(10.0, h) < dna.VALIDITY_DIAMETERS * dna.DIAMETER_NM
+
+
+def test_window_is_in_the_large_twist_regime():
+    data = dna.compute()
+    lo, hi = data["twist_window"]
+    assert lo > 10 * math.pi and hi < 30 * math.pi
+    for s in data["settled"]:
+        # the deficit is of the size of the leading asymptotic term at the window's start:
+        # |a2| / Omega^2 plus the ripple b3 / Omega^3, relative to the rise p_inf - 1
+        c = large_twist_coefficients(s["nu"])
+        bound = (abs(c.a2) / lo**2 + c.b3 / lo**3) / (large_twist_limit(s["nu"]) - 1)
+        assert 0 < s["max_rel_deficit"] <= 1.2 * bound
+
+
+def test_section_states_the_figure1_reach():
+    text = dna.section(dna.compute())
+    assert "no point of Figure 1" in text and "Hagerman 1988" in text
