@@ -28,12 +28,14 @@ from reproduce.io import json_value, write_csv, write_figure, write_text
 from reproduce.ledger import (
     Claim,
     ClaimSpec,
+    Condition,
     CrossCheck,
     Measured,
     Method,
     Rule,
     judge,
     ledger_check,
+    tiered_rule,
     update_ledger,
 )
 from spectral_rod import (
@@ -162,13 +164,19 @@ CLAIM_ID = "fig1-curves"
 #: Deviation a reader of the printed figure would see: half a plotted dot, in p*.
 VISIBLE_DOTS = 0.5
 VISIBLE = VISIBLE_DOTS * FIGURE1_DOT / FIGURE1_Y_PER_P
-RULE = ("Rule F1 (point-by-point accounting): 'inconclusive' if a digitised point is neither "
-        "reproduced by the best model nor in a cluster, or a cluster or missing point has "
-        "neither a computed cause nor LaTeX evidence; else 'fails' if a point lies farther "
-        f"from the converged p* than half a plotted dot ({VISIBLE_DOTS * FIGURE1_DOT:g} picture "
-        f"units = {VISIBLE:.2e} in p*); else 'holds' if there are no clusters and no missing "
-        "points (every point is the procedure applied to the correct root); else 'holds "
-        "approximately'.")
+#: Rule F1 (point-by-point accounting), its text and logic from the same conditions.
+RULE_F1 = tiered_rule(
+    [("inconclusive", (Condition("unaccounted_or_unexplained", ">", "the number of digitised "
+                                 "points neither reproduced nor in a cluster, plus clusters and "
+                                 "missing points with neither a computed cause nor LaTeX "
+                                 "evidence,", 0, fmt="d"),)),
+     ("fails", (Condition("max_abs_deviation", ">", "the largest distance of a point from the "
+                          "converged p* (half a plotted dot:)", VISIBLE, fmt=".2e"),)),
+     ("holds", (Condition("irregular", "<=", "the number of clusters and missing points", 0,
+                          fmt="d"),))],
+    "holds approximately",
+    note="holds: every point is the procedure applied to the correct root")
+RULE = "Rule F1 (point-by-point accounting): " + RULE_F1.text + "."
 METHODS = (Method(f"Chebyshev collocation (converged p*, tol {TOL:g})", "inst1"),
            Method("sign-change scan of the boundary determinant D_sym·D_anti (double "
                   "precision), simulating the authors' procedure",
@@ -182,22 +190,18 @@ SAMPLE_EVERY, TRUTH_LIMIT = 60, 1e-11
 
 def accounting(fx: Forensics) -> dict:
     """The numbers the verdict on Figure 1 is taken from."""
-    return {"unaccounted_points": len(fx.unaccounted()),
-            "unexplained": (sum(not c["explained"] for c in fx.clusters)
-                            + sum(not m["explained"] for m in fx.missing_points)),
+    unexplained = (sum(not c["explained"] for c in fx.clusters)
+                   + sum(not m["explained"] for m in fx.missing_points))
+    return {"unaccounted_points": len(fx.unaccounted()), "unexplained": unexplained,
             "max_abs_deviation": fx.max_deviation(), "visible_deviation": VISIBLE,
-            "clusters": len(fx.clusters), "missing_points": len(fx.missing_points)}
+            "clusters": len(fx.clusters), "missing_points": len(fx.missing_points),
+            "irregular": len(fx.clusters) + len(fx.missing_points),
+            "unaccounted_or_unexplained": len(fx.unaccounted()) + unexplained}
 
 
 def figure1_verdict(numbers: dict) -> str:
-    """The verdict on Figure 1 by :data:`RULE`, from the accounting's numbers."""
-    if numbers["unaccounted_points"] or numbers["unexplained"]:
-        return "inconclusive"
-    if numbers["max_abs_deviation"] > numbers["visible_deviation"]:
-        return "fails"
-    if not numbers["clusters"] and not numbers["missing_points"]:
-        return "holds"
-    return "holds approximately"
+    """The verdict on Figure 1 by :data:`RULE_F1`, from the accounting's numbers."""
+    return RULE_F1.decide(numbers)
 
 
 def cross_links(fx: Forensics) -> list[str]:
@@ -324,7 +328,8 @@ def forensics_claim(fx: Forensics, summary: pd.DataFrame, truth: CrossCheck) -> 
                  f"largest deviation of any point from p* {fx.max_deviation():.2e} = "
                  f"{fx.max_deviation() * FIGURE1_Y_PER_P:.2f} picture units (a dot is "
                  f"{FIGURE1_DOT:g}). Related rows: {', '.join(links)}.",
-        numbers={**accounting(fx), "headline": readme_sentence(fx), "best": fx.best.name,
+        numbers={**accounting(fx), "headline": readme_sentence(fx),
+                 "finding": readme_sentence(fx), "best": fx.best.name,
                  "reproduced": int(p["ok"].sum()), "points": len(p),
                  "clusters": [{k: c[k] for k in ("nu", "twist_from", "twist_to", "points",
                                                  "max_abs_deviation", "kind")}

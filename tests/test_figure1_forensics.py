@@ -481,3 +481,12 @@ def test_cli_exits_2_naming_a_broken_picture_file(tmp_path, monkeypatch, capsys)
     assert cli.main(["figure1", "--quiet", "--out", str(tmp_path / "out")]) == 2
     err = capsys.readouterr().err
     assert str(bad) in err and "Traceback" not in err
+
+
+def test_rule_f1_text_shows_the_threshold_its_logic_uses():
+    assert f"{figure1.VISIBLE:.2e}" in figure1.RULE
+    numbers = {"unaccounted_or_unexplained": 0, "irregular": 1,
+               "max_abs_deviation": 0.99 * figure1.VISIBLE}
+    assert figure1.figure1_verdict(numbers) == "holds approximately"
+    assert figure1.figure1_verdict({**numbers, "max_abs_deviation": 1.01 * figure1.VISIBLE}) \
+        == "fails"
