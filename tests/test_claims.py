@@ -354,3 +354,13 @@ def test_every_rule_text_shows_its_thresholds():
                   rows.LIMIT_ORDER, rows.EXPANSION_ORDER, rows.RESONANCE_ORDER,
                   rows.RESONANCE_REMAINDER_ORDER, rows.RESONANCE_EXACT, rows.ROOT_RATIO):
         assert f"{value:g}" in texts
+
+
+def test_crossing_limit_as_nu_grows_matches_the_closed_form():
+    # the closed form of the crossing at a large nu approaches the nu -> infinity limit
+    for n in (2, 3):
+        lim = rows.crossing_limit_nu_infinity(n)
+        gaps = [abs(crossing_closed_form(n, nu).twist - lim) for nu in (1e2, 1e3, 1e4)]
+        assert gaps[2] < 1e-5 * lim and gaps[2] < gaps[1] / 5 < gaps[0] / 25  # O(1/nu)
+    # and that limit is within the at-n-pi standard: "holds approximately" for every nu
+    assert rows.crossing_limit_nu_infinity(2) / (2 * math.pi) - 1 < rows.NEAR

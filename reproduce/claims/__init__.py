@@ -55,13 +55,15 @@ __all__ = ["CLAIMS", "NAME", "SUMMARY", "compute_evidence", "evaluate_claim", "e
 
 
 def report_section(claims: list[Claim], ev: StraightRodEvidence, seconds: float) -> str:
-    counts = ", ".join(f"{n} {v}" for v, n in verdict_counts(c.verdict for c in claims).items())
+    counts = ", ".join(f"{n} {v}" for v, n in verdict_counts(c.verdict for c in claims).items()
+                       if n)
     lines = ["## Claims: the straight rod, statement by statement", "",
              f"{len(claims)} claims of the paper's straight-rod section checked: {counts}. "
              f"Decisive numbers come from both solvers (collocation and the characteristic "
              f"equation in mpmath, {DPS} digits); they agree to {solver_agreement(ev):.1e} "
              f"(relative) over all {len(ev.spot) + len(ev.limit)} spot loads and "
-             f"{len(ev.maxima)} maxima. Full ledger: `claims.md`, `claims.json`.", "",
+             f"{len(ev.maxima)} maxima. Full ledger: `claims.md`, `claims.json`; the paper "
+             f"sentence by sentence: `{COVERAGE_FILE}`.", "",
              markdown_table(["id", "claim", "verdict", "key numbers"],
                             [[f"`{c.id}`", c.claim, f"**{c.verdict}**",
                               c.numbers.get("headline", "")] for c in claims]),

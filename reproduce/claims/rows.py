@@ -166,6 +166,14 @@ def at_n_pi_tiers(key: str, phrase: str, shape: tuple[Condition, ...]
             ("holds approximately", (*shape, Condition(key, "<", phrase, NEAR)))]
 
 
+def crossing_limit_nu_infinity(n: int) -> float:
+    """The twist Ω_n of the n-th family crossing as ν → ∞: the closed form of
+    asymptotics.crossing_closed_form, Ω_n² = π²[N(ν²+6ν+1) + √(N²(ν²−1)² + M(ν+1)²(3ν+1)(ν+3))]
+    / ((3ν+1)(ν+3)), N = n²+1, M = (n²−1)², divided through by ν²: π²(N + √(N² + 3M))/3."""
+    big_n, m = n * n + 1.0, (n * n - 1.0) ** 2
+    return math.pi * math.sqrt((big_n + math.sqrt(big_n**2 + 3.0 * m)) / 3.0)
+
+
 def window_end_nu_max(near: float = NEAR) -> float:
     """The largest ν for which the upper end of the imaginary-β1 window, Ω_b = 2π√(ν/(3ν+1)),
     lies within `near` relative of π: 4ν/(3ν+1) < (1 + near)²."""
@@ -344,8 +352,11 @@ def measure_first_maximum(ev: StraightRodEvidence) -> Measured:
                  f"{rises}. Only a local maximum: the next one (at {_fmt_pi(min(seconds), 4)} … "
                  f"{_fmt_pi(max(seconds), 4)}) is higher and p* → 2ν/(1+ν) > p*(Ω₂) "
                  f"({later_higher and below_limit}). Distance from 2π: {min(rel):.1e} … "
-                 f"{max(rel):.1e} relative, " + ("growing with ν." if growing
-                                                   else "not monotone in ν."),
+                 f"{max(rel):.1e} relative, " + ("growing with ν" if growing
+                                                   else "not monotone in ν")
+                 + f"; as ν → ∞ (closed form) Ω₂ → {_fmt_pi(crossing_limit_nu_infinity(2), 5)}, "
+                 f"{crossing_limit_nu_infinity(2) / (2 * math.pi) - 1:.2%} off 2π: within the "
+                 f"{NEAR:.0%} standard for every ν.",
         cross_checks=(*_maxima_cross_checks(ev), _ritz_check(ev, "maxima")))
 
 
@@ -414,7 +425,10 @@ def measure_further_maxima(ev: StraightRodEvidence) -> Measured:
                  f"switches: {grid_max_at_switch}); mpmath, collocation and closed form agree to "
                  f"{agree['p_coll_vs_closed']:.1e} in p* and {agree['twist_coll_vs_closed']:.1e} "
                  f"in Ω; heights increase towards the limit: {heights_rise}. Largest relative "
-                 f"offset |Ω_n − nπ|/(nπ) = {rel:.1e}. There is no maximum near π: p* rises "
+                 f"offset |Ω_n − nπ|/(nπ) = {rel:.1e}; its supremum over all ν is the ν → ∞ limit "
+                 f"at n = 2, {crossing_limit_nu_infinity(2) / (2 * math.pi) - 1:.2%} (closed "
+                 f"form; n = 3: {crossing_limit_nu_infinity(3) / (3 * math.pi) - 1:.2%}). There "
+                 "is no maximum near π: p* rises "
                  f"monotonically up to the 2π crossing for every ν ({no_max_near_pi}); the end "
                  "sections are aligned at Ω = nπ, but the maxima are where β_k L = (n ∓ 1)π.",
         cross_checks=(*_maxima_cross_checks(ev), _ritz_check(ev, "maxima")))
@@ -477,7 +491,8 @@ def measure_limit(ev: StraightRodEvidence) -> Measured:
                  f"Ω ≲ 4/(δp∞), ν near 1); the 4-term expansion's error like "
                  f"Ω^{orders[4][1]:.2f} (expected −5), {worst4:.1e} at Ω = {om_max:.0f}. The "
                  f"deficit p∞ − p* stays below 1 % / 0.1 % of the total rise p∞ − 1 beyond Ω = "
-                 f"{settle_txt} (ν as listed; collocation grid). Solvers agree to {agree:.1e}.",
+                 f"{settle_txt} (ν as listed; collocation grid). Solvers agree to {agree:.1e}. "
+                 "Limits of p∞ (closed form): 1 as ν → 1 (rod-isotropic), 2 as ν → ∞.",
         cross_checks=(_spot_cross_check(rows, "large-twist p*: collocation vs mpmath",
                                         LARGE_TWIST_LIMIT),
                       _ritz_check(ev, "limit")))
