@@ -149,7 +149,7 @@ def figure_wavenumbers(ev: StraightRodEvidence):
     ax3.set_xlabel(TWIST_LABEL)
     ax3.set_ylabel("|2π − (β₂ − β₁)L|")
     ax3.set_title("β₂ − β₁ → 2π from below; exactly 2π at every p* maximum", fontsize=10)
-    ax3.set_ylim(3e-13, 3)
+    ax3.set_ylim(3e-13, 1e2)  # headroom for the legend above the curves
     ax3.legend(fontsize=7, frameon=False, loc="upper right", ncol=2)
     fig.subplots_adjust(top=0.96, bottom=0.05)
     return fig
