@@ -58,6 +58,48 @@ from spectral_rod.figure_data import check_picture_matches
 
 #: The twist ranges of Forensics.range_sizes (its order) in words.
 RANGE_WORDS = "below / in / above"
+#: The scene's prose: templates with named fields, filled by :func:`readme_sentence` and its
+#: helpers (so a word can change without reading a computation).
+TEXT = {
+    "at_same": "reported at {lo[reported_at]}",
+    "at_split": "reported at {lo[reported_at]} at low twist and at {hi[reported_at]} at high "
+                "twist",
+    "run": "a sign-change scan of the boundary determinant {at}, stepping {lo[variable]} "
+           "({lo[description]}) by {lo[step]:g} at low twist and {hi[variable]} "
+           "({hi[description]}) by {hi[step]:g} at high twist",
+    "off": "up to {g[max_abs_deviation]:.1e} off",
+    "window_lines": ", {g[sloped_line]} of them on straight lines between the flanking computed "
+                    "points",
+    "window_lead": "straight lines ",
+    "window_group": "{lead}across the imaginary-β₁ window ({n} points{lines}, {off})",
+    "double_flat": ", {g[flat]} of them printed flat",
+    "double_lead": "flat values ",
+    "double_group": "{lead}at the {ns} crossing where both mode families' roots fall in one "
+                    "scan step ({n} points{flat}, {off})",
+    "other_group": "{g[kind]} ({n} points, {off})",
+    "bound_all": "every one of them",
+    "bound_some": "{dev[within_band]} of them",
+    "where": "so computed − digitised lies in [{lo:.1e}, {hi:.1e}] there (within one scan step "
+             "plus the print rounding at {bound})",
+    "where_none": "none of them",
+    "readme": "Figure 1 is explained point by point: {n_ok} of {n} plotted points are exactly "
+              "(to the {quantum:g} print quantum) what the authors' procedure gives from the "
+              "converged p* -- {run} -- {where}.",
+    "other": " The other {n_bad}",
+    "in_clusters": " lie in clusters of {in_clusters} points, which",
+    "all_inserted": " were inserted separately (LaTeX lines without the program's trailing "
+                    "blank)",
+    "some_inserted": " include {edited} inserted separately (LaTeX lines without the program's "
+                     "trailing blank)",
+    "not_reproduced": " are not reproduced",
+    "fails_all": " where that procedure fails",
+    "fails_some": "; that procedure fails at {caused} of them",
+    "groups": ": {groups}.",
+    "missing_at": "Ω = {m[twist_angle]:.3f} (ν = {m[nu]})",
+    "same_reason": "For the same reason",
+    "both_roots": "Where both mode families' roots fall in one scan step",
+    "missing": " {why} at the {ns} crossing no value was printed at {miss}.",
+}
 
 NAME = "figure1"
 SUMMARY = ("straight twisted rod, Eq. inst1: collocation p*(Omega) vs the digitised Figure 1, "
@@ -222,44 +264,39 @@ def cross_links(fx: Forensics) -> list[str]:
 
 def _run_phrase(fx: Forensics) -> str:
     lo, hi = (fx.run_summary()[r] for r in ("low", "high"))
-    at = (f"reported at {lo['reported_at']}" if lo["reported_at"] == hi["reported_at"] else
-          f"reported at {lo['reported_at']} at low twist and at {hi['reported_at']} at high "
-          f"twist")
-    return (f"a sign-change scan of the boundary determinant {at}, stepping {lo['variable']} "
-            f"({lo['description']}) by {lo['step']:g} at low twist and {hi['variable']} "
-            f"({hi['description']}) by {hi['step']:g} at high twist")
+    at = (TEXT["at_same"].format(lo=lo) if lo["reported_at"] == hi["reported_at"]
+          else TEXT["at_split"].format(lo=lo, hi=hi))
+    return TEXT["run"].format(at=at, lo=lo, hi=hi)
 
 
 def _group_phrase(g: dict) -> str:
     """One kind of cluster in words (every number from :meth:`Forensics.cluster_groups`)."""
-    off = f"up to {g['max_abs_deviation']:.1e} off"
+    off = TEXT["off"].format(g=g)
     n = g["points"]
     if g["kind"] == CLUSTER_WINDOW:
-        lines = "" if g["sloped_line"] == n else (f", {g['sloped_line']} of them on straight "
-                                                  f"lines between the flanking computed points")
-        return (f"{'straight lines ' if g['sloped_line'] == n else ''}across the imaginary-β₁ "
-                f"window ({n} points{lines}, {off})")
+        lines = "" if g["sloped_line"] == n else TEXT["window_lines"].format(g=g)
+        return TEXT["window_group"].format(
+            lead=TEXT["window_lead"] if g["sloped_line"] == n else "", n=n, lines=lines, off=off)
     if g["kind"] == CLUSTER_DOUBLE_ROOT:
         ns = "/".join(f"{k}π" for k in g["crossings"])
-        flat = "" if g["flat"] == n else f", {g['flat']} of them printed flat"
-        return (f"{'flat values ' if g['flat'] == n else ''}at the {ns} crossing where both "
-                f"mode families' roots fall in one scan step ({n} points{flat}, {off})")
-    return f"{g['kind']} ({n} points, {off})"
+        flat = "" if g["flat"] == n else TEXT["double_flat"].format(g=g)
+        return TEXT["double_group"].format(lead=TEXT["double_lead"] if g["flat"] == n else "",
+                                           ns=ns, n=n, flat=flat, off=off)
+    return TEXT["other_group"].format(g=g, n=n, off=off)
 
 
 def readme_sentence(fx: Forensics) -> str:
-    """The one-sentence summary of the forensics for the README (every number computed)."""
+    """The one-sentence summary of the forensics for the README (every number computed, the
+    words from :data:`TEXT`)."""
     p = fx.points
     dev = fx.reproduced_deviation()
     n_ok = dev["points"]
-    bound = ("every one of them" if dev["within_band"] == n_ok else
-             f"{dev['within_band']} of them")
-    where = (f"so computed − digitised lies in [{-dev['max']:.1e}, {-dev['min']:.1e}] there "
-             f"(within one "
-             f"scan step plus the print rounding at {bound})" if n_ok else "none of them")
-    s = (f"Figure 1 is explained point by point: {n_ok} of {len(p)} plotted points are exactly "
-         f"(to the {FIGURE1_PRINT_QUANTUM:g} print quantum) what the authors' procedure gives "
-         f"from the converged p* -- {_run_phrase(fx)} -- {where}.")
+    bound = (TEXT["bound_all"] if dev["within_band"] == n_ok
+             else TEXT["bound_some"].format(dev=dev))
+    where = (TEXT["where"].format(lo=-dev["max"], hi=-dev["min"], bound=bound) if n_ok
+             else TEXT["where_none"])
+    s = TEXT["readme"].format(n_ok=n_ok, n=len(p), quantum=FIGURE1_PRINT_QUANTUM,
+                              run=_run_phrase(fx), where=where)
     groups = fx.cluster_groups()
     n_bad = len(p) - n_ok
     if n_bad:
@@ -269,27 +306,25 @@ def readme_sentence(fx: Forensics) -> str:
         in_clusters = sum(g["points"] for g in groups)
         edited = lat["edited_in_clusters"] if lat else None
         caused = sum(g["caused"] for g in groups)
-        s += f" The other {n_bad}"
+        s += TEXT["other"].format(n_bad=n_bad)
         if in_clusters != n_bad:
-            s += f" lie in clusters of {in_clusters} points, which"
+            s += TEXT["in_clusters"].format(in_clusters=in_clusters)
         if edited == in_clusters:
-            s += " were inserted separately (LaTeX lines without the program's trailing blank)"
+            s += TEXT["all_inserted"]
         elif edited:
-            s += (f" include {edited} inserted separately (LaTeX lines without the program's "
-                  f"trailing blank)")
+            s += TEXT["some_inserted"].format(edited=edited)
         else:
-            s += " are not reproduced"
-        s += (" where that procedure fails" if caused == in_clusters else
-              f"; that procedure fails at {caused} of them")
-        s += ": " + " and ".join(_group_phrase(g) for g in groups) + "."
+            s += TEXT["not_reproduced"]
+        s += (TEXT["fails_all"] if caused == in_clusters
+              else TEXT["fails_some"].format(caused=caused))
+        s += TEXT["groups"].format(groups=" and ".join(_group_phrase(g) for g in groups))
     crossed = [m for m in fx.missing_points if m.get("crossing")]
     if crossed:
-        miss = "; ".join(f"Ω = {m['twist_angle']:.3f} (ν = {m['nu']})" for m in crossed)
+        miss = "; ".join(TEXT["missing_at"].format(m=m) for m in crossed)
         miss_n = "/".join(sorted({f"{m['crossing']['n']}π" for m in crossed}))
-        why = ("For the same reason" if any(g["kind"] == CLUSTER_DOUBLE_ROOT
-                                            for g in groups)
-               else "Where both mode families' roots fall in one scan step")
-        s += f" {why} at the {miss_n} crossing no value was printed at {miss}."
+        why = (TEXT["same_reason"] if any(g["kind"] == CLUSTER_DOUBLE_ROOT for g in groups)
+               else TEXT["both_roots"])
+        s += TEXT["missing"].format(why=why, ns=miss_n, miss=miss)
     return s
 
 
