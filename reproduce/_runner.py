@@ -107,7 +107,8 @@ def versions() -> dict[str, str]:
 #: The headline's wording: templates with named fields (numbers come from ``claims.json``).
 HEADLINE = {
     "title": "## Headline",
-    "paper": "**What the paper says**: {n} of its statements checked — {tally}.",
+    "paper": "**What the paper says**: {n} claims of the paper (its own statements) checked "
+             "— {tally}.",
     "others": "Not counted above: {n_package} checks of the package's own methods ({package}) "
               "and {n_caveat} modelling caveats about what the paper leaves open ({caveat}).",
     "causes": "**The paper's errors**: the {n_fails} failing statements trace back to "

@@ -130,7 +130,8 @@ def figure1_picture(path: str | Path | None = None) -> str:
     ``figure1_picture.tex``; the formatting of its lines is evidence for
     :mod:`spectral_rod.figure1_forensics`), checked before it is returned: it must hold one
     ``picture`` environment whose ``\\put`` points form the schema's three curves with their
-    point counts. A truncated, garbled or unreadable file raises :class:`ReferenceDataError`
+    point counts and are the packaged digitised points (:func:`load_figure1`). A truncated,
+    garbled, edited or unreadable file raises :class:`ReferenceDataError`
     (``FileNotFoundError`` if it is missing) naming the file and the problem.
 
     >>> figure1_picture().count(r"\\circle*")
@@ -177,6 +178,7 @@ def _check_picture(tex: str, where: Path) -> None:
             raise ReferenceDataError(f"{where}: curve {spec['curve']} (nu = {spec['nu']}) has "
                                      f"{got} \\put points, expected {spec['points']} (truncated "
                                      f"or garbled file?)")
+    check_picture_matches(pts, load_figure1(), where)
 
 
 @cache

@@ -32,7 +32,8 @@ def test_paper_statements_are_tallied_apart_from_checks_and_caveats(tmp_path):
         _row("d", "fails", cause=CAUSE_B), _row("e", "fails"),
         _row("p", "holds", kind="package"), _row("q", "fails", kind="caveat")])
     first = text.split("## Verdicts, row by row")[0]
-    assert "5 of its statements checked — **holds** 1, **fails** 4." in first
+    assert "5 claims of the paper (its own statements) checked — **holds** 1, **fails** 4." \
+        in first
     assert "1 checks of the package's own methods (**holds** 1)" in first
     assert "1 modelling caveats about what the paper leaves open (**fails** 1)" in first
     # four failing statements, three independent errors: A (two rows), B, and e on its own

@@ -31,6 +31,7 @@ from spectral_rod import (
     inst1_variant_table,
     large_twist_expansion,
     large_twist_limit,
+    load_figure1,
     non_planarity,
     settling_point,
 )
@@ -317,8 +318,6 @@ def even_order() -> dict[str, object]:
 
 def figure1_range() -> dict[str, float]:
     """Smallest and largest p* among Figure 1's digitised points (the packaged CSV)."""
-    from spectral_rod.figure_data import load_figure1
-
     p = load_figure1()["p_star"].to_numpy()
     return {"p_min": float(p.min()), "p_max": float(p.max()), "points": float(p.size)}
 

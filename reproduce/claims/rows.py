@@ -44,6 +44,8 @@ from reproduce.ledger import (
     tiered_rule,
 )
 from spectral_rod import (
+    FIGURE1_DOT,
+    FIGURE1_Y_PER_P,
     beta_difference,
     critical_wavenumbers,
     crossing_twist_asymptotic,
@@ -53,7 +55,6 @@ from spectral_rod import (
     local_maxima,
     observed_order,
 )
-from spectral_rod.figure_data import FIGURE1_DOT, FIGURE1_Y_PER_P
 
 SCENE = "claims"
 
