@@ -57,6 +57,47 @@ from spectral_rod import (
 
 #: The twist ranges of Forensics.range_sizes (its order) in words.
 RANGE_WORDS = "below / in / above"
+#: The report section's paragraphs (:func:`run`, :func:`forensics_section`): templates with
+#: named fields.
+SECTION_TEXT = {
+    "head": "## Figure 1: critical load versus twist\n\n![Figure 1](figure1.png)\n\n"
+            "Collocation (Chebyshev, degree chosen per point by coefficient decay, tol {tol:g}) "
+            "at the {points} digitised points of the paper's picture; degree n from {n_min} to "
+            "{n_max} (median {n_median}); largest error estimate {estimate:.1e}. Sweep time "
+            "{sweep:.2f} s.\n\nDeviation computed − digitised (the digitisation is printed to "
+            "{quantum:g} picture units, i.e. {quantum_p:.1e} in p*; the plotted dots are {dot:g} "
+            "unit = {dot_p:.1e} wide):\n\n| ν | points | rms | max abs | at Ω(L) | mean | within "
+            "rms ≤ {rms:g}, max ≤ {max:g} |\n|---|---|---|---|---|---|---|",
+    "deviation_row": "| {nu} | {r[points]} | {r[rms]:.2e} | {r[max_abs]:.2e} | "
+                     "{r[twist_at_max]:.3f} | {r[mean]:+.2e} | {passes} |",
+    "files": "Files: `figure1.png`, `figure1.pdf`, `figure1_comparison.csv` (columns: curve, "
+             "nu, picture_x, picture_y, twist_angle, p_star_digitised, p_star_computed, "
+             "deviation, n, error_estimate, mode_family).",
+    "forensics_head": "### Every point explained\n\n![Figure 1 forensics]"
+                      "(figure1_forensics.png)\n\nAnalysis time {seconds:.1f} s "
+                      "(spectral_rod.figure1_forensics; output `figure1_forensics.json`). A point "
+                      "is *reproduced* if the model's y, printed to the print quantum, equals "
+                      "the picture's ({quantum:g} picture units = {quantum_p:.1e} in p*). Points "
+                      "{ranges} the imaginary-β₁ window: {sizes}.",
+    "best": "**Best model:** `{name}` -- {description}. It reproduces **{ok} of {n}** points "
+            "exactly. Where the scan yields no value it predicts a failure of the authors' "
+            "procedure; a quantisation model always yields a value, so it can also match "
+            "inserted points by coincidence (compare the two two-run rows).",
+    "switch_head": "Where the two runs meet (the switch is fitted per curve):\n\n| ν | low run: "
+                   "last reproduced Ω | last point ≤ Ω_a | window (Ω_a, Ω_b) | high run: first "
+                   "reproduced Ω | first point ≥ Ω_b |\n|---|---|---|---|---|---|",
+    "clusters_head": "**Clusters** (runs of points off the best model):\n\n| # | ν | Ω(L) | "
+                     "points | max abs deviation | kind |\n|---|---|---|---|---|---|",
+    "cluster_row": "| C{k} | {c[nu]} | {c[twist_from]:.3f}…{c[twist_to]:.3f} | {c[points]} | "
+                   "{c[max_abs_deviation]:.2e} | {c[kind]} |",
+    "missing_head": "**Missing grid points:**",
+    "prediction_head": "Predicted failures of the procedure (grid points where the covering "
+                       "run's scan finds no sign change) against irregular grid points "
+                       "(missing, or in a cluster):\n\n| ν | predicted | irregular | both | "
+                       "predicted only | irregular only |\n|---|---|---|---|---|---|",
+    "ledger": "**Ledger row `{id}`: {verdict}.** {rule} Related rows: {links}.",
+    "readme": "README sentence: {sentence}",
+}
 #: The scene's prose: templates with named fields, filled by :func:`readme_sentence` and its
 #: helpers (so a word can change without reading a computation).
 TEXT = {
@@ -495,20 +536,13 @@ def forensics_section(fx: Forensics, claim: Claim, seconds: float) -> list[str]:
     """The report's Markdown on the forensics (every number from fx)."""
     p = fx.points
     sizes = fx.range_sizes()
-    lines = ["### Every point explained", "", "![Figure 1 forensics](figure1_forensics.png)", "",
-             f"Analysis time {seconds:.1f} s (spectral_rod.figure1_forensics; output "
-             "`figure1_forensics.json`). A point is *reproduced* if the model's y, printed to "
-             f"the print quantum, equals the picture's ({FIGURE1_PRINT_QUANTUM:g} picture units "
-             f"= {FIGURE1_PRINT_QUANTUM / FIGURE1_Y_PER_P:.1e} in p*). Points {RANGE_WORDS} the "
-             f"imaginary-β₁ window: {' / '.join(str(v) for v in sizes.values())}.",
-             "", f"**Best model:** `{fx.best.name}` -- {fx.best.description}. It reproduces "
-             f"**{int(p['ok'].sum())} of {len(p)}** points exactly. Where the scan yields no "
-             "value it predicts a failure of the authors' procedure; a quantisation model "
-             "always yields a value, so it can also match inserted points by coincidence "
-             "(compare the two two-run rows).", "", *_hypothesis_rows(fx), "",
-             "Where the two runs meet (the switch is fitted per curve):", "",
-             "| ν | low run: last reproduced Ω | last point ≤ Ω_a | window (Ω_a, Ω_b) | "
-             "high run: first reproduced Ω | first point ≥ Ω_b |", "|---|---|---|---|---|---|"]
+    lines = [SECTION_TEXT["forensics_head"].format(
+                 seconds=seconds, quantum=FIGURE1_PRINT_QUANTUM,
+                 quantum_p=FIGURE1_PRINT_QUANTUM / FIGURE1_Y_PER_P, ranges=RANGE_WORDS,
+                 sizes=" / ".join(str(v) for v in sizes.values())),
+             "", SECTION_TEXT["best"].format(name=fx.best.name, description=fx.best.description,
+                                             ok=int(p["ok"].sum()), n=len(p)),
+             "", *_hypothesis_rows(fx), "", SECTION_TEXT["switch_head"]]
     for nu, w in fx.switches.items():
         win = fx.windows.get(nu, {})
         lines.append(f"| {nu} | {_num(w['low_run_last_reproduced'])} | "
@@ -525,11 +559,9 @@ def forensics_section(fx: Forensics, claim: Claim, seconds: float) -> list[str]:
                           f"{w['low_run_reproduced']}, high run "
                           f"{w['high_run_met_imaginary_beta1']} of {w['high_run_reproduced']}"
                           for nu, w in fx.switches.items()) + ".",
-              "", "**Clusters** (runs of points off the best model):", "",
-              "| # | ν | Ω(L) | points | max abs deviation | kind |", "|---|---|---|---|---|---|"]
+              "", SECTION_TEXT["clusters_head"]]
     for k, c in enumerate(fx.clusters, 1):
-        lines.append(f"| C{k} | {c['nu']} | {c['twist_from']:.3f}…{c['twist_to']:.3f} | "
-                     f"{c['points']} | {c['max_abs_deviation']:.2e} | {c['kind']} |")
+        lines.append(SECTION_TEXT["cluster_row"].format(k=k, c=c))
     lines += [""] + [f"* **C{k}.** {c['explanation']}" for k, c in enumerate(fx.clusters, 1)]
     lat = fx.latex_summary()
     if lat:
@@ -543,18 +575,15 @@ def forensics_section(fx: Forensics, claim: Claim, seconds: float) -> list[str]:
                   f"{len(lat['edited_reproduced'])}, "
                   f"{sum(r['reproduced'] for r in lat['edited_reproduced'])} carry exactly "
                   f"the model's value (rewritten): Ω = {retyped}."]
-    lines += ["", "**Missing grid points:**", ""]
+    lines += ["", SECTION_TEXT["missing_head"], ""]
     lines += _missing_rows(fx) or ["* none"]
-    lines += ["", "Predicted failures of the procedure (grid points where the covering run's "
-              "scan finds no sign change) against irregular grid points (missing, or in a "
-              "cluster):", "", "| ν | predicted | irregular | both | predicted only | "
-              "irregular only |", "|---|---|---|---|---|---|"]
+    lines += ["", SECTION_TEXT["prediction_head"]]
     for nu, r in fx.prediction.items():
         lines.append(f"| {nu} | {r['predicted_failures']} | {r['irregular']} | {r['both']} | "
                      f"{r['predicted_only'] or '—'} | {r['irregular_only'] or '—'} |")
-    lines += ["", f"**Ledger row `{claim.id}`: {claim.verdict}.** {RULE} Related rows: "
-              f"{', '.join(claim.numbers['cross_links'])}.", "",
-              f"README sentence: {readme_sentence(fx)}"]
+    lines += ["", SECTION_TEXT["ledger"].format(id=claim.id, verdict=claim.verdict, rule=RULE,
+                                                links=", ".join(claim.numbers["cross_links"])),
+              "", SECTION_TEXT["readme"].format(sentence=readme_sentence(fx))]
     return lines
 
 
@@ -576,26 +605,15 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
              write_figure(out / "figure1.pdf", fig)]
     files.append(write_csv(out / "figure1_comparison.csv", table, float_format="%.12g"))
     n_used = table["n"]
-    lines = [
-        "## Figure 1: critical load versus twist", "",
-        "![Figure 1](figure1.png)", "",
-        f"Collocation (Chebyshev, degree chosen per point by coefficient decay, tol {TOL:g}) at "
-        f"the {len(table)} digitised points of the paper's picture; degree n from "
-        f"{n_used.min()} to {n_used.max()} (median {int(n_used.median())}); largest error "
-        f"estimate {table['error_estimate'].max():.1e}. Sweep time {t_sweep:.2f} s.", "",
-        f"Deviation computed − digitised (the digitisation is printed to "
-        f"{FIGURE1_PRINT_QUANTUM:g} picture units, i.e. "
-        f"{FIGURE1_PRINT_QUANTUM / FIGURE1_Y_PER_P:.1e} in p*; the plotted dots are "
-        f"{FIGURE1_DOT:g} unit = {FIGURE1_DOT / FIGURE1_Y_PER_P:.1e} wide):", "",
-        "| ν | points | rms | max abs | at Ω(L) | mean | within rms ≤ "
-        f"{RMS_LIMIT:g}, max ≤ {MAX_LIMIT:g} |", "|---|---|---|---|---|---|---|"]
+    lines = [SECTION_TEXT["head"].format(
+        tol=TOL, points=len(table), n_min=n_used.min(), n_max=n_used.max(),
+        n_median=int(n_used.median()), estimate=table["error_estimate"].max(), sweep=t_sweep,
+        quantum=FIGURE1_PRINT_QUANTUM, quantum_p=FIGURE1_PRINT_QUANTUM / FIGURE1_Y_PER_P,
+        dot=FIGURE1_DOT, dot_p=FIGURE1_DOT / FIGURE1_Y_PER_P, rms=RMS_LIMIT, max=MAX_LIMIT)]
     for nu, r in summary.iterrows():
-        lines.append(f"| {nu} | {r['points']} | {r['rms']:.2e} | {r['max_abs']:.2e} | "
-                     f"{r['twist_at_max']:.3f} | {r['mean']:+.2e} | "
-                     f"{'yes' if r['passes'] else 'NO'} |")
-    lines += ["", "Files: `figure1.png`, `figure1.pdf`, `figure1_comparison.csv` (columns: "
-              "curve, nu, picture_x, picture_y, twist_angle, p_star_digitised, p_star_computed, "
-              "deviation, n, error_estimate, mode_family)."]
+        lines.append(SECTION_TEXT["deviation_row"].format(
+            nu=nu, r=r, passes="yes" if r["passes"] else "NO"))
+    lines += ["", SECTION_TEXT["files"]]
     t1 = time.perf_counter()
     fx = analyse_figure1(reference, pic, p_true=table["p_star_computed"].to_numpy())
     t_fx = time.perf_counter() - t1

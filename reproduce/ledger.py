@@ -356,5 +356,7 @@ LEDGER_CHECK: dict[str, Any] = {
 
 def ledger_check(numbers: Mapping[str, Any] | None = None) -> dict[str, Any]:
     """:data:`LEDGER_CHECK` with a scene's own rules for some ``*.numbers.*`` keys, matched
-    before the general ones (the first matching pattern applies)."""
-    return {**(numbers or {}), **LEDGER_CHECK}
+    before the general ones (the first matching pattern applies) but after the prose keys
+    (``headline``, ``finding``: compared as text whatever the scene's number rules say)."""
+    prose = {k: v for k, v in LEDGER_CHECK.items() if v == "text"}
+    return {**prose, **(numbers or {}), **LEDGER_CHECK}
