@@ -364,3 +364,14 @@ def test_crossing_limit_as_nu_grows_matches_the_closed_form():
         assert gaps[2] < 1e-5 * lim and gaps[2] < gaps[1] / 5 < gaps[0] / 25  # O(1/nu)
     # and that limit is within the at-n-pi standard: "holds approximately" for every nu
     assert rows.crossing_limit_nu_infinity(2) / (2 * math.pi) - 1 < rows.NEAR
+
+
+def test_the_n_cubed_offset_law_is_asymptotic_only(ev):
+    from spectral_rod import crossing_twist_asymptotic
+
+    c = _claim("rod-further-maxima", ev)
+    # the closed form of the crossing (not the scene's mpmath root) against the n^-3 law
+    exact = crossing_closed_form(2, 1.5).twist / math.pi - 2
+    law = crossing_twist_asymptotic(2, 1.5) / math.pi - 2
+    assert c.numbers["offset_ratio_first"] == pytest.approx(exact / law, rel=1e-6)
+    assert c.numbers["offset_ratio_first"] > 1.2  # far from 1 at n = 2
