@@ -5,8 +5,8 @@ Every verdict threshold is a named constant in the block "thresholds" below, and
 built by :func:`reproduce.ledger.tiered_rule` from :class:`reproduce.ledger.Condition` objects
 that use them, so a rule's text and its logic are one definition. Claims of one kind share one
 standard: every "at n pi" claim is judged by :data:`NEAR` (and "exactly at" by :data:`EXACT`);
-every "for all Omega" claim over the scene's whole twist range. The evidence texts only report,
-from templates with named fields (:data:`FINDINGS`).
+every "for all Omega" claim over the scene's whole twist range. The evidence texts and findings
+only report, from templates with named fields (:data:`EVIDENCE`, :data:`FINDINGS`).
 
 Root causes (:data:`ROOT_IMAGINARY_BETA1`, :data:`ROOT_UNIQUENESS`, :data:`ROOT_P_STAR_TYPO`) are
 one-line statements of independent errors of the paper, shared by every failing row they explain.
@@ -150,6 +150,150 @@ FINDINGS = {
 }
 
 
+#: The evidence texts of the rows: templates with named fields, filled by the rows'
+#: measurements (:func:`_evidence`), so a word can change without reading a computation.
+EVIDENCE = {
+    "rod-zero-twist": (
+        "max |p* − 1| = {dev:.1e} (collocation); max |D_sym(π², 0, ν)| = {det:.1e} (mpmath; p* ≥ "
+        "1 by the Rayleigh bound, so π² is the lowest root); Euler mode planarity σ_min/σ_max = "
+        "{euler_planarity_coll:.1e}, max |x₁ − sin πs| = {euler_shape_mismatch:.1e}."),
+    "rod-isotropic": (
+        "{int_iso_points} twists in [0, {iso_twist_max:g}]: max |p* − 1| = {iso_max_dev_coll:.1e}"
+        " (collocation); max |D_sym(π², Ω, 1)| = {iso_max_det_mp:.1e} (mpmath, {dps} digits)."),
+    "rod-stabilising": (
+        "min (p* − 1) = {min_excess:.3e} > 0 on {int_pos_sum} twists; min increase between "
+        "consecutive ν = {min_step:.3e}; all {len_ev_spot} mpmath spot values > 1: {spot_ok}, "
+        "increasing in ν: {spot_mono}. (p* is not monotone in Ω: see rod-further-maxima.)"),
+    "rod-first-maximum": (
+        "{table}. The three determinations agree to {agree_p_coll_vs_closed:.1e} in p* and "
+        "{agree_twist_coll_vs_closed:.1e} in Ω. It is a corner (p* = min of two smooth branches, "
+        "slopes of opposite sign, e.g. ν = {detail_nu}: {m15_slopes_mp_m15_left:+.4f} "
+        "({m15_left}) / {m15_slopes_mp_m15_right:+.4f} ({m15_right})), not a smooth maximum; p* "
+        "rises monotonically before it: {rises}. Only a local maximum: the next one (at "
+        "{fmt_pi_min_seconds_4} … {fmt_pi_max_seconds_4}) is higher and p* → 2ν/(1+ν) > p*(Ω₂) "
+        "({later_higher_and_below_limit}). Distance from 2π: {min_rel:.1e} … {max_rel:.1e} "
+        "relative, {growth}; as ν → ∞ (closed form) Ω₂ → "
+        "{fmt_pi_crossing_limit_nu_inf}, {crossing_limit_nu_infinity_2:.2%} off 2π: within the "
+        "{near:.0%} standard for every ν."),
+    "rod-further-maxima": (
+        "ν = {detail_nu}: maxima at {rows}, … (offset ∝ n^{slope:.2f}; asymptotically "
+        "π((ν−1)/(ν+1))²/(8n³): at n = {last_n} {predicted:.4e}π predicted, {last_offset:.4e}π "
+        "found; the n⁻³ law is asymptotic: at n = {first_n} found/predicted = {ratio_first:.2f});"
+        " {others}. All {len_ev_maxima} are corners where the critical mode switches family "
+        "({alternating}): {all_corner}; none is smooth (grid maxima at family switches: "
+        "{grid_max_at_switch}); mpmath, collocation and closed form agree to "
+        "{agree_p_coll_vs_closed:.1e} in p* and {agree_twist_coll_vs_closed:.1e} in Ω; heights "
+        "increase towards the limit: {heights_rise}. Largest relative offset |Ω_n − nπ|/(nπ) = "
+        "{rel:.1e}; its supremum over all ν is the ν → ∞ limit at n = 2, "
+        "{crossing_limit_nu_infinity_2:.2%} (closed form; n = 3: "
+        "{crossing_limit_nu_infinity_3:.2%}). There is no maximum near π: p* rises monotonically "
+        "up to the 2π crossing for every ν ({no_max_near_pi}); the end sections are aligned at Ω "
+        "= nπ, but the maxima are where β_k L = (n ∓ 1)π."),
+    "rod-limit": (
+        "p∞ = {limits}. p∞ − p* > 0 decays like Ω^{orders_0_0:.2f} … "
+        "Ω^{orders_0_1:.2f} (−2 from the smooth deficit a2 = −π²δ²p∞³/4, δ = (1 − 1/ν)/2; steeper"
+        " where the −b3|sin Ω|/Ω³ ripple, b3 = π²δp∞², is still comparable, i.e. for Ω ≲ 4/(δp∞),"
+        " ν near 1); the 4-term expansion's error like Ω^{orders_4_1:.2f} (expected −5), "
+        "{worst4:.1e} at Ω = {om_max:.0f}. The deficit p∞ − p* stays below 1 % / 0.1 % of the "
+        "total rise p∞ − 1 beyond Ω = {settle_txt} (ν as listed; collocation grid). Solvers agree"
+        " to {agree:.1e}. Limits of p∞ (closed form): 1 as ν → 1 (rod-isotropic), 2 as ν → ∞."),
+    "rod-beta-real": (
+        "By the closed forms β1 is imaginary on a window around π for every ν > 1: Ω_a < Ω(L) < "
+        "Ω_b with Ω_b = 2π√(ν/(3ν+1)) (p* = 4ν/(3ν+1) there) and Ω_a = 2y/√(ν+3), (ν−1) y cos y +"
+        " 4 sin y = 0, y ∈ (π/2, π] (p* = 4νy²/(π²(ν+3))). {tab}. Closed forms match p* of both "
+        "solvers at the ends to {dev:.1e}; X− at the window centre < 0 by mpmath: {imag_mp}, by "
+        "collocation: {imag_coll}. Outside the window both β are real; the mode there is "
+        "cosh/sinh(|β1| s) and cos/sin(β2 s). Limits (closed form): as ν → 1 the window shrinks "
+        "to the point π; as ν → ∞, Ω_b → 2π/√3 and Ω_a → 0 (y → π/2), so it tends to (0, 2π/√3)."),
+    "rod-beta-difference": (
+        "Every crossing Ω_n (n ≥ 2, the p* maxima of rod-further-maxima) is a corner maximum of "
+        "β2 − β1 ({corner}) with β1 L = (n−1)π, β2 L = (n+1)π exactly (mpmath: to {exact:.0e}), "
+        "so β2 − β1 = 2π at every maximum and < 2π between them; e.g. ν = {detail_nu}: "
+        "{fmt_pi_detail_0_twist_mp_6}, {fmt_pi_detail_1_twist_mp_6}. The maximum near π is the "
+        "upper end of the imaginary-β1 window, Ω_b = 2π√(ν/(3ν+1)) (a cusp: β1 = 0, β2 = 2π "
+        "exactly; β2 − β1 = {min_d_b_values:.12f} … {max_d_b_values:.12f}), off π by {b_min:.1%} "
+        "(ν = {min_nus}) … {b_rel:.1%} (ν = {max_nus}): outside the {near:.0%} standard of the "
+        "other 'at nπ' rows for every ν checked, and within it only for ν < {nu_max:.4f} (closed "
+        "form: 4ν/(3ν+1) < (1 + {near:g})²); as ν → ∞, Ω_b → 2π/√3, {limit_rel:.1%} off π. The "
+        "maxima at the crossings are within {crossings_rel:.1e} of nπ. No other grid maxima and "
+        "never above 2π: {ok_grid}. At Ω = {om_big:.1f}: 2π − (β2 − β1) ≤ {tail:.1e} "
+        "(asymptotically (πλδ/Ω³)|sin Ω|, asymptotics.py). So the maxima are all exactly 2π and "
+        "the minima rise to it."),
+    "rod-resonance": (
+        "max_k |β_k L − (Ω ∓ π)| decays like Ω^{max_fits:.2f} … Ω^{min_fits:.2f} (predicted −3: "
+        "the Ω⁻² terms cancel), {worst:.1e} at Ω = {max_x_twist_for_x_in_ev_limi:.1f}; the "
+        "remainder after the predicted Ω⁻³ terms decays like Ω^{max_fits_pred:.2f} or faster. At "
+        "each maximum Ω_n the resonance is exact with nπ for Ω: β_k L = (n ∓ 1)π (to "
+        "{at_max:.0e})."),
+    "rod-three-dimensional": (
+        "{cases}. The two solvers' centrelines agree to {mismatch:.1e}. Euler (Ω = 0): "
+        "σ_min/σ_max = {euler_planarity_coll:.1e}, ω2 ≡ 0. (ν = 1 is the exception: the modes are"
+        " degenerate and a planar one exists; the perturbed torsion ω3 − ω30 = α' is zero in "
+        "every case since α decouples.) The 3-D part weakens with twist: ν = {detail_nu}, Ω = "
+        "{decay_values} (∝ Ω^{decay:.2f}, measured; collocation agrees to "
+        "{planarity_gap:.1e} relative): at large twist the mode is nearly a planar sine in the "
+        "plane of the mid-span section's principal axis. Over the whole range Ω(L) ∈ "
+        "[{float_next_iter_rng_values_t:g}, 20π] ({len_next_iter_rng_values_twi} twists per ν, "
+        "collocation) the smallest non-planarity is {min_range:.1e} > 0, but it exceeds "
+        "{non_planar:g} only for {spans_txt}. Limits (measured orders): ∝ "
+        "Ω^{small_orders} as Ω → 0 and Ω^{large_orders} as Ω → ∞ "
+        "(ν as listed): planar in both limits; no closed form is derived for the coefficients."),
+    "rod-twist-raises-load": (
+        "p* > 1 for all Ω > 0 and rises monotonically up to ≈ 2π, but beyond it falls on "
+        "{falling_fractions} of the grid (ν as in rod-stabilising); the drop after the"
+        " 2π maximum is {drops}. True as a trend (towards p∞ > p*(Ω) for "
+        "all Ω), not as monotonicity."),
+    "eq-inst1": (
+        "Derivations: {derivation_straight_rod} (energy route: E·u₀ = I₁, E·v₀ = I₂ identically; "
+        "Munder route: lines 3, 4 = I₁, −I₂). Rayleigh-Ritz on the energy agrees with the inst1 "
+        "reference to {ritz:.1e} at {sum_len_v_for_v_in_ev_ritz_v} points. Misprints against "
+        "Figure 1 (largest |p* − digitised|): {misprint_fits} — the printed "
+        "equation fits the figure; a factor 1 or a flipped sign would be off by O(1) (and the "
+        "flipped sign has complex eigenvalues); exchanging the A's is a similarity transformation"
+        " (ω₂ → νω₂) with the same p*, so neither Figure 1 nor p* can tell it apart — only the "
+        "derivation does."),
+    "rod-decoupling": (
+        "{derivation_straight_rod}: line 1 of Munder is f' = 0 (the force perturbation is a "
+        "constant, a change of the end load), line 2 is A₃α'' = 0 (α linear in s, constant "
+        "without end torque), and lines 3, 4 contain neither; so the perturbed torsion ω₃ − ω₃₀ ="
+        " α' vanishes at buckling."),
+    "rod-end-alignment": (
+        "The geometric statement is true (u₀(L) = ±u₀(0) at Ω(L) = kπ: max ||u₀(L)·u₀(0)| − 1| = "
+        "{align:.1e} for k ≤ 20), but the maxima are not where the ends align: they sit at Ω_n = "
+        "nπ + ({min_offs:.1e} … {max_offs:.1e})π, and there is none at π: p* rises monotonically "
+        "through π for every ν ({none_near_pi}). They are where the two mode families cross, with"
+        " β₁L = (n−1)π and β₂L = (n+1)π exactly. The conclusion 'maxima near kπ (k ≥ 2)' holds; "
+        "the inference that the alignment locates them is unsupported: true, but it does not "
+        "explain."),
+    "rod-two-mode-interplay": (
+        "All {len_ev_maxima} maxima are corners where the lowest symmetric and antisymmetric "
+        "modes cross ({corners}), and the critical mode alternates between the two families from "
+        "one maximum to the next ({alternates}). The paper's 'two modes' are argued from the two "
+        "wavenumbers β₁, β₂; the two modes that actually interplay are the two parity families, "
+        "each made of both wavenumbers. Conclusion right, reason imprecise."),
+    "eq-unique": (
+        "At the critical load the determinant of the linearised equations vanishes: "
+        "{cases}. So the straight rod and the buckled mode (any amplitude, "
+        "linearised) both satisfy Munder with constit and the hinged boundary conditions: the "
+        "solution is not unique at P = P_cr, which is the paper's own buckling criterion (Sec. "
+        "2). Four equations for four unknowns make a closed system, not a unique solution."),
+    "rod-even-order": (
+        "det = {e_polynomial} (β, λ = π²p*, ω = ω30 L, ν; from inst1 with ω_k = c_k e^(iβs)): "
+        "degree {e_degree}, odd powers of β: {e_odd_terms}. So β² = X± and each ω_k is a "
+        "combination of sin/cos(β_k s) — of sinh/cosh(|β1| s) where X− < 0 (rod-beta-real)."),
+    "typo-p-star": (
+        "Figure 1's {int_r_points} points span p* = {r_p_min:.4f} … {r_p_max:.4f}; the printed "
+        "definition P_cr/P_cr is 1 at every load (range {float_np_ptp_printed:g}). The intended "
+        "p* = P_cr/P_E, P_E = π²A1/L² (Euler's load of the untwisted rod about its weaker axis), "
+        "is what the figure and inst1 fit (fig1-curves)."),
+}
+
+
+def _evidence(row_id: str, **fields: object) -> str:
+    """The evidence text of `row_id` from :data:`EVIDENCE` with its named fields."""
+    return EVIDENCE[row_id].format(**fields)
+
+
 def _finding(row_id: str, **fields: object) -> str:
     return FINDINGS[row_id].format(**fields)
 
@@ -234,10 +378,12 @@ def measure_zero_twist(ev: StraightRodEvidence) -> Measured:
         numbers={"headline": f"p*(0, ν) = 1 to {dev:.0e}; planar Euler mode",
                  "max_dev_coll": dev, "max_det_mp": det,
                  "euler_planarity": euler["planarity_coll"]},
-        evidence=f"max |p* − 1| = {dev:.1e} (collocation); max |D_sym(π², 0, ν)| = {det:.1e} "
-                 f"(mpmath; p* ≥ 1 by the Rayleigh bound, so π² is the lowest root); Euler mode "
-                 f"planarity σ_min/σ_max = {euler['planarity_coll']:.1e}, max |x₁ − sin πs| = "
-                 f"{euler['shape_mismatch']:.1e}.")
+        evidence=_evidence(
+                     "rod-zero-twist",
+                     dev=dev,
+                     det=det,
+                     euler_planarity_coll=euler['planarity_coll'],
+                     euler_shape_mismatch=euler['shape_mismatch']))
 
 
 ISOTROPIC = ClaimSpec(
@@ -258,9 +404,13 @@ def measure_isotropic(ev: StraightRodEvidence) -> Measured:
     return Measured(
         numbers={"headline": f"|p* − 1| ≤ {iso['max_dev_coll']:.0e} for Ω ∈ [0, "
                              f"{iso['twist_max']:g}]", **iso},
-        evidence=f"{int(iso['points'])} twists in [0, {iso['twist_max']:g}]: max |p* − 1| = "
-                 f"{iso['max_dev_coll']:.1e} (collocation); max |D_sym(π², Ω, 1)| = "
-                 f"{iso['max_det_mp']:.1e} (mpmath, {DPS} digits).")
+        evidence=_evidence(
+                     "rod-isotropic",
+                     int_iso_points=int(iso['points']),
+                     iso_twist_max=iso['twist_max'],
+                     iso_max_dev_coll=iso['max_dev_coll'],
+                     iso_max_det_mp=iso['max_det_mp'],
+                     dps=DPS))
 
 
 STABILISING = ClaimSpec(
@@ -293,10 +443,14 @@ def measure_stabilising(ev: StraightRodEvidence) -> Measured:
         numbers={"headline": f"p* − 1 ≥ {min_excess:.1e} for Ω > 0 (grid); p* increasing in ν",
                  "min_excess": min_excess, "min_step_in_nu": min_step,
                  "spot_above_one": spot_ok, "spot_increasing_in_nu": spot_mono},
-        evidence=f"min (p* − 1) = {min_excess:.3e} > 0 on {int(pos.sum())} twists; min increase "
-                 f"between consecutive ν = {min_step:.3e}; all {len(ev.spot)} mpmath spot values "
-                 f"> 1: {spot_ok}, increasing in ν: {spot_mono}. (p* is not monotone in Ω: see "
-                 "rod-further-maxima.)",
+        evidence=_evidence(
+                     "rod-stabilising",
+                     min_excess=min_excess,
+                     int_pos_sum=int(pos.sum()),
+                     min_step=min_step,
+                     len_ev_spot=len(ev.spot),
+                     spot_ok=spot_ok,
+                     spot_mono=spot_mono),
         cross_checks=(_spot_cross_check(ev.spot, "spot p*: collocation vs mpmath", SPOT_LIMIT),
                       _ritz_check(ev, "spot")))
 
@@ -345,19 +499,27 @@ def measure_first_maximum(ev: StraightRodEvidence) -> Measured:
                  "twist_over_pi_closed_form": {m.nu: m.twist_closed / math.pi for m in firsts},
                  "kind": {m.nu: m.kind for m in firsts}, "agreement": agree,
                  "local_not_global": bool(later_higher and below_limit)},
-        evidence=f"{table}. The three determinations agree to {agree['p_coll_vs_closed']:.1e} "
-                 f"in p* and {agree['twist_coll_vs_closed']:.1e} in Ω. It is a corner (p* = min "
-                 f"of two smooth branches, slopes of opposite sign, e.g. ν = {DETAIL_NU}: "
-                 f"{m15.slopes_mp[m15.left]:+.4f} ({m15.left}) / {m15.slopes_mp[m15.right]:+.4f}"
-                 f" ({m15.right})), not a smooth maximum; p* rises monotonically before it: "
-                 f"{rises}. Only a local maximum: the next one (at {_fmt_pi(min(seconds), 4)} … "
-                 f"{_fmt_pi(max(seconds), 4)}) is higher and p* → 2ν/(1+ν) > p*(Ω₂) "
-                 f"({later_higher and below_limit}). Distance from 2π: {min(rel):.1e} … "
-                 f"{max(rel):.1e} relative, " + ("growing with ν" if growing
-                                                   else "not monotone in ν")
-                 + f"; as ν → ∞ (closed form) Ω₂ → {_fmt_pi(crossing_limit_nu_infinity(2), 5)}, "
-                 f"{crossing_limit_nu_infinity(2) / (2 * math.pi) - 1:.2%} off 2π: within the "
-                 f"{NEAR:.0%} standard for every ν.",
+        evidence=_evidence(
+                     "rod-first-maximum",
+                     table=table,
+                     agree_p_coll_vs_closed=agree['p_coll_vs_closed'],
+                     agree_twist_coll_vs_closed=agree['twist_coll_vs_closed'],
+                     detail_nu=DETAIL_NU,
+                     m15_slopes_mp_m15_left=m15.slopes_mp[m15.left],
+                     m15_left=m15.left,
+                     m15_slopes_mp_m15_right=m15.slopes_mp[m15.right],
+                     m15_right=m15.right,
+                     rises=rises,
+                     fmt_pi_min_seconds_4=_fmt_pi(min(seconds), 4),
+                     fmt_pi_max_seconds_4=_fmt_pi(max(seconds), 4),
+                     later_higher_and_below_limit=later_higher and below_limit,
+                     min_rel=min(rel),
+                     max_rel=max(rel),
+                     growth="growing with ν" if growing
+                                                   else "not monotone in ν",
+                     fmt_pi_crossing_limit_nu_inf=_fmt_pi(crossing_limit_nu_infinity(2), 5),
+                     crossing_limit_nu_infinity_2=crossing_limit_nu_infinity(2) / (2 * math.pi) - 1,
+                     near=NEAR),
         cross_checks=(*_maxima_cross_checks(ev), _ritz_check(ev, "maxima")))
 
 
@@ -422,22 +584,28 @@ def measure_further_maxima(ev: StraightRodEvidence) -> Measured:
                  "offset_ratio_first": ratio_first,
                  "maximum_near_pi": not no_max_near_pi, "all_corners": all_corner,
                  "heights_rise": heights_rise, "agreement": agree},
-        evidence=f"ν = {DETAIL_NU}: maxima at {rows}, … (offset ∝ n^{slope:.2f}; "
-                 f"asymptotically π((ν−1)/(ν+1))²/(8n³): at n = {last.n} {predicted:.4e}π "
-                 f"predicted, {last.offset:.4e}π found; the n⁻³ law is asymptotic: at n = "
-                 f"{first.n} found/predicted = {ratio_first:.2f}); {others}. All "
-                 f"{len(ev.maxima)} are "
-                 f"corners where the critical mode switches family ({alternating}): "
-                 f"{all_corner}; none is smooth (grid maxima at family "
-                 f"switches: {grid_max_at_switch}); mpmath, collocation and closed form agree to "
-                 f"{agree['p_coll_vs_closed']:.1e} in p* and {agree['twist_coll_vs_closed']:.1e} "
-                 f"in Ω; heights increase towards the limit: {heights_rise}. Largest relative "
-                 f"offset |Ω_n − nπ|/(nπ) = {rel:.1e}; its supremum over all ν is the ν → ∞ limit "
-                 f"at n = 2, {crossing_limit_nu_infinity(2) / (2 * math.pi) - 1:.2%} (closed "
-                 f"form; n = 3: {crossing_limit_nu_infinity(3) / (3 * math.pi) - 1:.2%}). There "
-                 "is no maximum near π: p* rises "
-                 f"monotonically up to the 2π crossing for every ν ({no_max_near_pi}); the end "
-                 "sections are aligned at Ω = nπ, but the maxima are where β_k L = (n ∓ 1)π.",
+        evidence=_evidence(
+                     "rod-further-maxima",
+                     detail_nu=DETAIL_NU,
+                     rows=rows,
+                     slope=slope,
+                     last_n=last.n,
+                     predicted=predicted,
+                     last_offset=last.offset,
+                     first_n=first.n,
+                     ratio_first=ratio_first,
+                     others=others,
+                     len_ev_maxima=len(ev.maxima),
+                     alternating=alternating,
+                     all_corner=all_corner,
+                     grid_max_at_switch=grid_max_at_switch,
+                     agree_p_coll_vs_closed=agree['p_coll_vs_closed'],
+                     agree_twist_coll_vs_closed=agree['twist_coll_vs_closed'],
+                     heights_rise=heights_rise,
+                     rel=rel,
+                     crossing_limit_nu_infinity_2=crossing_limit_nu_infinity(2) / (2 * math.pi) - 1,
+                     crossing_limit_nu_infinity_3=crossing_limit_nu_infinity(3) / (3 * math.pi) - 1,
+                     no_max_near_pi=no_max_near_pi),
         cross_checks=(*_maxima_cross_checks(ev), _ritz_check(ev, "maxima")))
 
 
@@ -491,15 +659,16 @@ def measure_limit(ev: StraightRodEvidence) -> Measured:
                  "observed_order_p_minus_limit": orders[0],
                  "observed_order_expansion_error": orders[4],
                  "settling_twist_1pct_0p1pct": settle, "max_solver_gap": agree},
-        evidence="p∞ = " + ", ".join(f"{large_twist_limit(nu):.6f} (ν = {nu})" for nu in NUS)
-                 + f". p∞ − p* > 0 decays like Ω^{orders[0][0]:.2f} … Ω^{orders[0][1]:.2f} "
-                 f"(−2 from the smooth deficit a2 = −π²δ²p∞³/4, δ = (1 − 1/ν)/2; steeper where "
-                 f"the −b3|sin Ω|/Ω³ ripple, b3 = π²δp∞², is still comparable, i.e. for "
-                 f"Ω ≲ 4/(δp∞), ν near 1); the 4-term expansion's error like "
-                 f"Ω^{orders[4][1]:.2f} (expected −5), {worst4:.1e} at Ω = {om_max:.0f}. The "
-                 f"deficit p∞ − p* stays below 1 % / 0.1 % of the total rise p∞ − 1 beyond Ω = "
-                 f"{settle_txt} (ν as listed; collocation grid). Solvers agree to {agree:.1e}. "
-                 "Limits of p∞ (closed form): 1 as ν → 1 (rod-isotropic), 2 as ν → ∞.",
+        evidence=_evidence(
+                     "rod-limit",
+                     limits=", ".join(f"{large_twist_limit(nu):.6f} (ν = {nu})" for nu in NUS),
+                     orders_0_0=orders[0][0],
+                     orders_0_1=orders[0][1],
+                     orders_4_1=orders[4][1],
+                     worst4=worst4,
+                     om_max=om_max,
+                     settle_txt=settle_txt,
+                     agree=agree),
         cross_checks=(_spot_cross_check(rows, "large-twist p*: collocation vs mpmath",
                                         LARGE_TWIST_LIMIT),
                       _ritz_check(ev, "limit")))
@@ -545,15 +714,12 @@ def measure_wavenumbers_real(ev: StraightRodEvidence) -> Measured:
                  "windows": [{k: r[k] for k in ("nu", "omega_a", "omega_b", "p_a", "p_b")}
                              for r in w],
                  "max_closed_form_dev": dev},
-        evidence=f"By the closed forms β1 is imaginary on a window around π for every ν > 1: "
-                 f"Ω_a < Ω(L) < Ω_b with "
-                 f"Ω_b = 2π√(ν/(3ν+1)) (p* = 4ν/(3ν+1) there) and Ω_a = 2y/√(ν+3), "
-                 f"(ν−1) y cos y + 4 sin y = 0, y ∈ (π/2, π] (p* = 4νy²/(π²(ν+3))). {tab}. "
-                 f"Closed forms match p* of both solvers at the ends to {dev:.1e}; X− at the "
-                 f"window centre < 0 by mpmath: {imag_mp}, by collocation: {imag_coll}. Outside "
-                 "the window both β are real; the mode there is cosh/sinh(|β1| s) and "
-                 "cos/sin(β2 s). Limits (closed form): as ν → 1 the window shrinks to the point "
-                 "π; as ν → ∞, Ω_b → 2π/√3 and Ω_a → 0 (y → π/2), so it tends to (0, 2π/√3).",
+        evidence=_evidence(
+                     "rod-beta-real",
+                     tab=tab,
+                     dev=dev,
+                     imag_mp=imag_mp,
+                     imag_coll=imag_coll),
         cross_checks=(CrossCheck("window ends: closed form vs both solvers", dev, WINDOW_LIMIT),
                       CrossCheck("sign of X− at the window centre: mpmath vs collocation",
                                  float(imag_mp != imag_coll), 0.0)))
@@ -623,21 +789,26 @@ def measure_beta_difference(ev: StraightRodEvidence) -> Measured:
                  "grid_maxima_accounted": ok_grid,
                  "omega_b_over_pi": {nu: w[nu]["omega_b"] / math.pi for nu in NUS},
                  "gap_to_2pi_at_large_twist": tail},
-        evidence=f"Every crossing Ω_n (n ≥ 2, the p* maxima of rod-further-maxima) is a corner "
-                 f"maximum of β2 − β1 ({corner}) with β1 L = (n−1)π, β2 L = (n+1)π exactly "
-                 f"(mpmath: to {exact:.0e}), so β2 − β1 = 2π at every maximum and < 2π between "
-                 f"them; e.g. ν = {DETAIL_NU}: {_fmt_pi(detail[0].twist_mp, 6)}, "
-                 f"{_fmt_pi(detail[1].twist_mp, 6)}. The maximum near π is the upper end of the "
-                 f"imaginary-β1 window, Ω_b = 2π√(ν/(3ν+1)) (a cusp: β1 = 0, β2 = 2π exactly; "
-                 f"β2 − β1 = {min(d_b.values()):.12f} … {max(d_b.values()):.12f}), off π by "
-                 f"{b_min:.1%} (ν = {min(NUS)}) … {b_rel:.1%} (ν = {max(NUS)}): outside the "
-                 f"{NEAR:.0%} standard of the other 'at nπ' rows for every ν checked, and within "
-                 f"it only for ν < {nu_max:.4f} (closed form: 4ν/(3ν+1) < (1 + {NEAR:g})²); as "
-                 f"ν → ∞, Ω_b → 2π/√3, {limit_rel:.1%} off π. The maxima at the crossings are "
-                 f"within {crossings_rel:.1e} of nπ. No other grid maxima and never above 2π: "
-                 f"{ok_grid}. At "
-                 f"Ω = {om_big:.1f}: 2π − (β2 − β1) ≤ {tail:.1e} (asymptotically (πλδ/Ω³)|sin Ω|,"
-                 " asymptotics.py). So the maxima are all exactly 2π and the minima rise to it.",
+        evidence=_evidence(
+                     "rod-beta-difference",
+                     corner=corner,
+                     exact=exact,
+                     detail_nu=DETAIL_NU,
+                     fmt_pi_detail_0_twist_mp_6=_fmt_pi(detail[0].twist_mp, 6),
+                     fmt_pi_detail_1_twist_mp_6=_fmt_pi(detail[1].twist_mp, 6),
+                     min_d_b_values=min(d_b.values()),
+                     max_d_b_values=max(d_b.values()),
+                     b_min=b_min,
+                     min_nus=min(NUS),
+                     b_rel=b_rel,
+                     max_nus=max(NUS),
+                     near=NEAR,
+                     nu_max=nu_max,
+                     limit_rel=limit_rel,
+                     crossings_rel=crossings_rel,
+                     ok_grid=ok_grid,
+                     om_big=om_big,
+                     tail=tail),
         cross_checks=_maxima_cross_checks(ev))
 
 
@@ -683,11 +854,14 @@ def measure_resonance(ev: StraightRodEvidence) -> Measured:
                  "slowest_decay_order_after_prediction": max(fits_pred),
                  "decay_order": fits, "decay_order_after_prediction": fits_pred,
                  "largest_twist_deviation": worst},
-        evidence=f"max_k |β_k L − (Ω ∓ π)| decays like Ω^{max(fits):.2f} … Ω^{min(fits):.2f} "
-                 f"(predicted −3: the Ω⁻² terms cancel), {worst:.1e} at Ω = "
-                 f"{max(x['twist'] for x in ev.limit):.1f}; the remainder after the predicted "
-                 f"Ω⁻³ terms decays like Ω^{max(fits_pred):.2f} or faster. At each maximum Ω_n "
-                 f"the resonance is exact with nπ for Ω: β_k L = (n ∓ 1)π (to {at_max:.0e}).")
+        evidence=_evidence(
+                     "rod-resonance",
+                     max_fits=max(fits),
+                     min_fits=min(fits),
+                     worst=worst,
+                     max_x_twist_for_x_in_ev_limi=max(x['twist'] for x in ev.limit),
+                     max_fits_pred=max(fits_pred),
+                     at_max=at_max))
 
 
 THREE_DIMENSIONAL = ClaimSpec(
@@ -767,22 +941,23 @@ def measure_three_dimensional(ev: StraightRodEvidence) -> Measured:
                  "decay_positive": all(r["planarity_mp"] > 0 for r in dec),
                  "solver_shape_mismatch": mismatch, "non_planarity_decay_order": decay,
                  "non_planarity_vs_twist": {r["twist"]: r["planarity_mp"] for r in dec}},
-        evidence=f"{cases}. The two solvers' centrelines agree to {mismatch:.1e}. Euler "
-                 f"(Ω = 0): σ_min/σ_max = {euler['planarity_coll']:.1e}, ω2 ≡ 0. (ν = 1 is the "
-                 "exception: the modes are degenerate and a planar one exists; the perturbed "
-                 "torsion ω3 − ω30 = α' is zero in every case since α decouples.) The 3-D part "
-                 f"weakens with twist: ν = {DETAIL_NU}, Ω = "
-                 + ", ".join(f"{r['twist']:g}: {r['planarity_mp']:.2e}" for r in dec)
-                 + f" (∝ Ω^{decay:.2f}, measured; collocation agrees to {planarity_gap:.1e} "
-                 f"relative): at large twist the mode is nearly a planar sine in the plane of the "
-                 f"mid-span section's principal axis. Over the whole range Ω(L) ∈ "
-                 f"[{float(next(iter(rng.values()))['twist'][0]):g}, 20π] "
-                 f"({len(next(iter(rng.values()))['twist'])} twists per ν, collocation) the "
-                 f"smallest non-planarity is {min_range:.1e} > 0, but it exceeds {NON_PLANAR:g} "
-                 f"only for {spans_txt}. Limits (measured orders): ∝ Ω^"
-                 + "/".join(f"{v:.2f}" for v in small.values()) + " as Ω → 0 and Ω^"
-                 + "/".join(f"{v:.2f}" for v in large.values()) + " as Ω → ∞ (ν as listed): "
-                 "planar in both limits; no closed form is derived for the coefficients.",
+        evidence=_evidence(
+                     "rod-three-dimensional",
+                     cases=cases,
+                     mismatch=mismatch,
+                     euler_planarity_coll=euler['planarity_coll'],
+                     detail_nu=DETAIL_NU,
+                     decay_values=", ".join(f"{r['twist']:g}: {r['planarity_mp']:.2e}"
+                                            for r in dec),
+                     decay=decay,
+                     planarity_gap=planarity_gap,
+                     float_next_iter_rng_values_t=float(next(iter(rng.values()))['twist'][0]),
+                     len_next_iter_rng_values_twi=len(next(iter(rng.values()))['twist']),
+                     min_range=min_range,
+                     non_planar=NON_PLANAR,
+                     spans_txt=spans_txt,
+                     small_orders="/".join(f"{v:.2f}" for v in small.values()),
+                     large_orders="/".join(f"{v:.2f}" for v in large.values())),
         cross_checks=(CrossCheck("mode shape: collocation vs closed form", mismatch, SHAPE_LIMIT),
                       CrossCheck("non-planarity: collocation vs mpmath (relative)",
                                  planarity_gap, PLANARITY_LIMIT)))
@@ -818,11 +993,10 @@ def measure_monotone_growth(ev: StraightRodEvidence) -> Measured:
                  "always_above_one": always_above, "max_drop_after_first_max":
                  max(drops.values()), "drop_after_first_max": drops,
                  "fraction_decreasing": fracs},
-        evidence="p* > 1 for all Ω > 0 and rises monotonically up to ≈ 2π, but beyond it falls "
-                 "on " + ", ".join(f"{100 * fracs[nu]:.0f} %" for nu in NUS)
-                 + " of the grid (ν as in rod-stabilising); the drop after the 2π maximum is "
-                 + ", ".join(f"{drops[nu]:.2e}" for nu in NUS)
-                 + ". True as a trend (towards p∞ > p*(Ω) for all Ω), not as monotonicity.",
+        evidence=_evidence(
+                     "rod-twist-raises-load",
+                     falling_fractions=", ".join(f"{100 * fracs[nu]:.0f} %" for nu in NUS),
+                     drops=", ".join(f"{drops[nu]:.2e}" for nu in NUS)),
         cross_checks=(_ritz_check(ev, "maxima"),))
 
 
@@ -856,16 +1030,13 @@ def measure_inst1(ev: StraightRodEvidence) -> Measured:
                  "derivation_complete": ev.derivation["straight_rod"] == DERIVATION_COMPLETE,
                  "variant_figure_max": worst,
                  "variant_max_change": change, "ritz_vs_inst1": ritz},
-        evidence=f"Derivations: {ev.derivation['straight_rod']} (energy route: E·u₀ = I₁, "
-                 "E·v₀ = I₂ identically; Munder route: lines 3, 4 = I₁, −I₂). Rayleigh-Ritz on "
-                 f"the energy agrees with the inst1 reference to {ritz:.1e} at "
-                 f"{sum(len(v) for v in ev.ritz.values())} points. Misprints against Figure 1 "
-                 "(largest |p* − digitised|): " + ", ".join(f"{k} {v:.2g}" for k, v in
-                                                           worst.items())
-                 + " — the printed equation fits the figure; a factor 1 or a flipped sign would "
-                 "be off by O(1) (and the flipped sign has complex eigenvalues); exchanging the "
-                 "A's is a similarity transformation (ω₂ → νω₂) with the same p*, so neither "
-                 "Figure 1 nor p* can tell it apart — only the derivation does.",
+        evidence=_evidence(
+                     "eq-inst1",
+                     derivation_straight_rod=ev.derivation['straight_rod'],
+                     ritz=ritz,
+                     sum_len_v_for_v_in_ev_ritz_v=sum(len(v) for v in ev.ritz.values()),
+                     misprint_fits=", ".join(f"{k} {v:.2g}" for k, v in
+                                                           worst.items())),
         cross_checks=(CrossCheck("p*: Rayleigh-Ritz (energy) vs inst1", ritz, RITZ_LIMIT),))
 
 
@@ -887,10 +1058,9 @@ def measure_decoupling(ev: StraightRodEvidence) -> Measured:
     return Measured(
         numbers={"derivation": ev.derivation["straight_rod"],
                  "derivation_complete": ev.derivation["straight_rod"] == DERIVATION_COMPLETE},
-        evidence=f"{ev.derivation['straight_rod']}: line 1 of Munder is f' = 0 (the force "
-                 "perturbation is a constant, a change of the end load), line 2 is A₃α'' = 0 "
-                 "(α linear in s, constant without end torque), and lines 3, 4 contain neither; "
-                 "so the perturbed torsion ω₃ − ω₃₀ = α' vanishes at buckling.")
+        evidence=_evidence(
+                     "rod-decoupling",
+                     derivation_straight_rod=ev.derivation['straight_rod']))
 
 
 END_ALIGNMENT = ClaimSpec(
@@ -928,14 +1098,12 @@ def measure_end_alignment(ev: StraightRodEvidence) -> Measured:
         numbers={"max_offset_over_pi": max(offs), "min_offset_over_pi": min(offs),
                  "none_near_pi": none_near_pi, "maximum_near_pi": not none_near_pi,
                  "alignment_error": align},
-        evidence=f"The geometric statement is true (u₀(L) = ±u₀(0) at Ω(L) = kπ: "
-                 f"max ||u₀(L)·u₀(0)| − 1| = {align:.1e} for k ≤ 20), but the maxima "
-                 f"are not where the ends align: they sit at Ω_n = nπ + ({min(offs):.1e} … "
-                 f"{max(offs):.1e})π, and there is none at π: p* "
-                 f"rises monotonically through π for every ν ({none_near_pi}). They are where "
-                 "the two mode families cross, with β₁L = (n−1)π and β₂L = (n+1)π exactly. The "
-                 "conclusion 'maxima near kπ (k ≥ 2)' holds; the inference that the alignment "
-                 "locates them is unsupported: true, but it does not explain.",
+        evidence=_evidence(
+                     "rod-end-alignment",
+                     align=align,
+                     min_offs=min(offs),
+                     max_offs=max(offs),
+                     none_near_pi=none_near_pi),
         cross_checks=_maxima_cross_checks(ev))
 
 
@@ -966,12 +1134,11 @@ def measure_two_modes(ev: StraightRodEvidence) -> Measured:
     corners = all(m.kind == "corner maximum" for m in ev.maxima)
     return Measured(
         numbers={"all_corners": corners, "alternates": alternates},
-        evidence=f"All {len(ev.maxima)} maxima are corners where the lowest symmetric and "
-                 f"antisymmetric modes cross ({corners}), and the critical mode alternates "
-                 f"between the two families from one maximum to the next ({alternates}). The "
-                 "paper's 'two modes' are argued from the two wavenumbers β₁, β₂; the two modes "
-                 "that actually interplay are the two parity families, each made of both "
-                 "wavenumbers. Conclusion right, reason imprecise.",
+        evidence=_evidence(
+                     "rod-two-mode-interplay",
+                     len_ev_maxima=len(ev.maxima),
+                     corners=corners,
+                     alternates=alternates),
         cross_checks=_maxima_cross_checks(ev))
 
 
@@ -998,15 +1165,11 @@ def measure_uniqueness(ev: StraightRodEvidence) -> Measured:
     return Measured(
         numbers={"det_ratio": ratio, "cases": [{k: r[k] for k in ("twist", "nu", "p_star")}
                                                for r in rows]},
-        evidence="At the critical load the determinant of the linearised equations vanishes: "
-                 + "; ".join(f"Ω = {r['twist']:g}, ν = {r['nu']:g}: |D(p*)| = "
+        evidence=_evidence(
+                     "eq-unique",
+                     cases="; ".join(f"Ω = {r['twist']:g}, ν = {r['nu']:g}: |D(p*)| = "
                              f"{r['det_at_critical']:.1e}, |D(0.99 p*)| = "
-                             f"{r['det_below_critical']:.1e}" for r in rows)
-                 + ". So the straight rod and the buckled mode (any amplitude, linearised) both "
-                 "satisfy Munder with constit and the hinged boundary conditions: the solution "
-                 "is not unique at P = P_cr, which is the paper's own buckling criterion "
-                 "(Sec. 2). Four equations for four unknowns make a closed system, not a unique "
-                 "solution.")
+                             f"{r['det_below_critical']:.1e}" for r in rows)))
 
 
 EVEN_ORDER = ClaimSpec(
@@ -1031,10 +1194,11 @@ def measure_even_order(ev: StraightRodEvidence) -> Measured:
     return Measured(
         numbers={"even": bool(e["even"]), "degree": int(e["degree"]),
                  "odd_terms": int(e["odd_terms"])},
-        evidence=f"det = {e['polynomial']} (β, λ = π²p*, ω = ω30 L, ν; from inst1 with "
-                 f"ω_k = c_k e^(iβs)): degree {e['degree']}, odd powers of β: "
-                 f"{e['odd_terms']}. So β² = X± and each ω_k is a combination of sin/cos(β_k s) "
-                 "— of sinh/cosh(|β1| s) where X− < 0 (rod-beta-real).")
+        evidence=_evidence(
+                     "rod-even-order",
+                     e_polynomial=e['polynomial'],
+                     e_degree=e['degree'],
+                     e_odd_terms=e['odd_terms']))
 
 
 P_STAR_TYPO = ClaimSpec(
@@ -1059,11 +1223,12 @@ def measure_p_star_typo(ev: StraightRodEvidence) -> Measured:
     gap = abs((r["p_max"] - r["p_min"]) - float(np.ptp(printed)))
     return Measured(
         numbers={"range_gap": gap, "figure_p_min": r["p_min"], "figure_p_max": r["p_max"]},
-        evidence=f"Figure 1's {int(r['points'])} points span p* = {r['p_min']:.4f} … "
-                 f"{r['p_max']:.4f}; the printed definition P_cr/P_cr is 1 at every load "
-                 f"(range {float(np.ptp(printed)):g}). The intended p* = P_cr/P_E, P_E = "
-                 "π²A1/L² (Euler's load of the untwisted rod about its weaker axis), is what "
-                 "the figure and inst1 fit (fig1-curves).")
+        evidence=_evidence(
+                     "typo-p-star",
+                     int_r_points=int(r['points']),
+                     r_p_min=r['p_min'],
+                     r_p_max=r['p_max'],
+                     float_np_ptp_printed=float(np.ptp(printed))))
 
 
 #: The straight-rod claims in ledger order: (declaration, measurement).
