@@ -71,7 +71,9 @@ SECTION = (
     "B-DNA turns once per helical repeat h = {h_lo:.2f} … {h_hi:.2f} nm ({bp_lo:g} … {bp_hi:g} "
     "bp of {rise:g} nm), so Ω(L) = 2πL/h. Figure 1 (Ω(L) ≤ {fig_max:g}) ends at L = "
     "{l_fig_lo:.2f} … {l_fig_hi:.2f} nm ({bp_fig_lo:.1f} … {bp_fig_hi:.1f} bp), "
-    "{d_fig:.1f} … {d_fig_hi:.1f} diameters of {diam:g} nm: **no point of Figure 1 is a DNA "
+    "{d_fig:.1f} … {d_fig_hi:.1f} diameters of {diam:g} nm; its first maximum (Ω(L) ≈ 2π) is "
+    "a segment of one helical turn, {turn_lo:.2f} … {turn_hi:.2f} nm = {turn_d_lo:.1f} … "
+    "{turn_d_hi:.1f} diameters. **No point of Figure 1 is a DNA "
     "segment within the rod model's validity** (L ≥ {valid:g} diameters = {l_valid:g} nm, i.e. "
     "Ω(L) ≥ {om_valid_lo:.1f} … {om_valid_hi:.1f}). Between that length and the persistence "
     "length {lp:g} nm (beyond which thermal bending, not a static load, dominates), Ω(L) runs "
@@ -149,6 +151,8 @@ def section(data: dict[str, object]) -> str:
         fig_max=FIGURE1_TWIST_MAX, l_fig_lo=fig_l[0], l_fig_hi=fig_l[1],
         bp_fig_lo=fig_l[0] / RISE_NM, bp_fig_hi=fig_l[1] / RISE_NM,
         d_fig=fig_l[0] / DIAMETER_NM, d_fig_hi=fig_l[1] / DIAMETER_NM, diam=DIAMETER_NM,
+        turn_lo=pitches[0], turn_hi=pitches[1], turn_d_lo=pitches[0] / DIAMETER_NM,
+        turn_d_hi=pitches[1] / DIAMETER_NM,
         valid=VALIDITY_DIAMETERS, l_valid=VALIDITY_DIAMETERS * DIAMETER_NM,
         om_valid_lo=valid_tw[0], om_valid_hi=valid_tw[1], lp=PERSISTENCE_NM, om_lp_hi=hi,
         n_lo=lo / math.pi, n_hi=hi / math.pi, worst_rel=worst,

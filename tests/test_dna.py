@@ -37,4 +37,4 @@ def test_window_is_in_the_large_twist_regime():
 
 def test_section_states_the_figure1_reach():
     text = dna.section(dna.compute())
-    assert "no point of Figure 1" in text and "Hagerman 1988" in text
+    assert "No point of Figure 1" in text and "Hagerman 1988" in text
