@@ -8,8 +8,9 @@ Compares: the lengths at which Figure 1's range (Omega(L) <= 10) ends with the l
 the rod model applies (L >> a: here L >= :data:`VALIDITY_DIAMETERS` diameters) and at which a
 static (athermal) buckling analysis is meaningful (L up to the persistence length); p* there
 against the large-twist limit p_inf = 2 nu / (1 + nu) (claims row ``rod-limit``).
-Writes: dna.json (the literature values used, the twist-to-length conversion, the window) and
-the report section.
+Writes: dna.json (the literature values used, the twist-to-length conversion, the window), the
+ledger row ``caveat-dna-scale`` (a modelling caveat: which part of Figure 1 DNA reaches) and the
+report section.
 
 Literature values (cited, not fetched; each is an assumption of this scene):
 
@@ -39,6 +40,17 @@ import numpy as np
 
 from reproduce._runner import SceneOutput
 from reproduce.io import json_value, write_text
+from reproduce.ledger import (
+    LEDGER_CHECK,
+    Claim,
+    ClaimSpec,
+    Condition,
+    Measured,
+    Method,
+    judge,
+    tiered_rule,
+    update_ledger,
+)
 from reproduce.tables import markdown_table
 from spectral_rod import critical_load, large_twist_limit
 
@@ -63,6 +75,7 @@ WINDOW_POINTS = 401
 TOL = 1e-12
 
 CHECK = {"dna.json": {"*.citation": "exact", "*": {"rel": 1e-9, "abs": 1e-12}},
+         "claims.json": LEDGER_CHECK,
          "sections/dna.json": {"details.seconds": "ignore",
                                "details.*": {"rel": 1e-9, "abs": 1e-12}, "*": "exact"}}
 
@@ -164,14 +177,59 @@ def section(data: dict[str, object]) -> str:
     return text + table + "\n"
 
 
+#: The row's finding (the report's headline), a template with named fields.
+FINDING = ("No point of Figure 1 is a DNA segment within the rod model's validity: Ω(L) ≤ "
+           "{fig_max:g} is L ≤ {l_fig:.1f} nm, under {d_fig:.0f} diameters; valid, athermal B-DNA "
+           "segments ({l_valid:g}–{lp:g} nm) sit at Ω(L) = {lo:.0f}–{hi:.0f}, where p* is within "
+           "{worst:.2%} of the rise to p∞ = 2ν/(1+ν) (ν = {nus}, assumed).")
+
+SCALE = ClaimSpec(
+    id="caveat-dna-scale", section="Introduction (the motivation: DNA) and Figure 1",
+    claim="(Physical scale) The paper motivates the twisted rod by DNA; Figure 1's twists "
+          "(Ω(L) ≤ 10) are those of DNA segments within the rod model's validity (L ≫ a).",
+    test="Ω(L) = 2πL/h with B-DNA's helical repeat h = 3.40-3.57 nm (cited in reproduce/dna.py): "
+         "the longest segment Figure 1 shows against the shortest the rod model admits "
+         f"({VALIDITY_DIAMETERS:g} diameters of {DIAMETER_NM:g} nm); p* by collocation over the "
+         "valid, athermal window (up to the persistence length).",
+    methods=(Method("B-DNA literature values (reproduce/dna.py)", "literature values"),
+             Method("Chebyshev collocation (spectral_rod.critical_load)", "inst1")),
+    rule=tiered_rule([("holds", (Condition(
+        "figure1_over_valid_length", ">=", "the longest segment of Figure 1 over the shortest "
+        "valid one", 1.0),))], "fails",
+        note="fails: no part of Figure 1 is a valid DNA segment"),
+    kind="caveat", related=("rod-limit", "fig1-curves"))
+
+
+def scale_claim(data: dict[str, object]) -> Claim:
+    """The ledger row :data:`SCALE` judged on the scene's numbers."""
+    w = data["windows"]
+    fig_l = max(v["figure1_length_nm"] for v in w.values())  # type: ignore[union-attr]
+    valid = VALIDITY_DIAMETERS * DIAMETER_NM
+    lo, hi = data["twist_window"]  # type: ignore[misc]
+    worst = max(s["max_rel_deficit"] for s in data["settled"])  # type: ignore[union-attr]
+    finding = FINDING.format(fig_max=FIGURE1_TWIST_MAX, l_fig=fig_l, d_fig=fig_l / DIAMETER_NM,
+                             l_valid=valid, lp=PERSISTENCE_NM, lo=lo, hi=hi, worst=worst,
+                             nus=", ".join(f"{nu:g}" for nu in NUS))
+    measured = Measured(
+        numbers={"finding": finding, "figure1_over_valid_length": fig_l / valid,
+                 "figure1_length_nm": fig_l, "valid_length_nm": valid,
+                 "twist_window": [lo, hi], "max_rel_deficit": worst},
+        evidence=f"{finding} The first maximum of Figure 1 (Ω(L) ≈ 2π) is one helical turn. "
+                 "The paper's conclusions for the straight rod reach DNA only through the "
+                 "large-twist limit (rod-limit).")
+    return judge(SCALE, measured, NAME)
+
+
 def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
     t0 = time.perf_counter()
     data = compute()
     lo, hi = data["twist_window"]  # type: ignore[misc]
     progress(f"DNA window Omega(L) in [{lo:.1f}, {hi:.1f}]")
     files = [write_text(out / "dna.json", json.dumps(data, indent=1, default=json_value) + "\n")]
+    claim = scale_claim(data)
+    files += update_ledger(out, NAME, [claim])
     details = {"twist_window": data["twist_window"],
                "max_rel_deficit": max(s["max_rel_deficit"]
                                       for s in data["settled"]),  # type: ignore[union-attr]
-               "seconds": time.perf_counter() - t0}
+               "verdict": claim.verdict, "seconds": time.perf_counter() - t0}
     return SceneOutput(files=files, report=section(data), details=details)

@@ -38,3 +38,28 @@ def test_window_is_in_the_large_twist_regime():
 def test_section_states_the_figure1_reach():
     text = dna.section(dna.compute())
     assert "No point of Figure 1" in text and "Hagerman 1988" in text
+
+
+def test_the_scale_caveat_row_and_its_threshold():
+    from reproduce.ledger import Measured, judge
+
+    claim = dna.scale_claim(dna.compute())
+    assert claim.kind == "caveat" and claim.verdict == "fails"
+    # by hand: Figure 1 ends at 10 / (2 pi) turns of at most 3.57 nm; the rod needs 20 nm
+    assert claim.numbers["figure1_over_valid_length"] == pytest.approx(
+        10 / (2 * math.pi) * 10.5 * 0.34 / 20.0, rel=1e-12)
+    assert "No point of Figure 1" in claim.numbers["finding"]
+    # a rod model valid from 2 diameters on would reach the end of Figure 1
+    reach = Measured({**claim.numbers, "figure1_over_valid_length": 1.01}, claim.evidence)
+    assert judge(dna.SCALE, reach, "dna").verdict == "holds"
+    short = Measured({**claim.numbers, "figure1_over_valid_length": 0.99}, claim.evidence)
+    assert judge(dna.SCALE, short, "dna").verdict == "fails"
+
+
+def test_the_scene_writes_its_row_into_the_ledger(tmp_path):
+    import json
+
+    out = dna.run(tmp_path, lambda _m: None)
+    rows = json.loads((tmp_path / "claims.json").read_text())
+    assert [r["id"] for r in rows] == ["caveat-dna-scale"] and rows[0]["scene"] == "dna"
+    assert out.report.startswith("## DNA")

@@ -67,9 +67,7 @@ COVERAGE: tuple[Statement, ...] = (
               "[SCB96-FESL97].", reason=HISTORY),
     Statement(INTRO, "Double-stranded DNA molecules are helices with strongly curved regions "
               "[BFKS95]; modelled as rods they need spontaneous curvature and twist.",
-              reason="the paper's motivation: the `dna` scene converts Ω(L) to B-DNA lengths "
-                     "and says which part of Figure 1 a DNA segment reaches (a scale, not a "
-                     "verdict)"),
+              rows=("caveat-dna-scale",)),
     Statement(INTRO, "Kirchhoff already considered naturally curved rods [Lov44]; little is known "
               "about spontaneous curvature and twist in buckling.", reason=HISTORY),
     Statement(INTRO, "Nonlinear equilibrium equations are derived for a rod under external forces "
@@ -84,7 +82,7 @@ COVERAGE: tuple[Statement, ...] = (
                                     "ring-three-dimensional")),
     # Sec. 1
     Statement(SEC1, "L ≫ a, a the largest dimension of the cross-section.",
-              reason="the rod theory's premise; the `dna` scene applies it (L ≥ 10 diameters)"),
+              rows=("caveat-dna-scale",)),
     Statement(SEC1, "Eq. frenini: the reference frame's derivatives define ω_k0.",
               rows=("eq-inst1",)),
     Statement(SEC1, "u0, v0 are physical attributes of the rod and differ in general from the "
