@@ -109,8 +109,9 @@ HEADLINE = {
     "title": "## Headline",
     "paper": "**What the paper says**: {n} claims of the paper (its own statements) checked "
              "— {tally}.",
-    "others": "Not counted above: {n_package} checks of the package's own methods ({package}) "
-              "and {n_caveat} modelling caveats about what the paper leaves open ({caveat}).",
+    "others": "Not counted above: {n_package} check(s) of the package's own methods "
+              "({package}) and {n_caveat} modelling caveat(s) about what the paper leaves open "
+              "({caveat}).",
     "causes": "**The paper's errors**: the {n_fails} failing statements trace back to "
               "{n_causes} independent error(s):",
     "cause": "- {cause} — {ids}",

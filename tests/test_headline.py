@@ -34,8 +34,8 @@ def test_paper_statements_are_tallied_apart_from_checks_and_caveats(tmp_path):
     first = text.split("## Verdicts, row by row")[0]
     assert "5 claims of the paper (its own statements) checked — **holds** 1, **fails** 4." \
         in first
-    assert "1 checks of the package's own methods (**holds** 1)" in first
-    assert "1 modelling caveats about what the paper leaves open (**fails** 1)" in first
+    assert "1 check(s) of the package's own methods (**holds** 1)" in first
+    assert "1 modelling caveat(s) about what the paper leaves open (**fails** 1)" in first
     # four failing statements, three independent errors: A (two rows), B, and e on its own
     assert "the 4 failing statements trace back to 3 independent error(s)" in first
     assert f"- {CAUSE_A} — `b`, `c`" in first and f"- {CAUSE_B} — `d`" in first
@@ -51,7 +51,7 @@ def test_moving_a_row_between_kinds_or_causes_changes_the_headline(tmp_path):
     two = _headline(tmp_path, [base[0], _row("c", "fails", cause=CAUSE_B)])
     assert "trace back to 2 independent error(s)" in two
     pkg = _headline(tmp_path, [base[0], _row("c", "fails", kind="package")])
-    assert "the 1 failing statements" in pkg and "1 checks of the package" in pkg
+    assert "the 1 failing statements" in pkg and "1 check(s) of the package" in pkg
 
 
 def test_findings_come_from_the_rows_numbers(tmp_path):
