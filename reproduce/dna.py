@@ -56,7 +56,8 @@ from spectral_rod import critical_load, large_twist_limit
 
 NAME = "dna"
 SUMMARY = ("B-DNA scale: Omega(L) in nanometres and base pairs, the part of Figure 1 a DNA "
-           "segment reaches within the rod model's validity -> dna.json")
+           "segment reaches within the rod model's validity -> dna.json, ledger row "
+           "caveat-dna-scale")
 
 #: Literature values (module docstring): base pairs per turn (solution, fibre), rise per base
 #: pair [nm], diameter [nm], persistence length [nm].
