@@ -6,8 +6,11 @@
 
 The runner times every scene, stores its report section under ``<out>/sections/`` and rebuilds
 ``<out>/report.md`` from all sections present (so running one scene keeps the others' sections),
-with package versions, the git commit and the wall time of each scene; the report opens with the
-headline verdicts of ``claims.json``.
+with package versions, the git commit and the wall time of each scene. The report opens with a
+headline built from ``claims.json`` alone (:func:`headline_verdicts`): the paper's statements
+tallied apart from the package's checks and the modelling caveats, the failing statements grouped
+by root cause (one line per independent error of the paper), the findings themselves (each row's
+``numbers["finding"]``, sentences made from its computed numbers) and then every row.
 
 One run at a time writes to an output directory (an advisory ``flock`` on the directory: a second
 run waits for the first, and the lock dies with its process). Each run first removes the
@@ -40,7 +43,7 @@ from reproduce.io import (
     remove_stale_temporaries,
     write_text,
 )
-from reproduce.ledger import SCENE_ORDER, read_ledger, verdict_counts
+from reproduce.ledger import KINDS, SCENE_ORDER, read_ledger, verdict_counts
 from reproduce.paths import CODE_DIR
 
 #: The scenes of :data:`reproduce.ledger.SCENE_ORDER` whose module exists in this checkout.
@@ -101,18 +104,114 @@ def versions() -> dict[str, str]:
     return out
 
 
+#: The headline's wording: templates with named fields (numbers come from ``claims.json``).
+HEADLINE = {
+    "title": "## Headline",
+    "paper": "**What the paper says**: {n} claims of the paper (its own statements) checked "
+             "— {tally}.",
+    "others": "Not counted above: {n_package} check(s) of the package's own methods "
+              "({package}) and {n_caveat} modelling caveat(s) about what the paper leaves open "
+              "({caveat}).",
+    "causes": "**The paper's errors**: the {n_fails} failing statements trace back to "
+              "{n_causes} independent error(s):",
+    "cause": "- {cause} — {ids}",
+    "uncaused": "- `{id}` (no shared root cause stated): {claim}",
+    "findings": "**What was found** (from the computed numbers in `claims.json`):",
+    "finding": "- {finding}",
+    "all": "## Verdicts, row by row",
+    "kind": "*{kind}* ({n}):",
+    "row": "- **{verdict}** `{id}`: {claim}",
+}
+#: How each kind of row is named in the headline.
+KIND_NAMES = {"paper": "statements of the paper", "package": "checks of the package",
+              "caveat": "modelling caveats"}
+
+
+def _tally(rows: list[dict[str, object]]) -> str:
+    counts = verdict_counts(str(r["verdict"]) for r in rows)
+    return ", ".join(f"**{v}** {n}" for v, n in counts.items() if n) or "none"
+
+
+def _dig(row: dict[str, object] | None, *keys: str) -> object:
+    """numbers[keys[0]][keys[1]]... of a row (KeyError/TypeError if absent)."""
+    value: object = row["numbers"] if row is not None else None
+    for k in keys:
+        value = value[k]  # type: ignore[index]
+    return value
+
+
+#: Findings of rows that carry no ``numbers["finding"]``, made from their numbers (the ring's
+#: converged loads against Eq. crit2): (row id, template, key paths of its fields).
+FALLBACK_FINDINGS = (
+    ("ring-circular-limit", "For a circular section the converged ring load is {num:.3f} "
+     "E₁I₁/R³ out of plane (E₂ = E₁; {iso:.3f} for an isotropic material), not the 3 of the text "
+     "(3 is the in-plane load under hydrostatic pressure: {inplane:.3f}).",
+     {"num": ("per_e", "e=1", "numerical", "hydrostatic"),
+      "iso": ("per_e", "isotropic", "numerical", "hydrostatic"),
+      "inplane": ("per_e", "e=1", "in_plane", "hydrostatic")}),
+    ("ring-crit2", "Eq. crit2 is off the converged ring load by up to {dev:.0f}× (N = {N}, "
+     "ν = {nu:g}); the converged load is never below {qmin:.3f} E₁I₁/R³, so there is no "
+     "spontaneous instability.",
+     {"dev": ("hydrostatic", "max_rel_dev"), "N": ("hydrostatic", "at_N"),
+      "nu": ("hydrostatic", "at_nu"), "qmin": ("hydrostatic", "min_numerical")}),
+)
+
+
+def _findings(rows: list[dict[str, object]]) -> list[str]:
+    by_id = {str(r["id"]): r for r in rows}
+    out = [str(r["numbers"]["finding"]) for r in rows  # type: ignore[index]
+           if isinstance(r.get("numbers"), dict) and r["numbers"].get("finding")]
+    for row_id, template, paths in FALLBACK_FINDINGS:
+        row = by_id.get(row_id)
+        if row is None or row["numbers"].get("finding"):  # type: ignore[union-attr]
+            continue
+        try:
+            out.append(template.format(**{k: _dig(row, *p) for k, p in paths.items()}))
+        except (KeyError, TypeError, ValueError, IndexError):
+            continue  # the ring scene's numbers changed shape: it states its own finding
+    return out
+
+
 def headline_verdicts(claims_json: Path) -> list[str]:
-    """Markdown lines: the number of claims per verdict and one line per claim ([] if there is
-    no ledger yet; :class:`reproduce.io.OutputFileError` if it is corrupt)."""
+    """The report's first screen ([] if there is no ledger yet;
+    :class:`reproduce.io.OutputFileError` if it is corrupt): the paper's statements tallied
+    apart from package checks and caveats, the failing statements grouped by identical
+    ``root_cause`` (a failing statement without one on a line of its own), the findings, and
+    every row by kind."""
     rows = read_ledger(claims_json)
     if not rows:
         return []
-    counts = verdict_counts(str(r["verdict"]) for r in rows)
-    lines = ["## Verdicts", "",
-             f"{len(rows)} claims of the paper checked (`claims.md`): "
-             + ", ".join(f"**{v}** {n}" for v, n in counts.items() if n) + ".", ""]
-    lines += [f"- **{r['verdict']}** `{r['id']}`: {r['claim']}" for r in rows]
-    return [*lines, ""]
+    kinds = {k: [r for r in rows if r.get("kind", "paper") == k] for k in KINDS}
+    paper = kinds["paper"]
+    fails = [r for r in paper if r["verdict"] == "fails"]
+    causes: dict[str, list[str]] = {}
+    for r in fails:
+        if r.get("root_cause"):
+            causes.setdefault(str(r["root_cause"]), []).append(str(r["id"]))
+    uncaused = [r for r in fails if not r.get("root_cause")]
+    h = HEADLINE
+    lines = [h["title"], "", h["paper"].format(n=len(paper), tally=_tally(paper)), "",
+             h["others"].format(n_package=len(kinds["package"]), package=_tally(kinds["package"]),
+                                n_caveat=len(kinds["caveat"]), caveat=_tally(kinds["caveat"])),
+             ""]
+    if fails:
+        lines += [h["causes"].format(n_fails=len(fails), n_causes=len(causes) + len(uncaused)),
+                  ""]
+        lines += [h["cause"].format(cause=c, ids=", ".join(f"`{i}`" for i in ids))
+                  for c, ids in causes.items()]
+        lines += [h["uncaused"].format(id=r["id"], claim=r["claim"]) for r in uncaused]
+        lines.append("")
+    findings = _findings(rows)
+    if findings:
+        lines += [h["findings"], "", *[h["finding"].format(finding=f) for f in findings], ""]
+    lines += [h["all"], ""]
+    for kind in KINDS:
+        if kinds[kind]:
+            lines += [h["kind"].format(kind=KIND_NAMES[kind], n=len(kinds[kind])), ""]
+            lines += [h["row"].format(verdict=r["verdict"], id=r["id"], claim=r["claim"])
+                      for r in kinds[kind]]
+            lines.append("")
+    return lines
 
 
 #: Keys of ``sections/NAME.json`` that the report needs (written by :func:`_run_one`).

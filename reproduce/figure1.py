@@ -28,12 +28,14 @@ from reproduce.io import json_value, write_csv, write_figure, write_text
 from reproduce.ledger import (
     Claim,
     ClaimSpec,
+    Condition,
     CrossCheck,
     Measured,
     Method,
     Rule,
     judge,
     ledger_check,
+    tiered_rule,
     update_ledger,
 )
 from spectral_rod import (
@@ -55,6 +57,89 @@ from spectral_rod import (
 
 #: The twist ranges of Forensics.range_sizes (its order) in words.
 RANGE_WORDS = "below / in / above"
+#: The report section's paragraphs (:func:`run`, :func:`forensics_section`): templates with
+#: named fields.
+SECTION_TEXT = {
+    "head": "## Figure 1: critical load versus twist\n\n![Figure 1](figure1.png)\n\n"
+            "Collocation (Chebyshev, degree chosen per point by coefficient decay, tol {tol:g}) "
+            "at the {points} digitised points of the paper's picture; degree n from {n_min} to "
+            "{n_max} (median {n_median}); largest error estimate {estimate:.1e}. Sweep time "
+            "{sweep:.2f} s.\n\nDeviation computed − digitised (the digitisation is printed to "
+            "{quantum:g} picture units, i.e. {quantum_p:.1e} in p*; the plotted dots are {dot:g} "
+            "unit = {dot_p:.1e} wide):\n\n| ν | points | rms | max abs | at Ω(L) | mean | within "
+            "rms ≤ {rms:g}, max ≤ {max:g} |\n|---|---|---|---|---|---|---|",
+    "deviation_row": "| {nu} | {r[points]} | {r[rms]:.2e} | {r[max_abs]:.2e} | "
+                     "{r[twist_at_max]:.3f} | {r[mean]:+.2e} | {passes} |",
+    "files": "Files: `figure1.png`, `figure1.pdf`, `figure1_comparison.csv` (columns: curve, "
+             "nu, picture_x, picture_y, twist_angle, p_star_digitised, p_star_computed, "
+             "deviation, n, error_estimate, mode_family).",
+    "forensics_head": "### Every point explained\n\n![Figure 1 forensics]"
+                      "(figure1_forensics.png)\n\nAnalysis time {seconds:.1f} s "
+                      "(spectral_rod.figure1_forensics; output `figure1_forensics.json`). A point "
+                      "is *reproduced* if the model's y, printed to the print quantum, equals "
+                      "the picture's ({quantum:g} picture units = {quantum_p:.1e} in p*). Points "
+                      "{ranges} the imaginary-β₁ window: {sizes}.",
+    "best": "**Best model:** `{name}` -- {description}. It reproduces **{ok} of {n}** points "
+            "exactly. Where the scan yields no value it predicts a failure of the authors' "
+            "procedure; a quantisation model always yields a value, so it can also match "
+            "inserted points by coincidence (compare the two two-run rows).",
+    "switch_head": "Where the two runs meet (the switch is fitted per curve):\n\n| ν | low run: "
+                   "last reproduced Ω | last point ≤ Ω_a | window (Ω_a, Ω_b) | high run: first "
+                   "reproduced Ω | first point ≥ Ω_b |\n|---|---|---|---|---|---|",
+    "clusters_head": "**Clusters** (runs of points off the best model):\n\n| # | ν | Ω(L) | "
+                     "points | max abs deviation | kind |\n|---|---|---|---|---|---|",
+    "cluster_row": "| C{k} | {c[nu]} | {c[twist_from]:.3f}…{c[twist_to]:.3f} | {c[points]} | "
+                   "{c[max_abs_deviation]:.2e} | {c[kind]} |",
+    "missing_head": "**Missing grid points:**",
+    "prediction_head": "Predicted failures of the procedure (grid points where the covering "
+                       "run's scan finds no sign change) against irregular grid points "
+                       "(missing, or in a cluster):\n\n| ν | predicted | irregular | both | "
+                       "predicted only | irregular only |\n|---|---|---|---|---|---|",
+    "ledger": "**Ledger row `{id}`: {verdict}.** {rule} Related rows: {links}.",
+    "readme": "README sentence: {sentence}",
+}
+#: The scene's prose: templates with named fields, filled by :func:`readme_sentence` and its
+#: helpers (so a word can change without reading a computation).
+TEXT = {
+    "at_same": "reported at {lo[reported_at]}",
+    "at_split": "reported at {lo[reported_at]} at low twist and at {hi[reported_at]} at high "
+                "twist",
+    "run": "a sign-change scan of the boundary determinant {at}, stepping {lo[variable]} "
+           "({lo[description]}) by {lo[step]:g} at low twist and {hi[variable]} "
+           "({hi[description]}) by {hi[step]:g} at high twist",
+    "off": "up to {g[max_abs_deviation]:.1e} off",
+    "window_lines": ", {g[sloped_line]} of them on straight lines between the flanking computed "
+                    "points",
+    "window_lead": "straight lines ",
+    "window_group": "{lead}across the imaginary-β₁ window ({n} points{lines}, {off})",
+    "double_flat": ", {g[flat]} of them printed flat",
+    "double_lead": "flat values ",
+    "double_group": "{lead}at the {ns} crossing where both mode families' roots fall in one "
+                    "scan step ({n} points{flat}, {off})",
+    "other_group": "{g[kind]} ({n} points, {off})",
+    "bound_all": "every one of them",
+    "bound_some": "{dev[within_band]} of them",
+    "where": "so computed − digitised lies in [{lo:.1e}, {hi:.1e}] there (within one scan step "
+             "plus the print rounding at {bound})",
+    "where_none": "none of them",
+    "readme": "Figure 1 is explained point by point: {n_ok} of {n} plotted points are exactly "
+              "(to the {quantum:g} print quantum) what the authors' procedure gives from the "
+              "converged p* -- {run} -- {where}.",
+    "other": " The other {n_bad}",
+    "in_clusters": " lie in clusters of {in_clusters} points, which",
+    "all_inserted": " were inserted separately (LaTeX lines without the program's trailing "
+                    "blank)",
+    "some_inserted": " include {edited} inserted separately (LaTeX lines without the program's "
+                     "trailing blank)",
+    "not_reproduced": " are not reproduced",
+    "fails_all": " where that procedure fails",
+    "fails_some": "; that procedure fails at {caused} of them",
+    "groups": ": {groups}.",
+    "missing_at": "Ω = {m[twist_angle]:.3f} (ν = {m[nu]})",
+    "same_reason": "For the same reason",
+    "both_roots": "Where both mode families' roots fall in one scan step",
+    "missing": " {why} at the {ns} crossing no value was printed at {miss}.",
+}
 
 NAME = "figure1"
 SUMMARY = ("straight twisted rod, Eq. inst1: collocation p*(Omega) vs the digitised Figure 1, "
@@ -158,16 +243,27 @@ def draw(table: pd.DataFrame, curves: dict[float, tuple[np.ndarray, np.ndarray]]
 # ------------------------------------------------------------------------------------------
 
 CLAIM_ID = "fig1-curves"
+#: The row's finding (the report's headline), a template with named fields.
+FINDING = ("Figure 1 is explained point by point: {ok} of its {n} printed points are the "
+           "authors' sign-change scan applied to the converged p*; the other {other} (in "
+           "{clusters} clusters, across the imaginary-β₁ window and at a family crossing) were "
+           "inserted separately, and {missing} grid points are missing.")
 #: Deviation a reader of the printed figure would see: half a plotted dot, in p*.
 VISIBLE_DOTS = 0.5
 VISIBLE = VISIBLE_DOTS * FIGURE1_DOT / FIGURE1_Y_PER_P
-RULE = ("Rule F1 (point-by-point accounting): 'inconclusive' if a digitised point is neither "
-        "reproduced by the best model nor in a cluster, or a cluster or missing point has "
-        "neither a computed cause nor LaTeX evidence; else 'fails' if a point lies farther "
-        f"from the converged p* than half a plotted dot ({VISIBLE_DOTS * FIGURE1_DOT:g} picture "
-        f"units = {VISIBLE:.2e} in p*); else 'holds' if there are no clusters and no missing "
-        "points (every point is the procedure applied to the correct root); else 'holds "
-        "approximately'.")
+#: Rule F1 (point-by-point accounting), its text and logic from the same conditions.
+RULE_F1 = tiered_rule(
+    [("inconclusive", (Condition("unaccounted_or_unexplained", ">", "the number of digitised "
+                                 "points neither reproduced nor in a cluster, plus clusters and "
+                                 "missing points with neither a computed cause nor LaTeX "
+                                 "evidence,", 0, fmt="d"),)),
+     ("fails", (Condition("max_abs_deviation", ">", "the largest distance of a point from the "
+                          "converged p* (half a plotted dot:)", VISIBLE, fmt=".2e"),)),
+     ("holds", (Condition("irregular", "<=", "the number of clusters and missing points", 0,
+                          fmt="d"),))],
+    "holds approximately",
+    note="holds: every point is the procedure applied to the correct root")
+RULE = "Rule F1 (point-by-point accounting): " + RULE_F1.text + "."
 METHODS = (Method(f"Chebyshev collocation (converged p*, tol {TOL:g})", "inst1"),
            Method("sign-change scan of the boundary determinant D_sym·D_anti (double "
                   "precision), simulating the authors' procedure",
@@ -181,22 +277,18 @@ SAMPLE_EVERY, TRUTH_LIMIT = 60, 1e-11
 
 def accounting(fx: Forensics) -> dict:
     """The numbers the verdict on Figure 1 is taken from."""
-    return {"unaccounted_points": len(fx.unaccounted()),
-            "unexplained": (sum(not c["explained"] for c in fx.clusters)
-                            + sum(not m["explained"] for m in fx.missing_points)),
+    unexplained = (sum(not c["explained"] for c in fx.clusters)
+                   + sum(not m["explained"] for m in fx.missing_points))
+    return {"unaccounted_points": len(fx.unaccounted()), "unexplained": unexplained,
             "max_abs_deviation": fx.max_deviation(), "visible_deviation": VISIBLE,
-            "clusters": len(fx.clusters), "missing_points": len(fx.missing_points)}
+            "clusters": len(fx.clusters), "missing_points": len(fx.missing_points),
+            "irregular": len(fx.clusters) + len(fx.missing_points),
+            "unaccounted_or_unexplained": len(fx.unaccounted()) + unexplained}
 
 
 def figure1_verdict(numbers: dict) -> str:
-    """The verdict on Figure 1 by :data:`RULE`, from the accounting's numbers."""
-    if numbers["unaccounted_points"] or numbers["unexplained"]:
-        return "inconclusive"
-    if numbers["max_abs_deviation"] > numbers["visible_deviation"]:
-        return "fails"
-    if not numbers["clusters"] and not numbers["missing_points"]:
-        return "holds"
-    return "holds approximately"
+    """The verdict on Figure 1 by :data:`RULE_F1`, from the accounting's numbers."""
+    return RULE_F1.decide(numbers)
 
 
 def cross_links(fx: Forensics) -> list[str]:
@@ -212,43 +304,39 @@ def cross_links(fx: Forensics) -> list[str]:
 
 def _run_phrase(fx: Forensics) -> str:
     lo, hi = (fx.run_summary()[r] for r in ("low", "high"))
-    at = (f"reported at {lo['reported_at']}" if lo["reported_at"] == hi["reported_at"] else
-          f"reported at {lo['reported_at']} at low twist and at {hi['reported_at']} at high "
-          f"twist")
-    return (f"a sign-change scan of the boundary determinant {at}, stepping {lo['variable']} "
-            f"({lo['description']}) by {lo['step']:g} at low twist and {hi['variable']} "
-            f"({hi['description']}) by {hi['step']:g} at high twist")
+    at = (TEXT["at_same"].format(lo=lo) if lo["reported_at"] == hi["reported_at"]
+          else TEXT["at_split"].format(lo=lo, hi=hi))
+    return TEXT["run"].format(at=at, lo=lo, hi=hi)
 
 
 def _group_phrase(g: dict) -> str:
     """One kind of cluster in words (every number from :meth:`Forensics.cluster_groups`)."""
-    off = f"up to {g['max_abs_deviation']:.1e} off"
+    off = TEXT["off"].format(g=g)
     n = g["points"]
     if g["kind"] == CLUSTER_WINDOW:
-        lines = "" if g["sloped_line"] == n else (f", {g['sloped_line']} of them on straight "
-                                                  f"lines between the flanking computed points")
-        return (f"{'straight lines ' if g['sloped_line'] == n else ''}across the imaginary-β₁ "
-                f"window ({n} points{lines}, {off})")
+        lines = "" if g["sloped_line"] == n else TEXT["window_lines"].format(g=g)
+        return TEXT["window_group"].format(
+            lead=TEXT["window_lead"] if g["sloped_line"] == n else "", n=n, lines=lines, off=off)
     if g["kind"] == CLUSTER_DOUBLE_ROOT:
         ns = "/".join(f"{k}π" for k in g["crossings"])
-        flat = "" if g["flat"] == n else f", {g['flat']} of them printed flat"
-        return (f"{'flat values ' if g['flat'] == n else ''}at the {ns} crossing where both "
-                f"mode families' roots fall in one scan step ({n} points{flat}, {off})")
-    return f"{g['kind']} ({n} points, {off})"
+        flat = "" if g["flat"] == n else TEXT["double_flat"].format(g=g)
+        return TEXT["double_group"].format(lead=TEXT["double_lead"] if g["flat"] == n else "",
+                                           ns=ns, n=n, flat=flat, off=off)
+    return TEXT["other_group"].format(g=g, n=n, off=off)
 
 
 def readme_sentence(fx: Forensics) -> str:
-    """The one-sentence summary of the forensics for the README (every number computed)."""
+    """The one-sentence summary of the forensics for the README (every number computed, the
+    words from :data:`TEXT`)."""
     p = fx.points
     dev = fx.reproduced_deviation()
     n_ok = dev["points"]
-    bound = ("every one of them" if dev["within_band"] == n_ok else
-             f"{dev['within_band']} of them")
-    where = (f"so digitised − p* lies in [{dev['min']:.1e}, {dev['max']:.1e}] there (within one "
-             f"scan step plus the print rounding at {bound})" if n_ok else "none of them")
-    s = (f"Figure 1 is explained point by point: {n_ok} of {len(p)} plotted points are exactly "
-         f"(to the {FIGURE1_PRINT_QUANTUM:g} print quantum) what the authors' procedure gives "
-         f"from the converged p* -- {_run_phrase(fx)} -- {where}.")
+    bound = (TEXT["bound_all"] if dev["within_band"] == n_ok
+             else TEXT["bound_some"].format(dev=dev))
+    where = (TEXT["where"].format(lo=-dev["max"], hi=-dev["min"], bound=bound) if n_ok
+             else TEXT["where_none"])
+    s = TEXT["readme"].format(n_ok=n_ok, n=len(p), quantum=FIGURE1_PRINT_QUANTUM,
+                              run=_run_phrase(fx), where=where)
     groups = fx.cluster_groups()
     n_bad = len(p) - n_ok
     if n_bad:
@@ -258,27 +346,25 @@ def readme_sentence(fx: Forensics) -> str:
         in_clusters = sum(g["points"] for g in groups)
         edited = lat["edited_in_clusters"] if lat else None
         caused = sum(g["caused"] for g in groups)
-        s += f" The other {n_bad}"
+        s += TEXT["other"].format(n_bad=n_bad)
         if in_clusters != n_bad:
-            s += f" lie in clusters of {in_clusters} points, which"
+            s += TEXT["in_clusters"].format(in_clusters=in_clusters)
         if edited == in_clusters:
-            s += " were inserted separately (LaTeX lines without the program's trailing blank)"
+            s += TEXT["all_inserted"]
         elif edited:
-            s += (f" include {edited} inserted separately (LaTeX lines without the program's "
-                  f"trailing blank)")
+            s += TEXT["some_inserted"].format(edited=edited)
         else:
-            s += " are not reproduced"
-        s += (" where that procedure fails" if caused == in_clusters else
-              f"; that procedure fails at {caused} of them")
-        s += ": " + " and ".join(_group_phrase(g) for g in groups) + "."
+            s += TEXT["not_reproduced"]
+        s += (TEXT["fails_all"] if caused == in_clusters
+              else TEXT["fails_some"].format(caused=caused))
+        s += TEXT["groups"].format(groups=" and ".join(_group_phrase(g) for g in groups))
     crossed = [m for m in fx.missing_points if m.get("crossing")]
     if crossed:
-        miss = "; ".join(f"Ω = {m['twist_angle']:.3f} (ν = {m['nu']})" for m in crossed)
+        miss = "; ".join(TEXT["missing_at"].format(m=m) for m in crossed)
         miss_n = "/".join(sorted({f"{m['crossing']['n']}π" for m in crossed}))
-        why = ("For the same reason" if any(g["kind"] == CLUSTER_DOUBLE_ROOT
-                                            for g in groups)
-               else "Where both mode families' roots fall in one scan step")
-        s += f" {why} at the {miss_n} crossing no value was printed at {miss}."
+        why = (TEXT["same_reason"] if any(g["kind"] == CLUSTER_DOUBLE_ROOT for g in groups)
+               else TEXT["both_roots"])
+        s += TEXT["missing"].format(why=why, ns=miss_n, miss=miss)
     return s
 
 
@@ -322,7 +408,12 @@ def forensics_claim(fx: Forensics, summary: pd.DataFrame, truth: CrossCheck) -> 
                  f"largest deviation of any point from p* {fx.max_deviation():.2e} = "
                  f"{fx.max_deviation() * FIGURE1_Y_PER_P:.2f} picture units (a dot is "
                  f"{FIGURE1_DOT:g}). Related rows: {', '.join(links)}.",
-        numbers={**accounting(fx), "headline": readme_sentence(fx), "best": fx.best.name,
+        numbers={**accounting(fx), "headline": readme_sentence(fx),
+                 "finding": FINDING.format(ok=int(p["ok"].sum()), n=len(p),
+                                           other=len(p) - int(p["ok"].sum()),
+                                           clusters=len(fx.clusters),
+                                           missing=len(fx.missing_points)),
+                 "best": fx.best.name,
                  "reproduced": int(p["ok"].sum()), "points": len(p),
                  "clusters": [{k: c[k] for k in ("nu", "twist_from", "twist_to", "points",
                                                  "max_abs_deviation", "kind")}
@@ -360,20 +451,22 @@ def _model_band(ax, fx: Forensics, nu: float) -> None:
     for r in fx.runs:
         mine = (s["run"] == r).to_numpy() & np.isfinite(hi)
         if mine.any():
-            ax.fill_between(s["twist_angle"], lo * 1e4, hi * 1e4, where=mine, color="0.85",
+            # the band is of digitised - p*; drawn in the figures' convention, computed - digitised
+            ax.fill_between(s["twist_angle"], -hi * 1e4, -lo * 1e4, where=mine, color="0.85",
                             lw=0, step="mid",
                             label="model band: one scan step" if r == "high" else None)
 
 
 def draw_forensics(fx: Forensics):
-    """Residuals digitised − p* per curve, coloured by class, physical windows marked."""
+    """Residuals computed − digitised (the convention of figure1.png) per curve, coloured by
+    class, physical windows marked."""
     fig, axes = plt.subplots(3, 1, figsize=(9.0, 9.5), sharex=True,
                              gridspec_kw={"hspace": 0.12})
     colors = plt.get_cmap("tab10").colors
     for ax, nu in zip(axes, FIGURE1_NU, strict=True):
         s = fx.sites[fx.sites["nu"] == nu]
         d = s[s["in_data"]]
-        res = (d["p_digitised"] - d["p_true"]) * 1e4
+        res = (d["p_true"] - d["p_digitised"]) * 1e4
         _model_band(ax, fx, nu)
         _mark_physics(ax, fx, nu)
         ok = d["ok"].to_numpy()
@@ -386,18 +479,18 @@ def draw_forensics(fx: Forensics):
             ax.plot(d["twist_angle"][m], res[m], "o", ms=3.5, mfc="none", mew=1.0,
                     color=colors[(k + 1) % 10],
                     label=f"C{k + 1}: {c['kind']} ({c['points']})")
-            ax.annotate(f"C{k + 1}", (d["twist_angle"][m].mean(), res[m].max()),
-                        xytext=(0, 6), textcoords="offset points", ha="center", fontsize=8,
+            ax.annotate(f"C{k + 1}", (d["twist_angle"][m].mean(), res[m].min()),
+                        xytext=(0, -12), textcoords="offset points", ha="center", fontsize=8,
                         color=colors[(k + 1) % 10])
         miss = s[~s["in_data"]]
         if len(miss):
             ax.plot(miss["twist_angle"], np.zeros(len(miss)), "x", color="tab:red", ms=6,
                     label=f"missing grid points ({len(miss)})")
         ax.axhline(0, color="k", lw=0.5)
-        ax.set_ylabel(f"ν = {nu}\ndigitised − p*  [10⁻⁴]")
+        ax.set_ylabel(f"ν = {nu}\ncomputed − digitised  [10⁻⁴]")
         ax.legend(loc="upper right", fontsize=6.5, ncol=2, frameon=False)
-        ax.set_ylim(-3.5, 6.0)
-    axes[0].set_title("Figure 1 point by point: digitised − converged p* "
+        ax.set_ylim(-7.0, 7.5)  # headroom: the legend above the largest residual (2.8)
+    axes[0].set_title("Figure 1 point by point: converged p* − digitised "
                       f"(print quantum {FIGURE1_PRINT_QUANTUM / FIGURE1_Y_PER_P:.1e}, "
                       f"dot {FIGURE1_DOT / FIGURE1_Y_PER_P:.1e})",
                       fontsize=10)
@@ -443,20 +536,13 @@ def forensics_section(fx: Forensics, claim: Claim, seconds: float) -> list[str]:
     """The report's Markdown on the forensics (every number from fx)."""
     p = fx.points
     sizes = fx.range_sizes()
-    lines = ["### Every point explained", "", "![Figure 1 forensics](figure1_forensics.png)", "",
-             f"Analysis time {seconds:.1f} s (spectral_rod.figure1_forensics; output "
-             "`figure1_forensics.json`). A point is *reproduced* if the model's y, printed to "
-             f"the print quantum, equals the picture's ({FIGURE1_PRINT_QUANTUM:g} picture units "
-             f"= {FIGURE1_PRINT_QUANTUM / FIGURE1_Y_PER_P:.1e} in p*). Points {RANGE_WORDS} the "
-             f"imaginary-β₁ window: {' / '.join(str(v) for v in sizes.values())}.",
-             "", f"**Best model:** `{fx.best.name}` -- {fx.best.description}. It reproduces "
-             f"**{int(p['ok'].sum())} of {len(p)}** points exactly. Where the scan yields no "
-             "value it predicts a failure of the authors' procedure; a quantisation model "
-             "always yields a value, so it can also match inserted points by coincidence "
-             "(compare the two two-run rows).", "", *_hypothesis_rows(fx), "",
-             "Where the two runs meet (the switch is fitted per curve):", "",
-             "| ν | low run: last reproduced Ω | last point ≤ Ω_a | window (Ω_a, Ω_b) | "
-             "high run: first reproduced Ω | first point ≥ Ω_b |", "|---|---|---|---|---|---|"]
+    lines = [SECTION_TEXT["forensics_head"].format(
+                 seconds=seconds, quantum=FIGURE1_PRINT_QUANTUM,
+                 quantum_p=FIGURE1_PRINT_QUANTUM / FIGURE1_Y_PER_P, ranges=RANGE_WORDS,
+                 sizes=" / ".join(str(v) for v in sizes.values())),
+             "", SECTION_TEXT["best"].format(name=fx.best.name, description=fx.best.description,
+                                             ok=int(p["ok"].sum()), n=len(p)),
+             "", *_hypothesis_rows(fx), "", SECTION_TEXT["switch_head"]]
     for nu, w in fx.switches.items():
         win = fx.windows.get(nu, {})
         lines.append(f"| {nu} | {_num(w['low_run_last_reproduced'])} | "
@@ -473,11 +559,9 @@ def forensics_section(fx: Forensics, claim: Claim, seconds: float) -> list[str]:
                           f"{w['low_run_reproduced']}, high run "
                           f"{w['high_run_met_imaginary_beta1']} of {w['high_run_reproduced']}"
                           for nu, w in fx.switches.items()) + ".",
-              "", "**Clusters** (runs of points off the best model):", "",
-              "| # | ν | Ω(L) | points | max abs deviation | kind |", "|---|---|---|---|---|---|"]
+              "", SECTION_TEXT["clusters_head"]]
     for k, c in enumerate(fx.clusters, 1):
-        lines.append(f"| C{k} | {c['nu']} | {c['twist_from']:.3f}…{c['twist_to']:.3f} | "
-                     f"{c['points']} | {c['max_abs_deviation']:.2e} | {c['kind']} |")
+        lines.append(SECTION_TEXT["cluster_row"].format(k=k, c=c))
     lines += [""] + [f"* **C{k}.** {c['explanation']}" for k, c in enumerate(fx.clusters, 1)]
     lat = fx.latex_summary()
     if lat:
@@ -491,18 +575,15 @@ def forensics_section(fx: Forensics, claim: Claim, seconds: float) -> list[str]:
                   f"{len(lat['edited_reproduced'])}, "
                   f"{sum(r['reproduced'] for r in lat['edited_reproduced'])} carry exactly "
                   f"the model's value (rewritten): Ω = {retyped}."]
-    lines += ["", "**Missing grid points:**", ""]
+    lines += ["", SECTION_TEXT["missing_head"], ""]
     lines += _missing_rows(fx) or ["* none"]
-    lines += ["", "Predicted failures of the procedure (grid points where the covering run's "
-              "scan finds no sign change) against irregular grid points (missing, or in a "
-              "cluster):", "", "| ν | predicted | irregular | both | predicted only | "
-              "irregular only |", "|---|---|---|---|---|---|"]
+    lines += ["", SECTION_TEXT["prediction_head"]]
     for nu, r in fx.prediction.items():
         lines.append(f"| {nu} | {r['predicted_failures']} | {r['irregular']} | {r['both']} | "
                      f"{r['predicted_only'] or '—'} | {r['irregular_only'] or '—'} |")
-    lines += ["", f"**Ledger row `{claim.id}`: {claim.verdict}.** {RULE} Related rows: "
-              f"{', '.join(claim.numbers['cross_links'])}.", "",
-              f"README sentence: {readme_sentence(fx)}"]
+    lines += ["", SECTION_TEXT["ledger"].format(id=claim.id, verdict=claim.verdict, rule=RULE,
+                                                links=", ".join(claim.numbers["cross_links"])),
+              "", SECTION_TEXT["readme"].format(sentence=readme_sentence(fx))]
     return lines
 
 
@@ -510,6 +591,9 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
     t0 = time.perf_counter()
     reference = load_figure1()
     progress(f"loaded {len(reference)} digitised points (spectral_rod/data/figure1_digitised.csv)")
+    # the picture is read (and checked against the CSV) first: a broken file stops the scene
+    # before any output is written
+    pic = picture_lines(figure1_picture())
     table = comparison_table(reference)
     t_sweep = time.perf_counter() - t0
     progress(f"collocation at all digitised points to tol {TOL:g} in {t_sweep:.2f} s")
@@ -521,28 +605,16 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
              write_figure(out / "figure1.pdf", fig)]
     files.append(write_csv(out / "figure1_comparison.csv", table, float_format="%.12g"))
     n_used = table["n"]
-    lines = [
-        "## Figure 1: critical load versus twist", "",
-        "![Figure 1](figure1.png)", "",
-        f"Collocation (Chebyshev, degree chosen per point by coefficient decay, tol {TOL:g}) at "
-        f"the {len(table)} digitised points of the paper's picture; degree n from "
-        f"{n_used.min()} to {n_used.max()} (median {int(n_used.median())}); largest error "
-        f"estimate {table['error_estimate'].max():.1e}. Sweep time {t_sweep:.2f} s.", "",
-        f"Deviation computed − digitised (the digitisation is printed to "
-        f"{FIGURE1_PRINT_QUANTUM:g} picture units, i.e. "
-        f"{FIGURE1_PRINT_QUANTUM / FIGURE1_Y_PER_P:.1e} in p*; the plotted dots are "
-        f"{FIGURE1_DOT:g} unit = {FIGURE1_DOT / FIGURE1_Y_PER_P:.1e} wide):", "",
-        "| ν | points | rms | max abs | at Ω(L) | mean | within rms ≤ "
-        f"{RMS_LIMIT:g}, max ≤ {MAX_LIMIT:g} |", "|---|---|---|---|---|---|---|"]
+    lines = [SECTION_TEXT["head"].format(
+        tol=TOL, points=len(table), n_min=n_used.min(), n_max=n_used.max(),
+        n_median=int(n_used.median()), estimate=table["error_estimate"].max(), sweep=t_sweep,
+        quantum=FIGURE1_PRINT_QUANTUM, quantum_p=FIGURE1_PRINT_QUANTUM / FIGURE1_Y_PER_P,
+        dot=FIGURE1_DOT, dot_p=FIGURE1_DOT / FIGURE1_Y_PER_P, rms=RMS_LIMIT, max=MAX_LIMIT)]
     for nu, r in summary.iterrows():
-        lines.append(f"| {nu} | {r['points']} | {r['rms']:.2e} | {r['max_abs']:.2e} | "
-                     f"{r['twist_at_max']:.3f} | {r['mean']:+.2e} | "
-                     f"{'yes' if r['passes'] else 'NO'} |")
-    lines += ["", "Files: `figure1.png`, `figure1.pdf`, `figure1_comparison.csv` (columns: "
-              "curve, nu, picture_x, picture_y, twist_angle, p_star_digitised, p_star_computed, "
-              "deviation, n, error_estimate, mode_family)."]
+        lines.append(SECTION_TEXT["deviation_row"].format(
+            nu=nu, r=r, passes="yes" if r["passes"] else "NO"))
+    lines += ["", SECTION_TEXT["files"]]
     t1 = time.perf_counter()
-    pic = picture_lines(figure1_picture())
     fx = analyse_figure1(reference, pic, p_true=table["p_star_computed"].to_numpy())
     t_fx = time.perf_counter() - t1
     progress(f"forensics: best model reproduces {int(fx.points['ok'].sum())} of "

@@ -7,7 +7,13 @@ text made from the numbers), then *judged* (:func:`judge`):
 
 * if any cross-check failed -- two independent methods disagree beyond their stated accuracy --
   the verdict is "inconclusive", whatever the rule would say;
-* otherwise the named rule turns the numbers into "holds", "holds approximately" or "fails".
+* otherwise the named rule turns the numbers into "holds", "holds approximately", "true but
+  does not explain" (a sentence that is true but is offered as the explanation of a result it
+  does not explain) or "fails".
+
+A rule is best built by :func:`tiered_rule` from named :class:`Condition` objects: its text and
+its logic then come from one definition (the same thresholds), so the rule a reader sees is the
+rule that ran.
 
 So a test can perturb the measured numbers (or a cross-check) and see the verdict change. A
 verdict backed by methods of a single formulation (e.g. two solvers of Eq. ``inst1``) says so in
@@ -20,8 +26,10 @@ keys ``id``, ``section``, ``claim``, ``test``, ``evidence``, ``verdict`` (one of
 :data:`VERDICTS`), ``scene``, ``figure``, ``numbers``, ``methods`` (list of {"name",
 "formulation"}), ``rule``, ``cross_checks`` (list of {"name", "disagreement", "limit",
 "passed"}), ``related`` (ids of rows that bear on this one), ``kind`` (one of :data:`KINDS`)
-and ``root_cause`` (for a paper's statement that fails: the id of the independent error it
-traces back to, else null).
+and ``root_cause`` (for a paper's statement that fails: a one-line statement of the independent
+error of the paper it traces back to, a module-level constant shared by every row it explains,
+else null). ``numbers`` may hold ``headline`` (the key numbers in a phrase) and ``finding`` (what
+the row found, as a sentence made from its numbers: the report's headline lists these).
 """
 
 from __future__ import annotations
@@ -37,14 +45,19 @@ from typing import Any
 from reproduce.io import OutputFileError, json_value, read_json, write_text
 from reproduce.tables import markdown_table
 
-VERDICTS = ("holds", "holds approximately", "fails", "inconclusive")
+#: The verdict classes. "true but does not explain": the sentence is true, but it is offered as
+#: the explanation of a result and does not explain it (the inference fails, not the fact).
+VERDICTS = ("holds", "holds approximately", "true but does not explain", "fails",
+            "inconclusive")
 #: What a row is: a statement of the paper, a check of the package's own methods, or a modelling
 #: caveat (a finding about what the paper leaves unspecified). The headline tallies the paper's
 #: statements apart from the rest.
 KINDS = ("paper", "package", "caveat")
 #: The scenes in the order `python -m reproduce all` runs them; the ledger lists their rows in
 #: the same order (rows of other scenes after them, alphabetically).
-SCENE_ORDER = ("figure1", "claims", "ring", "convergence", "extremes")
+#: The sentence-by-sentence coverage of the paper (written by the claims scene).
+COVERAGE_FILE = "coverage.md"
+SCENE_ORDER = ("figure1", "claims", "ring", "convergence", "extremes", "dna")
 
 
 @dataclass(frozen=True)
@@ -78,6 +91,69 @@ class Rule:
     decide: Callable[[Mapping[str, Any]], str]
 
 
+#: Comparison operators a :class:`Condition` may use, with the words its text uses.
+_OPS: dict[str, tuple[Callable[[Any, Any], bool], str]] = {
+    "<": (lambda a, b: a < b, "<"), "<=": (lambda a, b: a <= b, "≤"),
+    ">": (lambda a, b: a > b, ">"), ">=": (lambda a, b: a >= b, "≥"),
+    "true": (lambda a, _b: bool(a), ""), "false": (lambda a, _b: not a, ""),
+}
+
+
+@dataclass(frozen=True)
+class Condition:
+    """One named test of a rule: ``numbers[key] op threshold`` (``op`` "true"/"false" tests a
+    boolean number and has no threshold). ``phrase`` names the number in the rule's text;
+    ``fmt`` formats the threshold there (so the text shows the threshold the logic uses)."""
+
+    key: str
+    op: str
+    phrase: str
+    threshold: float | None = None
+    fmt: str = "g"
+
+    def __post_init__(self) -> None:
+        if self.op not in _OPS:
+            raise ValueError(f"op must be one of {sorted(_OPS)}, got {self.op!r}")
+        if (self.threshold is None) != (self.op in ("true", "false")):
+            raise ValueError(f"condition on {self.key!r}: a threshold goes with a comparison "
+                             "operator and only with one")
+
+    def met(self, numbers: Mapping[str, Any]) -> bool:
+        """Whether `numbers` meet the condition (a missing or non-finite number does not)."""
+        value = numbers.get(self.key)
+        if value is None or (isinstance(value, float) and not math.isfinite(value)):
+            return False
+        return bool(_OPS[self.op][0](value, self.threshold))
+
+    @property
+    def text(self) -> str:
+        if self.op == "true":
+            return self.phrase
+        if self.op == "false":
+            return f"not {self.phrase}"
+        return f"{self.phrase} {_OPS[self.op][1]} {self.threshold:{self.fmt}}"
+
+
+def tiered_rule(tiers: Sequence[tuple[str, Sequence[Condition]]], otherwise: str,
+                note: str = "") -> Rule:
+    """A :class:`Rule` whose verdict is that of the first tier all of whose conditions are met
+    (else `otherwise`), and whose text is made from the same conditions: "V1 if A and B; V2 if
+    C; `otherwise` otherwise" (plus `note`, what the rule means, in parentheses)."""
+    for verdict, _ in tiers:
+        if verdict not in VERDICTS:
+            raise ValueError(f"tier verdict {verdict!r} is not one of {VERDICTS}")
+    if otherwise not in VERDICTS:
+        raise ValueError(f"otherwise verdict {otherwise!r} is not one of {VERDICTS}")
+    frozen = tuple((v, tuple(conds)) for v, conds in tiers)
+
+    def decide(numbers: Mapping[str, Any]) -> str:
+        return next((v for v, conds in frozen if all(c.met(numbers) for c in conds)), otherwise)
+
+    text = "; ".join(f"{v} if " + " and ".join(c.text for c in conds) for v, conds in frozen)
+    text += f"; {otherwise} otherwise" + (f" ({note})" if note else "")
+    return Rule(text, decide)
+
+
 @dataclass(frozen=True)
 class ClaimSpec:
     """The declaration of a claim: what the paper says and how it is judged."""
@@ -96,7 +172,8 @@ class ClaimSpec:
     one_formulation_why: str = "no independent formulation applies to it"
     #: one of :data:`KINDS`
     kind: str = "paper"
-    #: for a row that fails: the id of the independent error of the paper it traces back to
+    #: for a row that fails: the independent error of the paper it traces back to (module
+    #: docstring)
     root_cause: str | None = None
 
     def __post_init__(self) -> None:
@@ -223,18 +300,24 @@ def _markdown(rows: list[dict[str, Any]]) -> str:
     lines = ["# Claims ledger", "",
              "Every checkable statement of Drozdov & Rabin, with the test, the methods it rests "
              "on (and their starting formulations), the computed evidence and a verdict by a "
-             "stated rule (*holds*, *holds approximately*, *fails*, or *inconclusive* when "
-             "independent methods disagree). Generated by `python -m reproduce`; nothing here is "
-             "typed in by hand.", "",
+             "stated rule (" + ", ".join(f"*{v}*" for v in VERDICTS[:-1])
+             + f", or *{VERDICTS[-1]}* when independent methods disagree). Each row is a "
+             "statement of the paper, a check of the package or a modelling caveat (its kind). "
+             "Which sentence of the paper each row checks, and why the others have none: "
+             f"`{COVERAGE_FILE}`. Generated by `python -m reproduce`; nothing here is typed in "
+             "by hand.", "",
              ", ".join(f"{counts[v]} {v}" for v in VERDICTS) + f" ({len(rows)} rows).", "",
              markdown_table(["id", "where", "claim", "verdict"],
                             [[f"`{r['id']}`", r["section"], r["claim"], f"**{r['verdict']}**"]
                              for r in rows])]
     for r in rows:
         lines += ["", f"## `{r['id']}` — {r['verdict']}", "",
-                  f"*Where:* {r['section']}  ", f"*Claim:* {r['claim']}  ",
+                  f"*Where:* {r['section']}  ", f"*Kind:* {r.get('kind', 'paper')}  ",
+                  f"*Claim:* {r['claim']}  ",
                   f"*Test:* {r['test']}  ", f"*Methods:* {_methods_text(r)}  ",
                   f"*Rule:* {r.get('rule', '')}  ", f"*Evidence:* {r['evidence']}"]
+        if r.get("root_cause"):
+            lines.append(f"*Root cause:* {r['root_cause']}  ")
         if r.get("related"):
             lines.append(f"*Related:* {', '.join(f'`{x}`' for x in r['related'])}")
         if r.get("figure"):
@@ -265,6 +348,7 @@ def update_ledger(out_dir: Path, scene: str, claims: list[Claim]) -> list[Path]:
 #: test, verdict, methods, rule, figure).
 LEDGER_CHECK: dict[str, Any] = {
     "_owner": "scene", "*.evidence": "text", "*.numbers.headline": "text",
+    "*.numbers.finding": "text",
     "*.numbers.*": {"rel": 1e-9, "abs": 1e-10},
     "*.cross_checks.*.disagreement": {"rel": 1e-6, "abs": 1e-10},
     "*": "exact"}
@@ -272,5 +356,7 @@ LEDGER_CHECK: dict[str, Any] = {
 
 def ledger_check(numbers: Mapping[str, Any] | None = None) -> dict[str, Any]:
     """:data:`LEDGER_CHECK` with a scene's own rules for some ``*.numbers.*`` keys, matched
-    before the general ones (the first matching pattern applies)."""
-    return {**(numbers or {}), **LEDGER_CHECK}
+    before the general ones (the first matching pattern applies) but after the prose keys
+    (``headline``, ``finding``: compared as text whatever the scene's number rules say)."""
+    prose = {k: v for k, v in LEDGER_CHECK.items() if v == "text"}
+    return {**prose, **(numbers or {}), **LEDGER_CHECK}

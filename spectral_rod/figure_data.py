@@ -125,11 +125,60 @@ def figure1_path() -> Path:
     return Path(str(resources.files("spectral_rod") / "data" / "figure1_digitised.csv"))
 
 
-def figure1_picture() -> str:
-    """The paper's Figure 1 picture environment, verbatim (shipped with the package: the
-    formatting of its lines is evidence for :mod:`spectral_rod.figure1_forensics`)."""
-    return (resources.files("spectral_rod") / "data" / "figure1_picture.tex").read_text(
-        encoding="utf-8")
+def figure1_picture(path: str | Path | None = None) -> str:
+    """The paper's Figure 1 picture environment, verbatim (default: the packaged
+    ``figure1_picture.tex``; the formatting of its lines is evidence for
+    :mod:`spectral_rod.figure1_forensics`), checked before it is returned: it must hold one
+    ``picture`` environment whose ``\\put`` points form the schema's three curves with their
+    point counts and are the packaged digitised points (:func:`load_figure1`). A truncated,
+    garbled, edited or unreadable file raises :class:`ReferenceDataError`
+    (``FileNotFoundError`` if it is missing) naming the file and the problem.
+
+    >>> figure1_picture().count(r"\\circle*")
+    1201
+    """
+    if path is not None and not isinstance(path, (str, os.PathLike)):
+        raise TypeError(f"path must be a str or os.PathLike, got {type(path).__name__}")
+    source = resources.files("spectral_rod") / "data" / "figure1_picture.tex"
+    where = Path(str(source)) if path is None else Path(path)
+    try:
+        tex = (source if path is None else where).read_text(encoding="utf-8")
+    except FileNotFoundError as exc:
+        raise FileNotFoundError(f"the LaTeX picture of Figure 1, {where}, is missing") from exc
+    except UnicodeDecodeError as exc:
+        raise ReferenceDataError(f"{where}: not UTF-8 text ({exc})") from exc
+    except IsADirectoryError as exc:
+        raise ReferenceDataError(f"{where} is a directory, not the LaTeX picture of "
+                                 f"Figure 1") from exc
+    _check_picture(tex, where)
+    return tex
+
+
+def check_picture_matches(picture: pd.DataFrame, points: pd.DataFrame,
+                          where: str | Path = "figure1_picture.tex") -> None:
+    """ReferenceDataError naming `where` unless the picture's points (:func:`picture_points`)
+    are the digitised points (:func:`load_figure1`), one for one in source order."""
+    a = picture[["picture_x", "picture_y"]].to_numpy(dtype=float)
+    b = points[["picture_x", "picture_y"]].to_numpy(dtype=float)
+    if a.shape != b.shape or not np.allclose(a, b, rtol=0, atol=1e-9):
+        raise ReferenceDataError(f"{where}: its \\put points are not the digitised points of "
+                                 f"figure1_digitised.csv (garbled or edited file?)")
+
+
+def _check_picture(tex: str, where: Path) -> None:
+    """The picture's points against the schema's curves (ReferenceDataError naming `where`)."""
+    try:
+        pts = picture_points(tex)
+    except ValueError as exc:
+        raise ReferenceDataError(f"{where}: {exc} (truncated or garbled file?)") from exc
+    counts = pts.groupby("curve").size().to_dict()
+    for spec in figure1_schema()["x-figure1"]["curves"]:
+        got = int(counts.get(spec["curve"], 0))
+        if got != spec["points"]:
+            raise ReferenceDataError(f"{where}: curve {spec['curve']} (nu = {spec['nu']}) has "
+                                     f"{got} \\put points, expected {spec['points']} (truncated "
+                                     f"or garbled file?)")
+    check_picture_matches(pts, load_figure1(), where)
 
 
 @cache

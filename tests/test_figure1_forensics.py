@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import re
 from importlib import resources
 from pathlib import Path
 
@@ -23,6 +24,7 @@ from spectral_rod.asymptotics import crossing_closed_form, imaginary_beta1_windo
 from spectral_rod.characteristic import determinants, family_critical_load
 from spectral_rod.closed_form import boundary_determinant_4x4
 from spectral_rod.critical import critical_load
+from spectral_rod.errors import ReferenceDataError
 from spectral_rod.figure1_forensics import (
     MERGE_GAP,
     analyse_figure1,
@@ -43,7 +45,13 @@ from spectral_rod.figure1_forensics import (
     straight_line,
 )
 from spectral_rod.figure1_forensics.scan import REPORT_RULES
-from spectral_rod.figure_data import figure1_path, load_figure1
+from spectral_rod.figure_data import (
+    check_picture_matches,
+    figure1_path,
+    figure1_picture,
+    load_figure1,
+    picture_points,
+)
 from spectral_rod.wavenumbers import characteristic_roots
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -427,3 +435,58 @@ def test_partial_inputs_do_not_crash(points):
     assert "point by point: 40 of 40 plotted" in figure1.readme_sentence(part)
     assert missing_grid_points(np.array([0.25]))[2] is None
     assert [a.size for a in family_loads(np.array([]), np.array([]))] == [0, 0]
+
+
+def test_a_nan_p_star_is_refused_with_the_column_named(points):
+    bad = points.copy()
+    bad.loc[5, "p_star"] = float("nan")
+    with pytest.raises(ValueError, match=r"points\['p_star'\] must be finite"):
+        analyse_figure1(bad, p_true=np.ones(len(bad)))
+    bad = points.copy()
+    bad["twist_angle"] = bad["twist_angle"].astype(object)
+    bad.loc[3, "twist_angle"] = "abc"
+    with pytest.raises(ValueError, match="twist_angle"):
+        analyse_figure1(bad, p_true=np.ones(len(bad)))
+
+
+@pytest.mark.parametrize("damage", ["truncate", "garble", "binary", "move"])
+def test_a_broken_picture_file_is_named(tmp_path, damage):
+    tex = figure1_picture()
+    path = tmp_path / "figure1_picture.tex"
+    if damage == "truncate":
+        path.write_text(tex[: len(tex) // 2], encoding="utf-8")
+    elif damage == "garble":
+        path.write_text(tex.replace("circle*", "circ1e*", 3), encoding="utf-8")
+    elif damage == "binary":
+        path.write_bytes(b"\xff\xfe\x00" + tex.encode()[:100])
+    else:  # every point still parses, one moved: only the comparison with the CSV sees it
+        path.write_text(tex.replace("\\put(   0.50,    0.01)", "\\put(   0.50,    0.02)", 1),
+                        encoding="utf-8")
+    with pytest.raises(ReferenceDataError, match=re.escape(str(path))):
+        figure1_picture(path)
+    if damage == "move":  # the helper that sees it, on its own
+        with pytest.raises(ReferenceDataError, match="not the digitised points"):
+            check_picture_matches(picture_points(tex.replace(
+                "\\put(   0.50,    0.01)", "\\put(   0.50,    0.02)", 1)), load_figure1())
+
+
+def test_cli_exits_2_naming_a_broken_picture_file(tmp_path, monkeypatch, capsys):
+    from reproduce import cli
+    from reproduce import figure1 as scene
+    from spectral_rod import figure_data
+
+    bad = tmp_path / "figure1_picture.tex"
+    bad.write_text(figure1_picture()[:5000], encoding="utf-8")
+    monkeypatch.setattr(scene, "figure1_picture", lambda: figure_data.figure1_picture(bad))
+    assert cli.main(["figure1", "--quiet", "--out", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err
+    assert str(bad) in err and "Traceback" not in err
+
+
+def test_rule_f1_text_shows_the_threshold_its_logic_uses():
+    assert f"{figure1.VISIBLE:.2e}" in figure1.RULE
+    numbers = {"unaccounted_or_unexplained": 0, "irregular": 1,
+               "max_abs_deviation": 0.99 * figure1.VISIBLE}
+    assert figure1.figure1_verdict(numbers) == "holds approximately"
+    assert figure1.figure1_verdict({**numbers, "max_abs_deviation": 1.01 * figure1.VISIBLE}) \
+        == "fails"

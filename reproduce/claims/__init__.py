@@ -9,7 +9,8 @@ Writes: claims.json / claims.md (via :mod:`reproduce.ledger`, keeping the other 
 claims_load.png (p* to 20 pi with the limit lines and the approach to the limit),
 claims_wavenumbers.png (beta_k L and beta_2 - beta_1 against Omega(L), the imaginary-beta_1
 window marked), claims_mode.png (the 3-D centreline of the buckling mode vs Euler's planar
-mode) and the report section (in ``report.md``).
+mode), coverage.md (the paper sentence by sentence: :mod:`.coverage`) and the report section
+(in ``report.md``).
 
 The package: :mod:`.evidence` computes every number (calls to the library),
 :mod:`.rows` declares each claim with its verdict rule and measures it, :mod:`.figures` draws.
@@ -22,11 +23,18 @@ from collections.abc import Callable
 from pathlib import Path
 
 from reproduce._runner import SceneOutput
+from reproduce.claims.coverage import coverage_markdown
 from reproduce.claims.evidence import DPS, StraightRodEvidence, compute_evidence, solver_agreement
 from reproduce.claims.figures import figure_load, figure_mode, figure_wavenumbers
 from reproduce.claims.rows import CLAIMS, evaluate_claim, evaluate_claims
-from reproduce.io import write_figure
-from reproduce.ledger import LEDGER_CHECK, Claim, update_ledger, verdict_counts
+from reproduce.io import read_json, write_figure, write_text
+from reproduce.ledger import (
+    COVERAGE_FILE,
+    LEDGER_CHECK,
+    Claim,
+    update_ledger,
+    verdict_counts,
+)
 from reproduce.tables import markdown_table
 
 NAME = "claims"
@@ -47,13 +55,15 @@ __all__ = ["CLAIMS", "NAME", "SUMMARY", "compute_evidence", "evaluate_claim", "e
 
 
 def report_section(claims: list[Claim], ev: StraightRodEvidence, seconds: float) -> str:
-    counts = ", ".join(f"{n} {v}" for v, n in verdict_counts(c.verdict for c in claims).items())
+    counts = ", ".join(f"{n} {v}" for v, n in verdict_counts(c.verdict for c in claims).items()
+                       if n)
     lines = ["## Claims: the straight rod, statement by statement", "",
              f"{len(claims)} claims of the paper's straight-rod section checked: {counts}. "
              f"Decisive numbers come from both solvers (collocation and the characteristic "
              f"equation in mpmath, {DPS} digits); they agree to {solver_agreement(ev):.1e} "
              f"(relative) over all {len(ev.spot) + len(ev.limit)} spot loads and "
-             f"{len(ev.maxima)} maxima. Full ledger: `claims.md`, `claims.json`.", "",
+             f"{len(ev.maxima)} maxima. Full ledger: `claims.md`, `claims.json`; the paper "
+             f"sentence by sentence: `{COVERAGE_FILE}`.", "",
              markdown_table(["id", "claim", "verdict", "key numbers"],
                             [[f"`{c.id}`", c.claim, f"**{c.verdict}**",
                               c.numbers.get("headline", "")] for c in claims]),
@@ -69,6 +79,8 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
     ev = compute_evidence(progress)
     claims = evaluate_claims(ev)
     files = update_ledger(out, NAME, claims)
+    known = {str(r["id"]) for r in read_json(out / "claims.json", list)}
+    files.append(write_text(out / COVERAGE_FILE, coverage_markdown(known)))
     for name, maker in (("claims_load.png", figure_load),
                         ("claims_wavenumbers.png", figure_wavenumbers),
                         ("claims_mode.png", figure_mode)):

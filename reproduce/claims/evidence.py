@@ -31,6 +31,7 @@ from spectral_rod import (
     inst1_variant_table,
     large_twist_expansion,
     large_twist_limit,
+    load_figure1,
     non_planarity,
     settling_point,
 )
@@ -52,6 +53,11 @@ SPOT_TWISTS = (0.5, 3.0, 5.0, 9.0, 20.0, 40.0, 60.0)
 MODE_CASES = ((5.0, 1.5), (12.0, 1.5), (5.0, 10.0))
 #: Twists (nu = DETAIL_NU, away from crossings) for the decay of the mode's non-planarity.
 PLANARITY_TWISTS = (12.0, 24.0, 48.0)
+#: The "for all Omega" claims are judged over the scene's whole twist range (0, TWIST_MAX]:
+#: log-spaced from PLANARITY_RANGE_MIN (the small-twist end, where the non-planarity grows
+#: like Omega) to TWIST_MAX, for every nu.
+PLANARITY_RANGE_MIN = 1e-2
+PLANARITY_RANGE_POINTS = 48
 CURVE_TOL = 1e-10   # dense curves (figures, shape checks)
 TOL = 1e-12         # decisive collocation numbers
 DPS = 30
@@ -101,6 +107,14 @@ class StraightRodEvidence:
     windows: list[dict[str, float]]
     modes: list[dict[str, object]]
     planarity_decay: list[dict[str, float]]
+    #: collocation non-planarity of the critical mode over the twist range, per nu
+    planarity_range: dict[float, dict[str, NDArray[np.float64]]] = field(default_factory=dict)
+    #: the characteristic polynomial of inst1 in beta (sympy) and whether it is even in beta
+    even_order: dict[str, object] = field(default_factory=dict)
+    #: the characteristic determinant at the critical load and just below it (uniqueness)
+    uniqueness: list[dict[str, float]] = field(default_factory=list)
+    #: the range of p* over Figure 1's digitised points (the printed definition of p*)
+    figure1_range: dict[str, float] = field(default_factory=dict)
     ritz: dict[str, list[float]] = field(default_factory=dict)
     derivation: dict[str, object] = field(default_factory=dict)
     timings: dict[str, float] = field(default_factory=dict)
@@ -220,10 +234,14 @@ def compute_evidence(progress: Callable[[str], None] = lambda _m: None) -> Strai
                      "shape_mismatch": float(np.max(np.abs(
                          euler.x1 / e_scale - np.sin(np.pi * euler.s))))})
     planarity_decay = []
-    for om in PLANARITY_TWISTS:  # mpmath only (the collocation mode is checked at MODE_CASES)
+    for om in PLANARITY_TWISTS:  # both solvers (the collocation one also spans the range below)
         root = characteristic_critical_load(om, DETAIL_NU, dps=DPS)
         cm = characteristic_mode(root, om, DETAIL_NU, points=121, dps=20)
-        planarity_decay.append({"twist": om, "planarity_mp": non_planarity(cm.x1, cm.x2)})
+        col = buckling_mode(om, DETAIL_NU, tol=TOL, points=121)
+        planarity_decay.append({"twist": om, "planarity_mp": non_planarity(cm.x1, cm.x2),
+                                "planarity_coll": non_planarity(col.x1, col.x2)})
+    planarity_range = {nu: planarity_over_range(nu) for nu in NUS}
+    uniqueness = [uniqueness_row(om, nu) for om, nu in ((0.0, DETAIL_NU), *MODE_CASES)]
     timings["spot checks, limit, windows, modes"] = time.perf_counter() - t2
     progress(f"spot checks, large-twist loads, windows and modes in "
              f"{timings['spot checks, limit, windows, modes']:.1f} s")
@@ -238,7 +256,9 @@ def compute_evidence(progress: Callable[[str], None] = lambda _m: None) -> Strai
     return StraightRodEvidence(grid=grid, p=p, family=fam, maxima=maxima, spot=spot,
                                zero_twist=zero, isotropic=isotropic, limit=limit,
                                windows=windows, modes=modes,
-                               planarity_decay=planarity_decay, ritz=ritz,
+                               planarity_decay=planarity_decay,
+                               planarity_range=planarity_range, even_order=even_order(),
+                               uniqueness=uniqueness, figure1_range=figure1_range(), ritz=ritz,
                                derivation=derivation, timings=timings)
 
 
@@ -253,6 +273,53 @@ def ritz_values(spot: list[dict[str, float]], limit: list[dict[str, float]],
         tw, nv, ref = (np.array(v) for v in zip(*pts, strict=True))
         out[key] = list(np.abs(critical_load(tw, nv, tol=TOL, method="ritz") / ref - 1))
     return out
+
+
+def planarity_over_range(nu: float) -> dict[str, NDArray[np.float64]]:
+    """Non-planarity of the collocation buckling mode at PLANARITY_RANGE_POINTS twists
+    log-spaced over [PLANARITY_RANGE_MIN, TWIST_MAX]."""
+    twists = np.geomspace(PLANARITY_RANGE_MIN, TWIST_MAX, PLANARITY_RANGE_POINTS)
+    values = []
+    for om in twists:
+        m = buckling_mode(float(om), nu, tol=CURVE_TOL, points=121)
+        values.append(non_planarity(m.x1, m.x2))
+    return {"twist": twists, "non_planarity": np.array(values)}
+
+
+def uniqueness_row(twist: float, nu: float) -> dict[str, float]:
+    """|D| of the critical family's characteristic determinant at the mpmath critical load and
+    at 99 % of it: D = 0 means a non-trivial solution beside the trivial one (same boundary
+    conditions), i.e. the boundary-value problem has more than one solution."""
+    root = characteristic_critical_load(twist, nu, dps=DPS)
+    p = float(root.p_star)
+    at = abs(characteristic_determinant(root.family, p, twist, nu, DPS))
+    below = abs(characteristic_determinant(root.family, 0.99 * p, twist, nu, DPS))
+    return {"twist": twist, "nu": nu, "p_star": p, "det_at_critical": float(at),
+            "det_below_critical": float(below)}
+
+
+def even_order() -> dict[str, object]:
+    """sympy: substitute omega_k = c_k exp(i beta s) into Eq. inst1 (A2 = nu A1, P = lambda
+    A1, omega30 = w) and expand the 2 x 2 determinant; the paper says each omega_k obeys a
+    fourth-order equation with even derivatives only, i.e. the polynomial is even in beta."""
+    import sympy as sp
+
+    beta, lam, nu, w = sp.symbols("beta lambda nu omega", real=True)
+    i = sp.I
+    # rows: inst1 line 1 (/A1) and line 2 (/A1); columns: c1, c2
+    m = sp.Matrix([[-beta**2 + lam - w**2, -2 * nu * w * i * beta],
+                   [2 * w * i * beta, nu * (-beta**2) + lam - nu * w**2]])
+    poly = sp.Poly(sp.expand(m.det()), beta)
+    degrees = [mon[0] for mon in poly.monoms()]
+    return {"polynomial": str(poly.as_expr()), "degree": int(poly.degree()),
+            "even": all(d % 2 == 0 for d in degrees),
+            "odd_terms": int(sum(d % 2 for d in degrees))}
+
+
+def figure1_range() -> dict[str, float]:
+    """Smallest and largest p* among Figure 1's digitised points (the packaged CSV)."""
+    p = load_figure1()["p_star"].to_numpy()
+    return {"p_min": float(p.min()), "p_max": float(p.max()), "points": float(p.size)}
 
 
 def run_derivations() -> dict[str, object]:

@@ -23,6 +23,10 @@ COLORS = {1.1: "tab:blue", 1.3: "tab:purple", 1.5: "tab:green", 2.0: "tab:orange
           5.0: "tab:red", 10.0: "tab:brown"}
 
 
+#: The x label of every panel drawn against the twist.
+TWIST_LABEL = "total twist angle Ω(L)"
+
+
 def _pi_ticks(ax, top: int, every: int) -> None:
     ticks = np.arange(0, top + 1, every)
     ax.set_xticks(ticks * np.pi)
@@ -52,7 +56,10 @@ def figure_load(ev: StraightRodEvidence):
     ax.set_ylabel("p* = P_cr / (π²A₁/L²)")
     ax.set_title("Critical load to Ω(L) = 20π: corners near nπ (n ≥ 2) and the limit 2ν/(1+ν)",
                  fontsize=10)
-    ax.legend(loc="lower right", fontsize=7.5, ncol=2, frameon=False)
+    # in the empty band between the nu = 2 and nu = 5 limits, right of the first maxima: the
+    # legend covers no curve there
+    ax.legend(loc="center right", bbox_to_anchor=(0.99, 0.70), fontsize=7.5, ncol=2,
+              frameon=False)
     # approach to the limit
     om = ev.grid[ev.grid >= 3.0]
     for nu in CURVE_NUS:
@@ -79,8 +86,8 @@ def figure_load(ev: StraightRodEvidence):
 
 
 def figure_wavenumbers(ev: StraightRodEvidence):
-    fig, axes = plt.subplots(3, 1, figsize=(8.0, 10.0),
-                             gridspec_kw={"height_ratios": [1, 1, 1], "hspace": 0.38})
+    fig, axes = plt.subplots(3, 1, figsize=(8.0, 10.5),
+                             gridspec_kw={"height_ratios": [1, 1, 1], "hspace": 0.45})
     ax, ax2, ax3 = axes
     nu = DETAIL_NU
     om = np.linspace(0.0, 3 * np.pi, 361)
@@ -97,6 +104,7 @@ def figure_wavenumbers(ev: StraightRodEvidence):
     ax.plot(om, np.maximum(om - np.pi, 0), "k:", lw=0.9)
     ax.set_xlim(0, 3 * np.pi)
     _pi_ticks(ax, 3, 1)
+    ax.set_xlabel(TWIST_LABEL)
     ax.set_ylabel("wavenumber × L")
     ax.set_title(f"Critical wavenumbers along p*(Ω), ν = {nu}", fontsize=10)
     ax.legend(fontsize=7.5, frameon=False, loc="upper left")
@@ -118,6 +126,7 @@ def figure_wavenumbers(ev: StraightRodEvidence):
     ax2.set_xlim(0, 4 * np.pi)
     ax2.set_ylim(0, 7)
     _pi_ticks(ax2, 4, 1)
+    ax2.set_xlabel(TWIST_LABEL)
     ax2.set_ylabel("Re(β₂ − β₁) L")
     ax2.set_title("β₂ − β₁ (Re β₁ = 0 where β₁ is imaginary)", fontsize=10)
     ax2.legend(fontsize=7, frameon=False, loc="center right", ncol=1)
@@ -137,10 +146,10 @@ def figure_wavenumbers(ev: StraightRodEvidence):
     ax3.plot([], [], "kv", ms=3.5, label="p* maxima, where 2π − (β₂ − β₁) = 0 (drawn at 1e-12)")
     ax3.set_xlim(4.0, TWIST_MAX)
     _pi_ticks(ax3, 20, 2)
-    ax3.set_xlabel("total twist angle Ω(L)")
+    ax3.set_xlabel(TWIST_LABEL)
     ax3.set_ylabel("|2π − (β₂ − β₁)L|")
     ax3.set_title("β₂ − β₁ → 2π from below; exactly 2π at every p* maximum", fontsize=10)
-    ax3.set_ylim(3e-13, 3)
+    ax3.set_ylim(3e-13, 1e2)  # headroom for the legend above the curves
     ax3.legend(fontsize=7, frameon=False, loc="upper right", ncol=2)
     fig.subplots_adjust(top=0.96, bottom=0.05)
     return fig

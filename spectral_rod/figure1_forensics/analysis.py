@@ -391,6 +391,10 @@ def analyse_figure1(points: pd.DataFrame, lines: pd.DataFrame | None = None, *,
     p* at the points (default: ``p_star_fn``); p_star_fn(twist, nu): the converged p* anywhere
     (default ``critical_load(..., tol=P_STAR_TOL)``), used at missing grid points and shifted
     twists.
+
+    Raises TypeError if `points` is not such a DataFrame, ValueError naming the column if one
+    of its numeric columns holds NaN, inf or a non-number (e.g. a NaN ``p_star``), and
+    ValueError if `p_true` is not one finite value per point.
     """
     need = {"curve", "nu", "picture_x", "picture_y", "twist_angle", "p_star"}
     if not isinstance(points, pd.DataFrame) or not need <= set(points.columns):
@@ -398,6 +402,13 @@ def analyse_figure1(points: pd.DataFrame, lines: pd.DataFrame | None = None, *,
                         f"got {type(points).__name__}")
     if points.empty:
         raise ValueError("points: no digitised points to analyse (every model is fitted to them)")
+    for col in sorted(need - {"curve"}):
+        values = pd.to_numeric(points[col], errors="coerce").to_numpy(dtype=float)
+        bad = ~np.isfinite(values)
+        if bad.any():
+            raise ValueError(f"points[{col!r}] must be finite numbers (the digitised points of "
+                             f"load_figure1()); row {int(np.argmax(bad))} holds "
+                             f"{points[col].iloc[int(np.argmax(bad))]!r}")
     if lines is not None and not isinstance(lines, pd.DataFrame):
         raise TypeError(f"lines must be None or picture_lines(...), got {type(lines).__name__}")
     if p_true is not None:
