@@ -84,6 +84,7 @@ html_title = f"spectral_rod {release}"
 html_static_path = ["_static"]
 html_theme_options = {
     "navigation_with_keys": False,
+    "header_links_before_dropdown": 5,
     "show_toc_level": 2,
     "secondary_sidebar_items": ["page-toc"],
     "footer_start": ["copyright"],
@@ -185,11 +186,61 @@ def _field_tables_as_literal(lines: list[str]) -> list[str]:
     return out
 
 
+#: numpydoc sections whose entries are "name : type" lines with indented descriptions
+_ENTRY_SECTIONS = ("Parameters", "Other Parameters", "Attributes")
+_ENTRY = re.compile(r"^(\s*)(\*{0,2}\w+(?:, \*{0,2}\w+)*)(?: : (.*))?$")
+#: a "type" longer than this many words (or ending in a full stop) is a description written on
+#: the name's line
+_TYPE_WORDS = 5
+
+
+def _section_headers(lines: list[str]) -> list[int]:
+    return [k for k in range(len(lines) - 1)
+            if lines[k].strip() and set(lines[k + 1].strip()) == {"-"}
+            and len(lines[k + 1].strip()) == len(lines[k].strip())]
+
+
+def _numpydoc_entries(lines: list[str]) -> list[str]:
+    """In a Parameters-like section: a description written on the name's line ("nu : I2/I1 in
+    [1, 1e4] ...") moves to the next line, and prose that follows the entries at their
+    indentation (which numpydoc would read as more entries) opens a Notes section."""
+    headers = _section_headers(lines)
+    titles = {lines[k].strip() for k in headers}
+    out = list(lines)
+    for k in reversed(headers):
+        if out[k].strip() not in _ENTRY_SECTIONS:
+            continue
+        base = len(out[k]) - len(out[k].lstrip())
+        end = next((h for h in headers if h > k), len(out))
+        j = k + 2
+        while j < end:
+            line = out[j]
+            stripped = line.strip()
+            if not stripped or len(line) - len(line.lstrip()) != base:
+                j += 1
+                continue
+            entry = _ENTRY.match(line)
+            if entry is None:  # prose at the entries' indentation: the entries have ended
+                if "Notes" not in titles:
+                    out[j:j] = [" " * base + "Notes", " " * base + "-----"]
+                    titles.add("Notes")
+                break
+            kind = entry.group(3)
+            if kind is not None and (len(kind.split()) > _TYPE_WORDS or kind.endswith(".")):
+                out[j:j + 1] = [" " * base + entry.group(2), " " * (base + 4) + kind]
+                end += 1
+                j += 1
+            j += 1
+    return out
+
+
 def plain_text_docstring(app: Any, what: str, name: str, obj: Any, options: Any,
                          lines: list[str]) -> None:
-    """autodoc-process-docstring: escape plain-text notation outside literals (see above)."""
+    """autodoc-process-docstring, before numpydoc: read the library's plain-text docstrings
+    as numpydoc and reST would (see above)."""
     if not name.startswith("spectral_rod"):
         return
+    lines[:] = _numpydoc_entries(list(lines))
     result: list[str] = []
     literal_indent: int | None = None
     in_doctest = False
@@ -212,4 +263,5 @@ def plain_text_docstring(app: Any, what: str, name: str, obj: Any, options: Any,
 
 
 def setup(app: Any) -> None:
-    app.connect("autodoc-process-docstring", plain_text_docstring)
+    # numpydoc's own handler runs at the default priority 500; this one must see the raw text
+    app.connect("autodoc-process-docstring", plain_text_docstring, priority=400)

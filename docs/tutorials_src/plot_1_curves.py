@@ -13,26 +13,26 @@ import numpy as np
 import spectral_rod as sr
 
 twist = np.linspace(0.0, 20.0, 801)
-fig, ax = plt.subplots(figsize=(7, 4.2), layout="constrained")
-for nu in (1.1, 1.3, 1.5, 2.0, 4.0):
-    p_star = sr.critical_load(twist, nu)
-    (line,) = ax.plot(twist, p_star, label=f"ν = {nu}")
-    # the large-twist limit, the harmonic mean of the two bending stiffnesses
-    ax.axhline(sr.large_twist_limit(nu), color=line.get_color(), lw=0.8, ls=":")
+curves = {nu: sr.critical_load(twist, nu) for nu in (1.1, 1.3, 1.5, 2.0, 4.0)}
 
 # %%
 # ``full_output=True`` says how each value was obtained: the method, the Chebyshev degree,
-# the error estimate and the mode family (symmetric or antisymmetric about mid-span). The
-# maxima near 2π, 3π, ... are the corners where the two families cross.
+# the error estimate and the mode family (symmetric or antisymmetric about mid-span).
 result = sr.critical_load(np.array([1.0, 2 * np.pi, 60.0]), 1.5, full_output=True)
-print(result.method, result.n, result.family, result.converged, sep="\n")
+print(result.method, result.n, result.error_estimate, result.family, result.converged, sep="\n")
 
+# %%
+# The curves rise from the Euler load p* = 1 and approach the limit 2ν/(1+ν) (dotted), the
+# harmonic mean of the two bending stiffnesses. The maxima near 2π, 3π, ... (grey) are corners
+# where the two mode families cross.
+fig, ax = plt.subplots(figsize=(7, 4.4), layout="constrained")
 for k in (2, 3, 4, 5, 6):
     ax.axvline(k * np.pi, color="0.85", lw=0.6, zorder=0)
+for nu, p_star in curves.items():
+    (line,) = ax.plot(twist, p_star, label=f"ν = {nu}")
+    ax.axhline(sr.large_twist_limit(nu), color=line.get_color(), lw=0.8, ls=":")
 ax.set_xlabel("total twist angle Ω(L) [rad]")
 ax.set_ylabel("p* = P_cr / (π² A₁ / L²)")
 ax.set_xlim(0, 20)
-ax.legend(ncol=5, loc="upper center", bbox_to_anchor=(0.5, 1.13), frameon=False)
-ax.set_title("dotted: the limit 2ν/(1+ν); grey: multiples of π", fontsize=9, loc="right",
-             pad=24)
+ax.legend(ncol=5, loc="lower center", bbox_to_anchor=(0.5, 1.0), frameon=False)
 plt.show()

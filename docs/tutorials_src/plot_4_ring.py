@@ -15,28 +15,30 @@ import numpy as np
 
 import spectral_rod as sr
 
-nu = 1.5
 twists = np.arange(0, 9)
 print("load readings:", sr.RING_LOADS)
 
-fig, ax = plt.subplots(figsize=(7, 4.2), layout="constrained")
-for load in sr.RING_LOADS:
-    q = [sr.ring_critical_load(int(N), nu, load=load) for N in twists]
-    ax.plot(twists, q, "o-", label=f"converged, load = {load!r}")
-    print(f"{load:>12}: q_cr(N = 0..{twists[-1]}) =", np.round(q, 4))
-
-crit2 = [sr.ring_formula_load(int(N), nu) for N in twists]
-ax.plot(twists, crit2, "k--", label="Eq. crit2 (one-mode estimate)")
-ax.axhline(0.0, color="0.6", lw=0.8)
-ax.set_xlabel("N (turns of the cross-section, Ω = N s/R)")
-ax.set_ylabel("q_cr R³ / (E₁ I₁)")
-ax.set_title(f"ν = {nu}, e = E₂/E₁ = 1", fontsize=9, loc="right")
-ax.legend()
+fig, axes = plt.subplots(1, 2, figsize=(10, 4.2), layout="constrained", sharey=True)
+markers = dict(zip(sr.RING_LOADS, "osD^v", strict=False))
+for ax, nu in zip(axes, (1.5, 4.0), strict=True):
+    for k, load in enumerate(sr.RING_LOADS):
+        q = [sr.ring_critical_load(int(N), nu, load=load) for N in twists]
+        ax.plot(twists, q, marker=markers.get(load, "o"), ms=7 - 2 * k, ls="-" if k == 0 else "--",
+                label=f"converged, load = {load!r}")
+        print(f"nu = {nu}, {load:>12}: q_cr(N = 0..{twists[-1]}) =", np.round(q, 4))
+    crit2 = [sr.ring_formula_load(int(N), nu) for N in twists]
+    ax.plot(twists, crit2, "k:", label="Eq. crit2 (one-mode estimate)")
+    ax.axhline(0.0, color="0.6", lw=0.8)
+    ax.set_xlabel("N (turns of the cross-section, Ω = N s/R)")
+    ax.set_title(f"ν = {nu}, e = E₂/E₁ = 1", fontsize=10)
+    ax.set_ylim(-4, 5)
+axes[0].set_ylabel("q_cr R³ / (E₁ I₁)")
+axes[1].legend(loc="lower left")
 plt.show()
 
 # %%
 # :func:`spectral_rod.ring_buckling` returns the mode as well: its kind (in-plane,
 # out-of-plane or coupled) and the convergence record of the Fourier truncation.
 for load in sr.RING_LOADS:
-    b = sr.ring_buckling(2, nu, load=load)
+    b = sr.ring_buckling(2, 1.5, load=load)
     print(f"{load:>12}: q = {b.load:.6f}, {b.kind}, converged={b.converged}")
