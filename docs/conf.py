@@ -84,13 +84,15 @@ html_title = f"spectral_rod {release}"
 html_static_path = ["_static"]
 html_theme_options = {
     "navigation_with_keys": False,
-    "header_links_before_dropdown": 5,
+    "header_links_before_dropdown": 4,
     "show_toc_level": 2,
     "secondary_sidebar_items": ["page-toc"],
     "footer_start": ["copyright"],
     "footer_end": ["sphinx-version"],
 }
-html_sidebars = {"index": [], "changelog": [], "citing": []}
+#: pages without sub-pages have no section navigation to show
+html_sidebars = {page: [] for page in ("index", "getting_started", "how_it_works", "pipeline",
+                                       "changelog", "citing")}
 
 
 # --- generated inputs --------------------------------------------------------------------------
@@ -234,12 +236,41 @@ def _numpydoc_entries(lines: list[str]) -> list[str]:
     return out
 
 
+def data_comment(name: str) -> list[str]:
+    """The ``#:`` comment that documents the public constant `name` ("spectral_rod.X") where it
+    is defined (the module in ``spectral_rod._EXPORTS``, or a submodule of that package)."""
+    import importlib
+    import pkgutil
+
+    from sphinx.pycode import ModuleAnalyzer
+
+    short = name.rpartition(".")[2]
+    target = spectral_rod._EXPORTS.get(short)
+    if target is None:
+        return []
+    module, _, attr = target.partition(":")
+    candidates = [f"spectral_rod.{module}"]
+    package = importlib.import_module(candidates[0])
+    if hasattr(package, "__path__"):
+        candidates += [m.name for m in pkgutil.iter_modules(package.__path__,
+                                                             f"{candidates[0]}.")]
+    for candidate in candidates:
+        docs = ModuleAnalyzer.for_module(candidate).find_attr_docs()
+        comment = docs.get(("", attr or short))
+        if comment:
+            return list(comment)
+    return []
+
+
 def plain_text_docstring(app: Any, what: str, name: str, obj: Any, options: Any,
                          lines: list[str]) -> None:
     """autodoc-process-docstring, before numpydoc: read the library's plain-text docstrings
-    as numpydoc and reST would (see above)."""
+    as numpydoc and reST would (see above); a public constant gets the comment it is
+    documented with where it is defined, not its type's docstring."""
     if not name.startswith("spectral_rod"):
         return
+    if what == "data":
+        lines[:] = data_comment(name)
     lines[:] = _numpydoc_entries(list(lines))
     result: list[str] = []
     literal_indent: int | None = None
