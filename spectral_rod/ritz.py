@@ -423,6 +423,12 @@ class RitzLoad:
     used (of the critical family); error_estimate: relative, see the module docstring (inf:
     no estimate, n on the plateau); family: the family of p_star; converged: error_estimate <=
     tol; tol. Arrays shaped like the broadcast input; Python scalars for scalar input.
+
+    Examples
+    --------
+    >>> r = ritz_critical_load([0.0, 5.0], 1.5, full_output=True)
+    >>> r.family.tolist(), r.converged.tolist()
+    (['symmetric', 'symmetric'], [True, True])
     """
 
     p_star: NDArray[np.float64] | float
@@ -458,7 +464,26 @@ def ritz_critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None =
     load. Each value is an upper bound (up to rounding) that decreases monotonically with n.
     Scalars give a float (a :class:`RitzLoad` of Python scalars with ``full_output``), arrays
     broadcast. If the error estimate misses ``tol`` a ConvergenceWarning is issued and the
-    point is flagged ``converged=False``. Example: ``ritz_critical_load(0.0, 3.0)`` is 1.0.
+    point is flagged ``converged=False``.
+
+    Returns
+    -------
+    float, ndarray or RitzLoad
+        p* (or the family's lowest load) as a float for scalar input, an ndarray of the
+        broadcast shape for arrays; with ``full_output=True`` a :class:`RitzLoad` (degree,
+        error estimate, family, converged flag).
+
+    Examples
+    --------
+    The untwisted rod buckles at the Euler load, and at a twist the energy's upper bound meets
+    the collocation solution of Eq. ``inst1`` (a formulation it shares nothing with):
+
+    >>> round(ritz_critical_load(0.0, 3.0), 12)
+    1.0
+    >>> import spectral_rod as sr
+    >>> r = ritz_critical_load(5.0, 1.5, full_output=True)
+    >>> r.family, r.converged, abs(r.p_star / sr.critical_load(5.0, 1.5) - 1) < 1e-13
+    ('symmetric', True, True)
     """
     twist = check_twist(twist_angle, max_abs=RITZ_MAX_TWIST)
     nu_arr = check_nu(nu)
