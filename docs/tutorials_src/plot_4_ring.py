@@ -33,7 +33,8 @@ for ax, nu in zip(axes, (1.5, 4.0), strict=True):
     ax.set_title(f"ν = {nu}, e = E₂/E₁ = 1", fontsize=10)
     ax.set_ylim(-4, 5)
 axes[0].set_ylabel("q_cr R³ / (E₁ I₁)")
-axes[1].legend(loc="lower left")
+handles, labels = axes[0].get_legend_handles_labels()
+fig.legend(handles, labels, loc="outside lower center", ncol=3)  # below the panels: no data hidden
 plt.show()
 
 # %%
