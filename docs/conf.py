@@ -81,7 +81,6 @@ sphinx_gallery_conf = {
 # --- HTML ------------------------------------------------------------------------------------
 html_theme = "pydata_sphinx_theme"
 html_title = f"spectral_rod {release}"
-html_static_path = ["_static"]
 html_theme_options = {
     "navigation_with_keys": False,
     "header_links_before_dropdown": 4,
