@@ -81,11 +81,15 @@ sphinx_gallery_conf = {
 # --- HTML ------------------------------------------------------------------------------------
 html_theme = "pydata_sphinx_theme"
 html_title = f"spectral_rod {release}"
+html_static_path = ["_static"]
+html_css_files = ["spectral_rod.css"]
 html_theme_options = {
     "navigation_with_keys": False,
     "header_links_before_dropdown": 4,
     "show_toc_level": 2,
-    "secondary_sidebar_items": ["page-toc"],
+    # an API page documents one name: its own table of contents would only repeat it
+    "secondary_sidebar_items": {"*": ["page-toc"], "tutorials/*": ["page-toc"],
+                                "_generated/findings/*": ["page-toc"], "generated/*": []},
     "footer_start": ["copyright"],
     "footer_end": ["sphinx-version"],
 }

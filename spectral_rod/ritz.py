@@ -457,14 +457,26 @@ def ritz_critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None =
                        full_output: bool = False):
     """Rayleigh–Ritz upper bound of p* = P_cr/(pi^2 A1/L^2) from the lab-frame energy.
 
-    twist_angle: Omega(L) = omega30 L in radians, |Omega(L)| <= RITZ_MAX_TWIST = 1000 (p* is
-    even in it). nu = I2/I1 in [1, 1e4]. n: degree of the curvature polynomials (even,
-    4..1280); None chooses it from ``tol`` (1e-14..1e-2, relative). family: None for p* (the
-    smaller of the two families), or "symmetric"/"antisymmetric" for that family's lowest
-    load. Each value is an upper bound (up to rounding) that decreases monotonically with n.
-    Scalars give a float (a :class:`RitzLoad` of Python scalars with ``full_output``), arrays
-    broadcast. If the error estimate misses ``tol`` a ConvergenceWarning is issued and the
-    point is flagged ``converged=False``.
+    Each value is an upper bound (up to rounding) that decreases monotonically with n. If the
+    error estimate misses ``tol`` a ConvergenceWarning is issued and the point is flagged
+    ``converged=False``.
+
+    Parameters
+    ----------
+    twist_angle : float or array_like
+        Omega(L) = omega30 L in radians, |Omega(L)| <= RITZ_MAX_TWIST = 1000 (p* is even in
+        it).
+    nu : float or array_like
+        I2/I1 in [1, 1e4].
+    n : int, optional
+        Degree of the curvature polynomials (even, 4..1280); None chooses it from ``tol``.
+    tol : float
+        Requested relative accuracy, 1e-14..1e-2.
+    family : str, optional
+        None for p* (the smaller of the two families), or "symmetric"/"antisymmetric" for that
+        family's lowest load.
+    full_output : bool
+        Return a :class:`RitzLoad` instead of the load alone.
 
     Returns
     -------
