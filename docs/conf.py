@@ -43,7 +43,9 @@ extensions = [
 ]
 
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
-exclude_patterns = ["_build", "tutorials_src", "sg_execution_times.rst"]
+#: the generated pages that other pages include (they are not pages of their own)
+exclude_patterns = ["_build", "tutorials_src", "sg_execution_times.rst",
+                    "_generated/changelog.md", "_generated/findings/figures.md"]
 root_doc = "index"
 
 # --- API reference ---------------------------------------------------------------------------
@@ -131,6 +133,34 @@ def copy_generated() -> None:
                               "checkout.\n", encoding="utf-8")
     for png in sorted(FIGURES.glob("*.png")):
         shutil.copy2(png, GENERATED / "findings" / png.name)
+    (GENERATED / "findings" / "figures.md").write_text(figures_page(), encoding="utf-8")
+
+
+#: Captions of the pipeline's figures; a figure not named here is shown under its file name.
+CAPTIONS = {
+    "claims_load.png": "p* to Ω(L) = 20π with the limit 2ν/(1+ν), and the approach to it",
+    "claims_wavenumbers.png": "β₁L, β₂L and β₂ − β₁ against Ω(L), with the imaginary-β₁ window",
+    "claims_mode.png": "The 3-D buckling centreline against the planar Euler mode",
+    "ring.png": "Eq. crit2 against the converged ring",
+    "convergence_resolution.png": "Error against resolution",
+    "convergence_time.png": "Error against wall time",
+    "convergence_coefficients.png": "The mode's Chebyshev coefficients at the automatic degree",
+    "extremes.png": "Accuracy at the edges of the (Ω(L), ν) plane",
+}
+#: Figures findings.md shows beside its own text, left out of the generated list.
+SHOWN_IN_TEXT = ("figure1.png", "figure1_forensics.png")
+
+
+def figures_page() -> str:
+    """A Markdown section per figure the pipeline wrote (other than those in SHOWN_IN_TEXT),
+    so that the findings page shows whatever ``reproduce all`` produced."""
+    parts = []
+    for png in sorted(FIGURES.glob("*.png")):
+        if png.name in SHOWN_IN_TEXT:
+            continue
+        caption = CAPTIONS.get(png.name, png.name)
+        parts.append(f"### {caption}\n\n`{png.name}`\n\n![{caption}]({png.name})\n")
+    return "\n".join(parts) or "No other figures in `paper_figures/`.\n"
 
 
 def citation_text() -> str:
