@@ -109,6 +109,16 @@ def buckling_mode(twist_angle: float, nu: float, *, n: int | None = None, tol: f
     ``tol`` warns (:class:`spectral_rod.ConvergenceWarning`); a mode that comes out non-finite or
     zero raises :class:`spectral_rod.ConvergenceError` (no such case is known).
 
+    Returns
+    -------
+    BucklingMode
+        The grid ``s``, the curvatures ``omega1``, ``omega2`` (max |omega| = 1 on a fixed fine
+        grid), the centreline ``x1``, ``x2`` (zero at both hinges), p*, the method, resolution,
+        error estimate and converged flag of p*, the wavenumbers ``beta1``, ``beta2`` and the
+        mode family.
+
+    Examples
+    --------
     >>> m = buckling_mode(5.0, 1.5)
     >>> m.method, m.family, round(m.p_star, 6)
     ('collocation', 'symmetric', 1.164465)

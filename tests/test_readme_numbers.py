@@ -1,8 +1,9 @@
-"""The README's findings quote numbers from the generated outputs; each quoted number is
+"""The README's findings, and the manual's pages that carry them in full (``docs/findings.md``,
+``docs/how_it_works.md``), quote numbers from the generated outputs; each quoted number is
 re-derived here from the committed ``paper_figures/`` (what ``python -m reproduce check`` holds
-to the code), so a README that drifts from the outputs fails.
+to the code), so text that drifts from the outputs fails.
 
-Speed figures are not here: they are measurements of one machine and dated in the README.
+Speed figures are not here: they are measurements of one machine (``tests/bench/HISTORY.md``).
 """
 
 from __future__ import annotations
@@ -17,14 +18,18 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 OUT = ROOT / "paper_figures"
 README = ROOT / "README.md"
+#: the pages whose text the quoted numbers are searched in, read as one
+PAGES = (README, ROOT / "docs" / "findings.md", ROOT / "docs" / "how_it_works.md")
 
-pytestmark = pytest.mark.skipif(not (OUT / "claims.json").exists() or not README.exists(),
-                                reason="needs a source checkout with paper_figures/")
+pytestmark = pytest.mark.skipif(not (OUT / "claims.json").exists()
+                                or not all(p.exists() for p in PAGES),
+                                reason="needs a source checkout with paper_figures/ and docs/")
 
 
 @pytest.fixture(scope="module")
 def text() -> str:
-    return " ".join(README.read_text(encoding="utf-8").split())  # one line: no wrapping issues
+    # one line: no wrapping issues
+    return " ".join(" ".join(p.read_text(encoding="utf-8").split()) for p in PAGES)
 
 
 @pytest.fixture(scope="module")
