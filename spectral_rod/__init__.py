@@ -126,6 +126,8 @@ _EXPORTS = {
     "increasing_up_to": "measures", "settling_point": "measures", "observed_order": "measures",
     "ring_buckling": "ring_stability", "ring_critical_load": "ring_stability",
     "ring_roundoff_floor": "ring_stability:roundoff_floor",
+    "untwisted_critical_load": "ring_closed_forms",
+    "rigid_motion_load_work": "ring_loads",
 }
 
 __all__ = sorted(_EXPORTS)

@@ -40,7 +40,8 @@ Residuals, each evaluated from the nonlinear expressions
 * the six constraints.
 
 Load models ("hydrostatic": q e_z x R'(s) per unit length, R' = t0 + y'; "axis": magnitude q,
-horizontal, towards the ring's axis at the displaced point R0 + y) are forces only.
+horizontal, towards the ring's axis at the displaced point R0 + y; "centre": magnitude q,
+towards the ring's centre point, -q R/|R|; "dead": -q e_r(s), fixed) are forces only.
 
 With ``equations="kirchhoff"`` the Munder lines are replaced by the vector balances
 M' + t x F = 0 and F' + q = 0 with the full force F = -q R t0 + dF (three more unknown fields
@@ -371,9 +372,14 @@ def _external_force(prob: _Problem, q: float, R: NDArray, dR: NDArray, lam: NDAr
     g = prob.geo
     if prob.load == "hydrostatic":
         force = q * np.cross(g.e_z, dR)
-    else:  # "axis": horizontal, towards the axis of the ring, at the displaced point
+    elif prob.load == "axis":  # horizontal, towards the axis of the ring, at the displaced point
         rho = np.sqrt(R[..., 0] ** 2 + R[..., 1] ** 2)
         force = -q * np.stack([R[..., 0] / rho, R[..., 1] / rho, 0.0 * rho], axis=-1)
+    elif prob.load == "centre":  # towards the ring's centre point, at the displaced point
+        dist = np.sqrt(R[..., 0] ** 2 + R[..., 1] ** 2 + R[..., 2] ** 2)
+        force = -q * R / dist[..., None]
+    else:  # "dead": fixed direction -e_r(s) at the material point, whatever the displacement
+        force = -q * (g.e_r + 0.0 * R)
     R0 = g.e_r  # R = 1
     reaction = lam[:, None, :3] + np.cross(lam[:, None, 3:], R0)
     return force + reaction

@@ -29,7 +29,9 @@ the second variation of energy plus load potential is 1/2 (x.K x - q x.G x) with
           = int [Abar (k_r^2 + k_z^2) + Delta (cos 2Omega (k_r^2 - k_z^2) - 2 sin 2Omega k_r k_z)
                  + A3 k_phi^2] ds,    Abar = (A1 + A2)/2, Delta = (A2 - A1)/2,
     x.G x = int (theta_r^2 + theta_z^2) ds - int y_phi theta_z ds      ("hydrostatic"),
-    x.G x = int (theta_r^2 + theta_z^2) ds - int y_phi^2 ds            ("axis").
+    x.G x = int (theta_r^2 + theta_z^2) ds - int y_phi^2 ds            ("axis"),
+    x.G x = int (theta_r^2 + theta_z^2) ds - int (y_phi^2 + y_z^2) ds  ("centre"),
+    x.G x = int (theta_r^2 + theta_z^2) ds                             ("dead").
 
 The first term of G is the work of the hoop force F_t = -q R on the second-order part of the
 tangent, d_3 - t0 = theta x (theta x t0)/2 (|theta x t0|^2 = |y'|^2 = theta_r^2 + theta_z^2); the
@@ -43,9 +45,23 @@ second is the second-order load potential:
 * ``"axis"``: the paper's literal q = -q e_r evaluated at the displaced point: magnitude q, always
   horizontal, pointing to the ring's axis.  Potential V = q int rho ds with rho the distance from
   the axis; second-order part q/2 int y_phi^2 ds (4.5 A1/R^3 in plane, n = 2).
+* ``"centre"``: magnitude q, pointing to the ring's centre point (a central force), -q R/|R| at
+  the displaced point.  Potential V = q int |R| ds; |e_r + y| = 1 + y_r + (y_phi^2 + y_z^2)/2 +
+  O(y^3), so the second-order part is q/2 int (y_phi^2 + y_z^2) ds (in plane as "axis", 4.5;
+  out of plane 12 A2/(4 + A2/A3), n = 2).
+* ``"dead"``: a dead load of fixed direction, -q e_r(s) at the material point s whatever the
+  displacement.  Potential V = -int q.(R0 + y) ds is linear in y: only the hoop-force term
+  remains (4 A1/R^3 in plane, n = 2).
+
+All four equal -q e_r on the undeformed circle, so the base state (F_t = -q R, no moment) is the
+same; they differ only in how the force follows the displacement.  Closed forms of the untwisted
+ring for each: :mod:`spectral_rod.ring_closed_forms`; the rigid motions each load destabilises
+(what the ring's supports must restrain): :mod:`spectral_rod.ring_loads`.
 
 Rigid-body motions are removed by six explicit linear constraints on the displacement,
-int y ds = 0 and int R0 x y ds = 0 (a rigid tilt lowers the potential of both loads).  On that
+int y ds = 0 and int R0 x y ds = 0 (a rigid tilt lowers the potential of the "hydrostatic",
+"axis" and "dead" loads, a rigid spin about the axis that of the "dead" load:
+:func:`spectral_rod.ring_loads.rigid_motion_load_work`).  On that
 subspace K is positive definite (x.K x = 0 only for theta' = 0, i.e. a rigid motion), which is
 the energy argument: the stress-free ring cannot be unstable at q = 0.
 
@@ -85,7 +101,9 @@ from spectral_rod._validation import (
 from spectral_rod.errors import ConvergenceWarning, RingConvergenceError
 from spectral_rod.ring_formula import check_e_ratio, check_scalar_nu, check_twist_count
 
-RING_LOADS = ("hydrostatic", "axis")
+#: The readings of the paper's "uniform radial pressure" (module docstring): pressure on the
+#: projection (follower), a force toward the ring's axis, toward its centre point, a dead load.
+RING_LOADS = ("hydrostatic", "axis", "centre", "dead")
 #: Largest twist accepted by the numerical solver (cost grows like N).
 MAX_SOLVER_TWIST = 60
 #: Fields of the unknown vector, in order.
@@ -211,8 +229,11 @@ def assemble(N: int, nu: float, e_ratio: float, load: str, freqs: list[int],
     if load == "hydrostatic":
         cross = np.einsum("pi,pj->ij", Q["y_phi"], Q["theta_z"])
         G -= w * 0.5 * (cross + cross.T)
-    else:
+    elif load == "axis":
         G -= w * _gram(Q["y_phi"])
+    elif load == "centre":
+        G -= w * (_gram(Q["y_phi"]) + _gram(Q["y_z"]))
+    # "dead": the load potential is linear in y, so only the hoop-force term enters G
     return 0.5 * (K + K.T), 0.5 * (G + G.T), basis
 
 
