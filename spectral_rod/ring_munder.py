@@ -658,7 +658,7 @@ class MunderBuckling:
     max_frequency   final truncation M (frequencies 0..M per field)
     n_unknowns      size of the full linear system at M
     rel_change      |q(M) - q(previous M)| / q
-    converged       rel_change <= tol and ring_stability.roundoff_floor(e_ratio) <= tol
+    converged       rel_change <= tol and ring_stability.roundoff_floor(e_ratio, nu, N) <= tol
     history         [(M, q)] of the truncations tried
     max_imag        largest |Im q|/|q| of any finite eigenvalue at the final M
     """
@@ -715,7 +715,7 @@ def munder_buckling(N: object, nu: object, *, e_ratio: object = 1.0,
     check_choice(equations, "equations", EQUATIONS)
     raise_on_failure = check_bool(raise_on_failure, "raise_on_failure")
     if raise_on_failure:
-        check_reachable(tol, e)
+        check_reachable(tol, e, v, n_turns)
 
     def solve(M: int) -> tuple[tuple[BlockLoad, float], float]:
         bl, worst = block_loads(n_turns, v, e, ld, M, equations)
@@ -724,7 +724,7 @@ def munder_buckling(N: object, nu: object, *, e_ratio: object = 1.0,
 
     (best, worst), history, rel = refine(_truncations(n_turns), solve, tol)
     M = history[-1][0]
-    floor = roundoff_floor(e)  # successive truncations do not see it (ring_stability)
+    floor = roundoff_floor(e, v, n_turns)  # truncations do not see it (ring_stability)
     converged = bool(rel <= tol and floor <= tol)
     if not converged and raise_on_failure:
         raise RingConvergenceError(
@@ -761,7 +761,7 @@ ISOTROPIC_POISSON = 0.3
 #: e = E2/E1 of that material: A3 = E2 (I1 + I2) is G J of a circular section, so
 #: E2 = G = E1/(2 (1 + Poisson)).
 E_ISOTROPIC = 1.0 / (2.0 * (1.0 + ISOTROPIC_POISSON))
-#: The agreement cases (N, nu, e, load): N = 0..8, several nu and e, both loads.
+#: The agreement cases (N, nu, e, load): N = 0..8, several nu and e, every reading of the load.
 AGREEMENT_CASES: tuple[tuple[int, float, float, str], ...] = (
     (0, 1.0, 1.0, "hydrostatic"),
     (0, 4.0, E_ISOTROPIC, "axis"),
@@ -780,6 +780,12 @@ AGREEMENT_CASES: tuple[tuple[int, float, float, str], ...] = (
     (7, 2.0, E_ISOTROPIC, "hydrostatic"),
     (8, 4.0, 1.0, "hydrostatic"),
     (8, 1.3, E_ISOTROPIC, "axis"),
+    (0, 4.0, 1.0, "centre"),
+    (2, 2.0, 1.0, "centre"),
+    (3, 1.3, E_ISOTROPIC, "centre"),
+    (0, 2.0, E_ISOTROPIC, "dead"),
+    (2, 4.0, 1.0, "dead"),
+    (3, 1.5, E_ISOTROPIC, "dead"),
 )
 
 

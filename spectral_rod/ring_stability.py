@@ -406,7 +406,7 @@ class RingBuckling:
     max_frequency      Fourier truncation (frequencies 0..max_frequency of each field)
     n_modes            real Fourier coefficients per field (2 max_frequency + 1)
     rel_change         |q(max_frequency) - q(previous truncation)| / q, the convergence estimate
-    converged          rel_change <= tol and :func:`roundoff_floor` (e_ratio) <= tol
+    converged          rel_change <= tol and :func:`roundoff_floor` (e_ratio, nu, N) <= tol
     history            [(max_frequency, q)] of the truncations tried
     min_load_over_q    smallest 1/q over every family (>= 0: no eigenvalue at q <= 0)
     """
@@ -440,32 +440,49 @@ class RingBuckling:
 #: Round-off floor of a ring load, relative: ROUNDOFF eps max(e, 1/e) (empirical). An extreme
 #: torsional stiffness makes the pencils ill-conditioned in a way successive truncations do not
 #: see (their change stays ~1e-15): against the closed forms at nu = 1 (N = 0, 2, 5, both
-#: formulations, e = 1e-6..1e6; 2026-12-04) the error reached 2.0 eps max(e, 1/e) here and 2.5
+#: formulations, e = 1e-6..1e6) the error reached 2.0 eps max(e, 1/e) here and 2.5
 #: in :mod:`spectral_rod.ring_munder` (2.75e-10 and 5.7e-10 at e = 1e6, 4.3e-11 and 1.1e-10 at
 #: 1e-6), up to 7 eps at e = 1; a tol below the floor is not met.
 ROUNDOFF = 8.0
+#: A twisted ring (N >= 1) whose torsion is much stiffer than its bending also scatters its
+#: load between truncations by about COUPLED_ROUNDOFF eps c, c = A3/(2 A1) = e (1 + nu)/2 (the
+#: twist couples the torsion into the bending of every family). Measured by
+#: ``tests/test_ring_stability.py::test_stiff_torsion_corner_is_refused`` and the ring_buckling
+#: histories at tol 1e-8: the change between the last truncations is 0.9 eps c at N = 5 and 20,
+#: nu = 1e4, e = 1e6 (c = 5e9: ~1e-6, so tol 1e-8 ran 27-113 s before failing) and at N = 5,
+#: nu = 1, e = 1e6; 0.15 eps c at N = 5, nu = 1e4, e = 1 (converged at 1e-12). 0.5 lies between:
+#: it refuses the first and keeps the last reachable at the default tol.
+COUPLED_ROUNDOFF = 0.5
 
 
-def roundoff_floor(e_ratio: object) -> float:
-    """ROUNDOFF eps max(e, 1/e): the relative accuracy a ring load can reach at e = E2/E1
-    (both formulations; a ``tol`` below it is reported not converged).
+def roundoff_floor(e_ratio: object, nu: object = 1.0, N: object = 0) -> float:
+    """The relative accuracy a ring load can reach (both formulations; a ``tol`` below it is
+    reported not converged): ROUNDOFF eps max(e, 1/e), and for a twisted ring (N >= 1) at least
+    COUPLED_ROUNDOFF eps e (1 + nu)/2 (stiff torsion coupled by the twist).  The range of
+    ``tol`` a ring solve accepts is [roundoff_floor(e, nu, N), TOL_RANGE[1] = 1e-2].
 
-    >>> f"{roundoff_floor(1e6):.1e}"
-    '1.8e-09'
+    >>> f"{roundoff_floor(1e6):.1e}", f"{roundoff_floor(1e6, 1e4, 60):.1e}"
+    ('1.8e-09', '5.6e-07')
     """
     e = check_e_ratio(e_ratio)
-    return ROUNDOFF * float(np.finfo(float).eps) * max(e, 1.0 / e)
+    eps = float(np.finfo(float).eps)
+    floor = ROUNDOFF * eps * max(e, 1.0 / e)
+    if check_twist_count(N) >= 1:
+        floor = max(floor, COUPLED_ROUNDOFF * eps * e * (1.0 + check_scalar_nu(nu)) / 2.0)
+    return floor
 
 
-def check_reachable(tol: float, e_ratio: float) -> None:
+def check_reachable(tol: float, e_ratio: float, nu: float = 1.0, N: int = 0) -> None:
     """RingConvergenceError before any solve if ``tol`` is below :func:`roundoff_floor`: the
     refinement would end unconverged anyway, after its most expensive truncations (minutes for
-    the Munder form at N = 20, nu = 1e4, e = 1e-6)."""
-    floor = roundoff_floor(e_ratio)
+    the Munder form at N = 20, nu = 1e4, e = 1e-6; 27-113 s for N = 60, nu = 1e4, e = 1e6)."""
+    floor = roundoff_floor(e_ratio, nu, N)
     if tol < floor:
         raise RingConvergenceError(f"tol {tol:.1e} is below the round-off floor {floor:.1e} of "
-                                   f"a ring load at e_ratio={e_ratio!r} ({ROUNDOFF:g} eps "
-                                   f"max(e, 1/e)); ask for tol >= {floor:.1e}")
+                                   f"a ring load at e_ratio={e_ratio!r}, nu={nu!r}, N={N!r} "
+                                   f"({ROUNDOFF:g} eps max(e, 1/e), and for N >= 1 at least "
+                                   f"{COUPLED_ROUNDOFF:g} eps e (1 + nu)/2); ask for tol in "
+                                   f"[{floor:.1e}, {TOL_RANGE[1]:g}]")
 
 
 def _truncations(N: int, max_frequency: int | None) -> list[int]:
@@ -532,7 +549,7 @@ def ring_buckling(N: object, nu: object, *, e_ratio: object = 1.0, load: object 
     tol = check_real(tol, "tol", *TOL_RANGE)
     raise_on_failure = check_bool(raise_on_failure, "raise_on_failure")
     if raise_on_failure and max_frequency is None:
-        check_reachable(tol, e)
+        check_reachable(tol, e, v, n_turns)
 
     def solve(M: int) -> tuple[tuple[FamilySolution, int, float], float]:
         sols = solve_families(n_turns, v, e, ld, {
@@ -541,7 +558,7 @@ def ring_buckling(N: object, nu: object, *, e_ratio: object = 1.0, load: object 
         return (sols[k], k, min(sol.min_mu for sol in sols.values())), sols[k].load
 
     (sol, fam, min_mu), history, rel = refine(_truncations(n_turns, max_frequency), solve, tol)
-    floor = roundoff_floor(e)
+    floor = roundoff_floor(e, v, n_turns)
     converged = bool(rel <= tol and floor <= tol)
     if not converged and raise_on_failure and max_frequency is None:
         raise RingConvergenceError(
