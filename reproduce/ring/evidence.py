@@ -156,7 +156,7 @@ def table_rows(solve: Solve, nus: tuple[float, ...] = NUS, twists: tuple[int, ..
     """Formula and converged numerical q_cr R^3/(E1 I1) for every (e, nu, N) and load model."""
     rows = []
     for label, e in e_ratios.items():
-        progress(f"solving {len(nus) * len(twists)} rings for {label} (e = {e:.4f}), both loads")
+        progress(f"solving {len(nus) * len(twists)} rings for {label} (e = {e:.4f}), every reading")
         rows += [_table_row(solve, label, e, nu, N) for nu in nus for N in twists]
     return pd.DataFrame(rows)
 

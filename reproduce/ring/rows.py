@@ -158,20 +158,20 @@ CRIT2_ROW = ClaimSpec(
 
 def measure_crit2(ev: RingEvidence) -> Measured:
     d = crit2_deviation(ev)
-    h, a = d["hydrostatic"], d["axis"]
+    first = d[readings(ev)[0]]
     n = len(ev.table)
+    per = "; ".join(f"{ld}: max {v['max_rel_dev']:.3g} (N = {v['at_N']}, ν = {v['at_nu']:g}, "
+                    f"{v['at_e']}), median {v['median_rel_dev']:.2f}, at N = 0 up to "
+                    f"{v['max_rel_dev_N0']:.2f}" for ld, v in d.items())
+    lo, hi = first["positive_formula_rel_dev_range"]
     return Measured(
         numbers={ld: d[ld] for ld in readings(ev)},
-        evidence=f"max |crit2 − q|/q = {h['max_rel_dev']:.3g} (hydrostatic, at N = {h['at_N']}, "
-                 f"ν = {h['at_nu']:g}, {h['at_e']}), {a['max_rel_dev']:.3g} (axis); median "
-                 f"{h['median_rel_dev']:.2f} / {a['median_rel_dev']:.2f}; where crit2 > 0 "
-                 f"(crit2 − q)/q ranges over [{h['positive_formula_rel_dev_range'][0]:+.2f}, "
-                 f"{h['positive_formula_rel_dev_range'][1]:+.2f}] (hydrostatic); already at N = 0 "
-                 f"off by up to {h['max_rel_dev_N0']:.2f} / {a['max_rel_dev_N0']:.2f} (crit2(0) = "
-                 f"e(ν+2), e.g. {crit2(0, 4.0, 1.0):g} vs {q_at(ev, 4.0, 0):.4f} at ν = 4, "
-                 f"e = 1). crit2 ≤ 0 in {h['n_formula_nonpositive']} of {n} cases while the "
-                 f"numerical load is never below "
-                 f"{min(h['min_numerical'], a['min_numerical']):.4f}.")
+        evidence=f"|crit2 − q|/q per reading — {per}. Where crit2 > 0, (crit2 − q)/q spans "
+                 f"[{lo:+.2f}, {hi:+.2f}] ({readings(ev)[0]}); at N = 0 crit2 = e(ν+2), e.g. "
+                 f"{crit2(0, 4.0, 1.0):g} vs {q_at(ev, 4.0, 0):.4f} at ν = 4, e = 1 "
+                 f"(ring-crit2-galerkin). crit2 ≤ 0 in {first['n_formula_nonpositive']} of {n} "
+                 "cases while the numerical load is never below "
+                 f"{min(v['min_numerical'] for v in d.values()):.4f}.")
 
 
 CIRCULAR_LIMIT = ClaimSpec(
@@ -179,7 +179,7 @@ CIRCULAR_LIMIT = ClaimSpec(
     claim="For I₁ = I₂ the ring buckles at q_cr = 3E₁I₁/R³, and Eq. crit2 reduces to it.",
     test="crit2 at ν = 1 (= 3E₂I₁/R³, i.e. 3e) against the text's 3E₁I₁/R³; the converged "
          "critical load of the circular ring (N = 0, any N gives the same) for e = 1 and "
-         "isotropic e, both load models; the in-plane-only solver against 3.",
+         "isotropic e, every reading of the load; the in-plane-only solver against 3.",
     methods=(SECOND_VARIATION, CLASSICAL, CRIT2), shared_checks=True,
     rule=Rule(f"holds if both crit2(ν = 1) and the converged load are within {EXACT_TOL:g} of "
               f"3E₁I₁/R³, holds approximately within {APPROX_TOL:.0%}, fails otherwise",
@@ -201,19 +201,19 @@ def measure_circular_limit(ev: RingEvidence) -> Measured:
     in_plane = max(abs(v["in_plane"]["hydrostatic"] - text) / text for v in per.values())
     one, iso = per["e=1"], per["isotropic"]
     kinds = "/".join(sorted(set(c["kind"])))
-    same = max(abs(v["numerical"]["hydrostatic"] / v["numerical"]["axis"] - 1)
-               for v in per.values()) <= EXACT_TOL
+    by_reading = ", ".join(f"{ld} {q:.4f}" for ld, q in one["numerical"].items())
     return Measured(
         numbers={"per_e": per, "crit2_vs_text": crit2_vs_text, "numerical_vs_text": num_vs_text,
                  "in_plane_vs_text": in_plane},
         evidence=f"crit2(ν=1) = 3e: {one['crit2']:.4f} (e = 1), {iso['crit2']:.4f} (isotropic) — "
                  f"E₂ in crit2 vs E₁ in the text, equal only if E₂ = E₁. Converged q_cr: "
                  f"{one['numerical']['hydrostatic']:.6f} (e = 1), "
-                 f"{iso['numerical']['hydrostatic']:.6f} (isotropic), {kinds}, "
-                 + ("the same for both loads" if same else "different for the two loads")
-                 + f"; {text:g} is the in-plane hydrostatic load (in-plane solver: |q/{text:g} − "
-                 f"1| = {in_plane:.1e}; in-plane under the axis-directed load: "
-                 f"{one['in_plane']['axis']:.4f}). Max relative gap to the text: crit2 "
+                 f"{iso['numerical']['hydrostatic']:.6f} (isotropic), {kinds} (hydrostatic); "
+                 f"per reading at e = 1: {by_reading}. {text:g} is the in-plane hydrostatic load "
+                 f"(in-plane solver: |q/{text:g} − 1| = {in_plane:.1e}; in plane under the other "
+                 "readings: " + ", ".join(f"{ld} {q:.4f}" for ld, q in one["in_plane"].items()
+                                          if ld != "hydrostatic")
+                 + f"). Max relative gap to the text: crit2 "
                  f"{crit2_vs_text:.3f}, numerical {num_vs_text:.3f}.")
 
 
@@ -221,7 +221,7 @@ TWIST_INDEPENDENT = ClaimSpec(
     id="ring-circular-twist-independent", section=SECTION + ", para. 'As expected ...'",
     claim="For a circular cross-section (I₁ = I₂) the critical force does not depend on the "
           "spontaneous twist.",
-    test="Converged q_cr at ν = 1 for N = 0..10, e = 1 and isotropic, both load models (with "
+    test="Converged q_cr at ν = 1 for N = 0..10, e = 1 and isotropic, every reading (with "
          "A₁ = A₂ the energy A₁(ω₁−ω₁₀)² + A₂(ω₂−ω₂₀)² is invariant under Ω).",
     methods=(SECOND_VARIATION,), shared_checks=True, one_formulation_why=MUNDER_COVERAGE,
     rule=Rule(f"holds if the relative spread of q_cr over N is ≤ {EXACT_TOL:g}; fails otherwise",
@@ -244,8 +244,8 @@ IN_OUT = ClaimSpec(
           "buckling.",
     test="Untwisted circular ring (N = 0; any N gives the same): solver restricted to the "
          "in-plane field y_φ and to the out-of-plane fields (y_z, α), checked against the closed "
-         "forms (in-plane 3A₁/R³, 4.5A₁/R³; Timoshenko & Gere out-of-plane), for e = 1 and "
-         "isotropic, both loads.",
+         "forms of each reading (in plane 3, 4.5, 4.5, 4 A₁/R³; out of plane Timoshenko & Gere, "
+         "12A/(4 + A/A₃) for the centre load), for e = 1 and isotropic, every reading.",
     methods=(SECOND_VARIATION, CLASSICAL), shared_checks=True,
     rule=Rule(f"holds if the in-plane and out-of-plane loads agree to {EXACT_TOL:g} in every case; "
               "fails otherwise",
@@ -449,8 +449,11 @@ def measure_rate(ev: RingEvidence) -> Measured:
                  + ", ".join(f"{nu:g}: {v:+.3f}" for nu, v in h.items())
                  + ". " + _drop_sign_text(drops) + ". Limit ν → ∞ (closed form, drop from q(0) "
                  "to q(N → ∞)): " + ", ".join(f"{ld} {v:+.3f}" for ld, v in limits.items())
-                 + " — twist raises the load there (except toward the axis, where the drop "
-                 "tends to 0)." + witness,
+                 + " — a rise for "
+                 + (", ".join(ld for ld, v in limits.items() if v < 0) or "no reading")
+                 + ", no change for "
+                 + (", ".join(ld for ld, v in limits.items() if v == 0) or "no reading")
+                 + "." + witness,
         cross_checks=checks)
 
 
@@ -635,7 +638,7 @@ def _raising_twists(ev: RingEvidence, label: str, load: str, nu: float) -> list[
 def _lowering_text(ev: RingEvidence, d: dict[str, dict[str, object]]) -> str:
     """Per load: lowered everywhere, or at the largest nu which twists raise q_cr (e = 1)."""
     nu_max, parts = max(WIDE_NUS), []
-    for ld in RING_LOADS:
+    for ld in readings(ev):
         if d[ld]["below"] == d[ld]["total"]:
             parts.append(f"under the {ld} load twist lowers q_cr in every case up to ν = "
                          f"{nu_max:g}")
@@ -833,7 +836,7 @@ TORSION_CAVEAT = ClaimSpec(
           "exact for a circular section only; the ring's verdicts do not hinge on it.",
     test="Rectangular sections with the same ν: Saint-Venant J = β h b³ < I₁ + I₂ "
          "(spectral_rod.rectangle_torsion_ratio), isotropic material (A₃ = G J); converged "
-         "q_cr(N), N = 0..10, ν of the table, both loads, against the paper's A₃: how far q_cr "
+         "q_cr(N), N = 0..10, ν of the table, every reading, against the paper's A₃: how far q_cr "
          "moves and whether the verdict-deciding facts move (q_cr > 0 everywhere; q_cr(N) < "
          "q_cr(0); the rise at large N).",
     methods=(SECOND_VARIATION, Method("Saint-Venant torsion of a rectangle (closed form)",
@@ -1024,8 +1027,8 @@ HOOP = ClaimSpec(
     id="ring-hoop-force", section=SECTION + ", para. 'We study the stability ...'",
     claim="Below the critical load the inward load is balanced by the tangential internal force "
           "F_t = −qR₀ and no displacement arises.",
-    test="The loaded circle with F_t = −qR₀ and no moments in Eqs. Munder: its residual for both "
-         "load models (ring_munder); the sympy ring derivation's step 2 (Munder at the "
+    test="The loaded circle with F_t = −qR₀ and no moments in Eqs. Munder: its residual for every "
+         "reading of the load (ring_munder); the sympy ring derivation's step 2 (Munder at the "
          "stress-free state gives F_t = −qR₀).",
     methods=(MUNDER, SYMPY_RING),
     rule=Rule(f"holds if the residual is below {RESIDUAL_TOL:g} and the derivation's checks "
@@ -1039,8 +1042,8 @@ def measure_hoop(ev: RingEvidence) -> Measured:
     eq = ev.equilibrium
     return Measured(
         numbers={"base_residual": eq["base_residual"], "ring_derivation": eq["ring_derivation"]},
-        evidence=f"Largest residual of Munder at the loaded circle {eq['base_residual']:.1e} (both "
-                 f"loads, {len(EQUILIBRIUM_CASES)} cases); sympy: {eq['ring_derivation']}.")
+        evidence=f"Largest residual of Munder at the loaded circle {eq['base_residual']:.1e} "
+                 f"(every reading, {len(EQUILIBRIUM_CASES)} cases); sympy: {eq['ring_derivation']}.")
 
 
 #: The ring claims in ledger order: (declaration, measurement).
