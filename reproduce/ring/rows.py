@@ -1043,7 +1043,8 @@ def measure_hoop(ev: RingEvidence) -> Measured:
     return Measured(
         numbers={"base_residual": eq["base_residual"], "ring_derivation": eq["ring_derivation"]},
         evidence=f"Largest residual of Munder at the loaded circle {eq['base_residual']:.1e} "
-                 f"(every reading, {len(EQUILIBRIUM_CASES)} cases); sympy: {eq['ring_derivation']}.")
+                 f"(every reading, {len(EQUILIBRIUM_CASES)} cases); sympy: "
+                 f"{eq['ring_derivation']}.")
 
 
 #: The ring claims in ledger order: (declaration, measurement).
