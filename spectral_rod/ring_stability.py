@@ -642,7 +642,8 @@ def _check_nus(nus: object) -> NDArray[np.float64]:
 #: least q_cr(0) (1 - RAISE_TOL). An empirical round-off margin, not a physical one: each q_cr
 #: is converged to 1e-12 (second variation) or 1e-10 (Munder's default), the circular ring
 #: (nu = 1, where twist cannot change q_cr) gives |q_cr(N)/q_cr(0) - 1| ~ 1e-15, and the
-#: smallest genuine gap on the ring scene's scans (nu > 1) is ~6e-3; 1e-9 lies well between.
+#: smallest genuine gap on the ring scene's scans (nu > 1) is ~8e-4 (dead load, nu = 50); 1e-9
+#: lies well between.
 RAISE_TOL = 1.0e-9
 
 
@@ -654,7 +655,7 @@ def twist_raises_load(q_twisted: ArrayLike, q_untwisted: object) -> bool | NDArr
     RAISE_TOL)``. The tolerance :data:`RAISE_TOL` (public: ``spectral_rod.RING_RAISE_TOL``) =
     1e-9 relative is an empirical round-off margin: the converged loads are accurate to 1e-12
     (second variation) ... 1e-10 (Munder), twist-independent loads (nu = 1) agree to ~1e-15,
-    while the changes twist makes on the ring scene's scans (nu > 1) are ~6e-3 and more. A load
+    while the changes twist makes on the ring scene's scans (nu > 1) are ~8e-4 and more. A load
     equal to q_cr(0) to round-off therefore counts as raised (twist does not lower it).
 
     ``q_twisted``: q_cr(N) R^3/(E1 I1), a real number or an array (then an array of bools);

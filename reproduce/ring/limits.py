@@ -12,6 +12,7 @@ bends like an isotropic one of harmonic-mean stiffness 2 A1 A2/(A1 + A2)) and nu
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -30,6 +31,7 @@ def large_twist_gain(nu: float, e_ratio: float, load: str) -> float:
             - 1.0)
 
 
+@functools.cache  # a pure function of two scalars, asked for by every evaluation of the rows
 def large_twist_threshold(e_ratio: float, load: str) -> float:
     """The nu above which a twist of many turns (N -> infinity) raises q_cr over the untwisted
     ring's: the root of :func:`large_twist_gain` in (1, NU_SEARCH_MAX) (Brent, to 1e-12
