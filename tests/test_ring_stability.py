@@ -21,6 +21,7 @@ from spectral_rod.ring_closed_forms import (
 )
 from spectral_rod.ring_formula import ring_formula_load
 from spectral_rod.ring_stability import (
+    RING_LOADS,
     RingConvergenceError,
     assemble,
     destabilisation_threshold,
@@ -57,7 +58,7 @@ def test_operator_matches_sympy_derivation(derivation: tuple, N: int, seed: int)
     nu, e = rng.uniform(1.0, 4.0), rng.uniform(0.3, 2.0)
     A1, A2, A3 = 1.0, nu, e * (1 + nu)
     fam = frequency_families(N, 9)[min(2, N)] if N else list(range(5))
-    for load in ("hydrostatic", "axis"):
+    for load in RING_LOADS:
         K, G, basis = assemble(N, nu, e, load, fam)
         x = rng.normal(size=basis.size)
         fields = {name: {} for name in ("y_phi", "y_z", "alpha")}
