@@ -338,6 +338,18 @@ class _Problem:
         return len(self.fields) * self.n_field + 6
 
 
+def reference_torsions(N: object, M: int = 8) -> tuple[NDArray[np.float64], ...]:
+    """(s, w10, w20, w30) of the stress-free twisted ring (R = 1, Omega = N s): Eq. ``frenet``
+    applied to the paper's frame t0 = e_phi, u0 = -cos Omega e_r + sin Omega e_z, v0 = sin Omega
+    e_r + cos Omega e_z by spectral differentiation on this formulation's grid (truncation M),
+    to be compared with the paper's w10 = cos Omega/R, w20 = -sin Omega/R, w30 = N/R."""
+    n_turns = check_twist_count(N, maximum=MAX_TWIST)
+    grid = _grid(check_int(M, "M", 4, 200), n_turns)
+    geo = _geometry(grid, n_turns)
+    w0 = _darboux(geo.t0.astype(complex), geo.u0.astype(complex), geo.v0.astype(complex), grid)
+    return (grid.s, *(np.real(np.squeeze(w)) for w in w0))
+
+
 def _problem(N: int, nu: float, e_ratio: float, load: str, M: int, equations: str,
              flip: str | None = None) -> _Problem:
     if flip is not None and flip not in MUNDER_TERMS:

@@ -59,7 +59,8 @@ def test_all_verdicts_valid_and_ids_prefixed(claims: dict) -> None:
                            "ring-hoop-force", "ring-crit2-galerkin", "ring-crit2-torsion-scaling",
                            "ring-fixed-n-ansatz", "ring-analytic-only-circular",
                            "ring-adjacent-equilibrium", "caveat-ring-supports",
-                           "caveat-admissible-twists"}
+                           "caveat-admissible-twists", "ring-spontaneous-torsions",
+                           "ring-three-coupled-equations"}
     for c in claims.values():
         assert c.verdict in VERDICTS and c.scene == "ring" and c.evidence and c.numbers
         assert c.id.split("-")[0] in ("ring", "intro", "caveat", "eq")
@@ -622,3 +623,18 @@ def test_report_shows_the_verdicts_under_every_reading(claims: dict) -> None:
     text = scene.verdicts_by_reading_markdown(list(claims.values()))
     assert all(ld in text for ld in RING_LOADS)
     assert "`ring-destabilises`" in text and "depends on the reading" in text
+
+
+def test_torsions_and_coupled_equations_rows(claims: dict) -> None:
+    from reproduce.ring import model_rows
+
+    t = claims["ring-spontaneous-torsions"]
+    assert t.verdict == "holds" and t.numbers["max_abs_dev"] < 1e-12
+    assert model_rows.TORSIONS.rule.decide({**t.numbers, "max_abs_dev": 1e-3}) == "fails"
+    c = claims["ring-three-coupled-equations"]
+    assert c.verdict == "holds"
+    assert max(c.numbers["untwisted"].values()) < 1e-12  # N = 0: constant coefficients
+    assert max(c.numbers["circular"].values()) < 1e-12  # nu = 1: nothing couples
+    # the untwisted ring's (uncoupled) numbers in place of the twisted ones: the claim fails
+    assert model_rows.THREE_EQUATIONS.rule.decide(
+        {**c.numbers, "twisted": c.numbers["untwisted"]}) == "fails"

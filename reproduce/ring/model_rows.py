@@ -9,15 +9,23 @@ import math
 import numpy as np
 
 from reproduce.ledger import ClaimSpec, Measured, Method, Rule
-from reproduce.ring.evidence import SECTION, RingEvidence
-from reproduce.ring.standards import FORMULATION_TOL, MUNDER, SECOND_VARIATION, readings
-from spectral_rod import RING_LOADS
+from reproduce.ring.evidence import SECTION, TWISTS, RingEvidence
+from reproduce.ring.standards import (
+    EXACT_TOL,
+    FORMULATION_TOL,
+    MUNDER,
+    SECOND_VARIATION,
+    readings,
+)
+from spectral_rod import RING_LOADS, derivation_status
 from spectral_rod.ring_loads import (
     RIGID_MOTIONS,
     constraint_rank_on_rigid_motions,
     rigid_motion_load_work,
     rigid_motion_stiffness,
 )
+from spectral_rod.ring_munder import reference_torsions
+from spectral_rod.ring_stability import assemble
 
 RIGID = Method("rigid motions of the ring in the second variation "
                "(spectral_rod.ring_loads)", "second variation")
@@ -149,5 +157,103 @@ def measure_twists_caveat(ev: RingEvidence) -> Measured:
                  "they are not solved here).")
 
 
-__all__ = ["ADJACENT", "RIGID_MOTIONS", "SUPPORTS", "TWISTS_CAVEAT", "measure_adjacent",
-           "measure_supports", "measure_twists_caveat"]
+SYMPY_FRAMES = Method("sympy: the ring's frame in Eq. frenini "
+                      "(spectral_rod.derivations.ring_linearisation, step 1)", "sympy frames")
+NUMERIC_FRAMES = Method("Eq. frenet by spectral differentiation of the sampled frame "
+                        "(spectral_rod.ring_munder.reference_torsions)", "Munder")
+
+TORSIONS = ClaimSpec(
+    id="ring-spontaneous-torsions", section=SECTION + ", para. 'We now turn ...'",
+    claim="With t0 = e_φ, u0 = −cos Ω e_r + sin Ω e_z, v0 = sin Ω e_r + cos Ω e_z, Eqs. frenini "
+          "give ω₁₀ = cos Ω/R₀, ω₂₀ = −sin Ω/R₀, ω₃₀ = dΩ/ds.",
+    test="Symbolically (the ring derivation's step 1) and numerically: the torsions of the "
+         f"sampled frame by spectral differentiation for N = {TWISTS[0]}..{TWISTS[-1]} against "
+         "the printed formulas.",
+    methods=(SYMPY_FRAMES, NUMERIC_FRAMES),
+    rule=Rule(f"holds if the symbolic step passes and the numerical torsions match to "
+              f"{EXACT_TOL:g}; fails otherwise",
+              lambda n: "holds" if n["sympy"] == "all steps checked"
+              and n["max_abs_dev"] <= EXACT_TOL else "fails"),
+    related=("ring-hoop-force",))
+
+
+def measure_torsions(ev: RingEvidence) -> Measured:
+    dev = 0.0
+    for N in TWISTS:
+        s, w1, w2, w3 = reference_torsions(N)
+        dev = max(dev, float(np.max(np.abs(w1 - np.cos(N * s)))),
+                  float(np.max(np.abs(w2 + np.sin(N * s)))), float(np.max(np.abs(w3 - N))))
+    status = derivation_status("ring_linearisation")
+    return Measured(
+        numbers={"max_abs_dev": dev, "sympy": status},
+        evidence=f"sympy: {status}; numerically the sampled frame's torsions match the printed "
+                 f"ones to {dev:.1e} (R₀ = 1) for N = {TWISTS[0]}..{TWISTS[-1]}.")
+
+
+#: The ring on which the coupling of the perturbation equations is measured (N, nu, e).
+COUPLING_CASE = (2, 2.0, 1.0)
+#: A coupling block counts if its largest entry exceeds this share of K's largest (round-off
+#: of the quadrature is ~1e-15 of it).
+COUPLING_TOL = 1.0e-12
+
+
+def coupling_blocks(N: int, nu: float, e: float) -> dict[str, float]:
+    """Largest |K| entry (relative to max |K|) linking y_phi to (y_z, alpha), and linking
+    frequency f to f + 2N (a variable coefficient cos 2Omega), in the frequencies 0..4N+4."""
+    freqs = list(range(0, 4 * max(N, 1) + 5))
+    K, _, basis = assemble(N, nu, e, "hydrostatic", freqs)
+    scale = float(np.max(np.abs(K)))
+    fld = np.array([lab[0] for lab in basis.labels])
+    f = np.array([lab[1] for lab in basis.labels])
+    inp = fld == "y_phi"
+    fields = float(np.max(np.abs(K[np.ix_(inp, ~inp)]))) / scale
+    shift = np.abs(f[:, None] - f[None, :]) == 2 * N if N else np.zeros(K.shape, bool)
+    variable = float(np.max(np.abs(K[shift]))) / scale if shift.any() else 0.0
+    return {"fields": fields, "variable_coefficients": variable}
+
+
+THREE_EQUATIONS = ClaimSpec(
+    id="ring-three-coupled-equations", section=SECTION + ", para. 'We consider a small ...'",
+    claim="The perturbations obey three coupled differential equations with variable "
+          "coefficients for y_φ(s), y_z(s) and α(s) (y_r eliminated by inextensibility).",
+    test=f"The second variation's stiffness K on the twisted ring N = {COUPLING_CASE[0]}, "
+         f"ν = {COUPLING_CASE[1]:g}: does it link y_φ with (y_z, α), and frequency f with "
+         "f ± 2N (a coefficient varying like cos 2Ω)? The untwisted ring and the circular "
+         "section (ν = 1) as references, where both links vanish; the sympy derivation's "
+         "inextensibility step (y_r = −R y_φ').",
+    methods=(SECOND_VARIATION, SYMPY_FRAMES),
+    rule=Rule(f"holds if on the twisted ring both links exceed {COUPLING_TOL:g} of K's largest "
+              "entry and the derivation's steps pass; fails otherwise",
+              lambda n: "holds" if min(n["twisted"].values()) > COUPLING_TOL
+              and n["sympy"] == "all steps checked" else "fails"))
+
+
+def measure_three_equations(ev: RingEvidence) -> Measured:
+    N, nu, e = COUPLING_CASE
+    twisted = coupling_blocks(N, nu, e)
+    flat, circular = coupling_blocks(0, nu, e), coupling_blocks(N, 1.0, e)
+    return Measured(
+        numbers={"twisted": twisted, "untwisted": flat, "circular": circular,
+                 "sympy": derivation_status("ring_linearisation")},
+        evidence=f"Relative size of the links in K: twisted (N = {N}, ν = {nu:g}) fields "
+                 f"{twisted['fields']:.2f}, f ↔ f ± 2N {twisted['variable_coefficients']:.2f}; "
+                 f"untwisted {flat['fields']:.1e} / {flat['variable_coefficients']:.1e}; "
+                 f"circular section {circular['fields']:.1e} / "
+                 f"{circular['variable_coefficients']:.1e}. So the three equations are coupled "
+                 "with variable coefficients for N ≥ 1 and I₁ ≠ I₂ only; for N = 0 or I₁ = I₂ "
+                 "they have constant coefficients and the in-plane one separates.")
+
+
+__all__ = [
+    "ADJACENT",
+    "RIGID_MOTIONS",
+    "SUPPORTS",
+    "THREE_EQUATIONS",
+    "TORSIONS",
+    "TWISTS_CAVEAT",
+    "measure_adjacent",
+    "measure_supports",
+    "measure_three_equations",
+    "measure_torsions",
+    "measure_twists_caveat",
+]

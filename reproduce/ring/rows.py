@@ -49,9 +49,13 @@ from reproduce.ring.limits import large_anisotropy_limits, large_twist_threshold
 from reproduce.ring.model_rows import (
     ADJACENT,
     SUPPORTS,
+    THREE_EQUATIONS,
+    TORSIONS,
     TWISTS_CAVEAT,
     measure_adjacent,
     measure_supports,
+    measure_three_equations,
+    measure_torsions,
     measure_twists_caveat,
 )
 from reproduce.ring.root_causes import CIRCULAR_OUT_OF_PLANE, CRIT2_NOT_GALERKIN
@@ -1061,6 +1065,7 @@ CLAIMS: tuple[tuple[ClaimSpec, Callable[[RingEvidence], Measured]], ...] = (
     (ADJACENT, measure_adjacent), (TORSION_CAVEAT, measure_torsion_caveat),
     (LOAD_CAVEAT, measure_load_caveat), (SUPPORTS, measure_supports),
     (TWISTS_CAVEAT, measure_twists_caveat), (MUNDER_ROW, measure_munder),
+    (TORSIONS, measure_torsions), (THREE_EQUATIONS, measure_three_equations),
     (HOOP, measure_hoop),
 )
 
