@@ -445,13 +445,13 @@ class RingBuckling:
 #: 1e-6), up to 7 eps at e = 1; a tol below the floor is not met.
 ROUNDOFF = 8.0
 #: A twisted ring (N >= 1) whose torsion is much stiffer than its bending also scatters its
-#: load between truncations by about COUPLED_ROUNDOFF eps c, c = A3/(2 A1) = e (1 + nu)/2 (the
-#: twist couples the torsion into the bending of every family). Measured by
-#: ``tests/test_ring_stability.py::test_stiff_torsion_corner_is_refused`` and the ring_buckling
-#: histories at tol 1e-8: the change between the last truncations is 0.9 eps c at N = 5 and 20,
-#: nu = 1e4, e = 1e6 (c = 5e9: ~1e-6, so tol 1e-8 ran 27-113 s before failing) and at N = 5,
-#: nu = 1, e = 1e6; 0.15 eps c at N = 5, nu = 1e4, e = 1 (converged at 1e-12). 0.5 lies between:
-#: it refuses the first and keeps the last reachable at the default tol.
+#: load between truncations by about eps c, c = A3/(2 A1) = e (1 + nu)/2 (the twist couples
+#: the torsion into the bending of every family). Measured as ``rel_change`` of
+#: ``ring_buckling(N, nu, e_ratio=e, tol=1e-8, raise_on_failure=False)``: 0.9 eps c at N = 5
+#: and 20, nu = 1e4, e = 1e6 (c = 5e9: ~1e-6, so a tol of 1e-8 is out of reach) and at N = 5,
+#: nu = 1, e = 1e6; at most 0.15 eps c at N = 5, nu = 1e4, e = 1 (converged at 1e-12). 0.5 lies
+#: between: it refuses the first and keeps the last reachable at the default tol
+#: (``tests/test_ring_stability.py::test_stiff_torsion_corner_is_refused`` checks both).
 COUPLED_ROUNDOFF = 0.5
 
 
