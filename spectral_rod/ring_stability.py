@@ -393,6 +393,50 @@ def solve_family(N: int, nu: float, e_ratio: float, load: str, freqs: list[int],
     return solve_families(N, nu, e_ratio, load, {0: freqs}, fields)[0]
 
 
+#: The one-harmonic Galerkin tries the frequencies n = 2 .. 2N + ONE_HARMONIC_EXTRA (its minimum
+#: over n lies at n <= N + 2 on the ring scene's table: the lowest-n modes are the softest).
+ONE_HARMONIC_EXTRA = 4
+
+
+def one_harmonic_load(N: object, nu: object, e_ratio: object = 1.0,
+                      load: object = "hydrostatic") -> tuple[float, int]:
+    """The paper's stated method for Eq. ``crit2``: every field a single harmonic of one
+    frequency n (cos and sin of ns/R: the paper's sin(ns/R) and its quarter-turn shift), the
+    second variation restricted to it (Galerkin = Rayleigh-Ritz for this conservative problem,
+    so an upper bound of the converged q_cr, exact at N = 0 where frequencies decouple); the
+    smallest over n = 2 .. 2N + ONE_HARMONIC_EXTRA, and that n.
+
+    >>> q, n = one_harmonic_load(0, 4.0)   # N = 0: the exact in-plane load 3 at n = 2
+    >>> round(q, 12), n
+    (3.0, 2)
+    """
+    n_turns = check_twist_count(N, maximum=MAX_SOLVER_TWIST)
+    v, e, ld = check_scalar_nu(nu), check_e_ratio(e_ratio), check_load(load)
+    sols = solve_families(n_turns, v, e, ld,
+                          {n: [n] for n in range(2, 2 * n_turns + 1 + ONE_HARMONIC_EXTRA)})
+    best = min(sols, key=lambda k: sols[k].load)
+    return sols[best].load, best
+
+
+def coupling_strengths(N: object, nu: object, e_ratio: object = 1.0) -> dict[str, float]:
+    """How strongly the stiffness K of the second variation couples the perturbation equations
+    (frequencies 0..4N+4, relative to K's largest entry): ``fields``, the largest entry linking
+    y_phi with (y_z, alpha); ``variable_coefficients``, the largest linking frequency f with
+    f + 2N (a coefficient varying like cos 2 Omega).  Both vanish for N = 0 or nu = 1."""
+    n_turns = check_twist_count(N, maximum=MAX_SOLVER_TWIST)
+    v, e = check_scalar_nu(nu), check_e_ratio(e_ratio)
+    K, _, basis = assemble(n_turns, v, e, "hydrostatic", list(range(4 * max(n_turns, 1) + 5)))
+    scale = float(np.max(np.abs(K)))
+    fld = np.array([lab[0] for lab in basis.labels])
+    f = np.array([lab[1] for lab in basis.labels])
+    inp = fld == "y_phi"
+    fields = float(np.max(np.abs(K[np.ix_(inp, ~inp)]))) / scale
+    shift = (np.abs(f[:, None] - f[None, :]) == 2 * n_turns) if n_turns else np.zeros(K.shape,
+                                                                                       bool)
+    variable = float(np.max(np.abs(K[shift]))) / scale if shift.any() else 0.0
+    return {"fields": fields, "variable_coefficients": variable}
+
+
 @dataclass(frozen=True)
 class RingBuckling:
     """Full result of :func:`ring_buckling`.

@@ -137,3 +137,33 @@ def test_rigid_motion_load_work_signs(load: str) -> None:
 def test_bad_input(fn, args: tuple, exc: type[Exception], word: str) -> None:  # type: ignore[no-untyped-def]
     with pytest.raises(exc, match=word):
         fn(*args)
+
+
+# ---------------------------------------------------------------- the paper's stated method
+
+@pytest.mark.parametrize("load", RING_LOADS)
+def test_one_harmonic_galerkin_is_exact_at_N0_and_an_upper_bound(load: str) -> None:
+    from spectral_rod import ring_one_harmonic_load
+
+    for nu, e in SECTIONS:
+        q, n = ring_one_harmonic_load(0, nu, e, load)
+        assert n == 2 and q == pytest.approx(untwisted_critical_load(nu, e, load), rel=1e-12)
+    for N, nu in [(1, 2.0), (3, 1.5)]:
+        q1, _ = ring_one_harmonic_load(N, nu, 1.0, load)
+        assert q1 >= ring_buckling(N, nu, load=load).load * (1 - 1e-12)
+
+
+def test_coupling_strengths_and_reference_torsions() -> None:
+    from spectral_rod import ring_coupling_strengths, ring_reference_torsions
+
+    assert max(ring_coupling_strengths(0, 3.0).values()) == 0.0
+    assert max(ring_coupling_strengths(2, 1.0).values()) < 1e-14
+    assert min(ring_coupling_strengths(2, 3.0).values()) > 1e-3
+    s, w1, w2, w3 = ring_reference_torsions(4)
+    assert np.allclose(w1, np.cos(4 * s), atol=1e-12) and np.allclose(w2, -np.sin(4 * s),
+                                                                      atol=1e-12)
+    assert np.allclose(w3, 4.0, atol=1e-12)
+    with pytest.raises(ValueError, match="N"):
+        ring_coupling_strengths(-1, 2.0)
+    with pytest.raises(ValueError, match="whole turns"):
+        ring_reference_torsions(1.5)

@@ -37,9 +37,9 @@ from spectral_rod import (
     ring_buckling,
     ring_formula_load,
     ring_formulation_row,
+    ring_one_harmonic_load,
     threshold_twist,
 )
-from spectral_rod.ring_stability import solve_families
 
 SECTION = "Sec. 'Stability of a ring'"
 TWISTS = tuple(range(11))
@@ -196,29 +196,13 @@ def untwisted_circular_rows(solve: Solve) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-#: The one-harmonic Galerkin tries the frequencies n = 2 .. 2N + ONE_HARMONIC_EXTRA (its minimum
-#: over n lies at n <= N + 2 on the table: the lowest-n modes are the softest).
-ONE_HARMONIC_EXTRA = 4
-
-
-def one_harmonic_load(N: int, nu: float, e: float, load: str) -> tuple[float, int]:
-    """The paper's stated method: every field a single harmonic of one frequency n (cos and sin
-    of ns/R: the paper's sin(ns/R) and its quarter-turn shift), the second variation restricted
-    to it (Galerkin = Rayleigh-Ritz for this conservative problem, so an upper bound of the
-    converged q_cr); the smallest over n = 2 .. 2N + ONE_HARMONIC_EXTRA, and that n."""
-    sols = solve_families(N, nu, e, load, {n: [n] for n in range(2, 2 * N + 1
-                                                                  + ONE_HARMONIC_EXTRA)})
-    n = min(sols, key=lambda k: sols[k].load)
-    return sols[n].load, n
-
-
 def one_harmonic_rows(solve: Solve, table: pd.DataFrame) -> pd.DataFrame:
     """The one-harmonic Galerkin load beside the converged one for every table ring (long
     format: e_label, nu, N, load, q_one_harmonic, n_one_harmonic, q)."""
     rows = []
     for r in table.itertuples():
         for load in RING_LOADS:
-            q1, n = one_harmonic_load(int(r.N), float(r.nu), float(r.e_ratio), load)
+            q1, n = ring_one_harmonic_load(int(r.N), float(r.nu), float(r.e_ratio), load)
             rows.append({"e_label": r.e_label, "nu": r.nu, "N": r.N, "load": load,
                          "q_one_harmonic": q1, "n_one_harmonic": n,
                          "q": solve(int(r.N), float(r.nu), float(r.e_ratio), load).load})

@@ -29,11 +29,15 @@ from reproduce.ring.standards import (
     readings,
     verdict_by_deviation,
 )
-from spectral_rod import crit2, untwisted_critical_load
-from spectral_rod.ring_closed_forms import in_plane_mode_load, out_of_plane_mode_load
+from spectral_rod import (
+    crit2,
+    in_plane_mode_load,
+    out_of_plane_mode_load,
+    untwisted_critical_load,
+)
 
 ONE_HARMONIC = Method("one-harmonic Galerkin of the second variation (every field cos, sin of "
-                      "one ns/R; reproduce.ring.evidence.one_harmonic_load)", "second variation")
+                      "one ns/R; spectral_rod.ring_one_harmonic_load)", "second variation")
 #: Wavenumbers searched for the single-mode load nearest to crit2(N = 0).
 WAVENUMBERS = range(2, 41)
 

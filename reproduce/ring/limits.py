@@ -18,8 +18,12 @@ import math
 import numpy as np
 import scipy.optimize
 
-from spectral_rod import homogenised_limit, untwisted_critical_load
-from spectral_rod.ring_closed_forms import in_plane_untwisted, out_of_plane_supremum
+from spectral_rod import (
+    homogenised_limit,
+    in_plane_untwisted,
+    out_of_plane_supremum,
+    untwisted_critical_load,
+)
 
 #: Upper end of the search for the large-twist threshold (nu = I2/I1).
 NU_SEARCH_MAX = 1.0e4  # the largest nu the package accepts

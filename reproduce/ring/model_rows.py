@@ -17,15 +17,15 @@ from reproduce.ring.standards import (
     SECOND_VARIATION,
     readings,
 )
-from spectral_rod import RING_LOADS, derivation_status
-from spectral_rod.ring_loads import (
-    RIGID_MOTIONS,
-    constraint_rank_on_rigid_motions,
+from spectral_rod import (
+    RING_LOADS,
+    derivation_status,
     rigid_motion_load_work,
     rigid_motion_stiffness,
+    ring_constraint_rank,
+    ring_coupling_strengths,
+    ring_reference_torsions,
 )
-from spectral_rod.ring_munder import reference_torsions
-from spectral_rod.ring_stability import assemble
 
 RIGID = Method("rigid motions of the ring in the second variation "
                "(spectral_rod.ring_loads)", "second variation")
@@ -73,7 +73,7 @@ def measure_supports(ev: RingEvidence) -> Measured:
         free = [m for m, b in behaviour[ld].items() if b == "neutral"]
         parts.append(f"{ld}: destabilised {', '.join(bad) or 'none'}; neutral "
                      f"{', '.join(free) or 'none'}")
-    rank, stiff = constraint_rank_on_rigid_motions(), rigid_motion_stiffness()
+    rank, stiff = ring_constraint_rank(), rigid_motion_stiffness()
     return Measured(
         numbers={"load_work": work, "behaviour": behaviour, "constraint_rank": rank,
                  "rigid_stiffness": stiff},
@@ -160,7 +160,7 @@ def measure_twists_caveat(ev: RingEvidence) -> Measured:
 SYMPY_FRAMES = Method("sympy: the ring's frame in Eq. frenini "
                       "(spectral_rod.derivations.ring_linearisation, step 1)", "sympy frames")
 NUMERIC_FRAMES = Method("Eq. frenet by spectral differentiation of the sampled frame "
-                        "(spectral_rod.ring_munder.reference_torsions)", "Munder")
+                        "(spectral_rod.ring_reference_torsions)", "Munder")
 
 TORSIONS = ClaimSpec(
     id="ring-spontaneous-torsions", section=SECTION + ", para. 'We now turn ...'",
@@ -180,7 +180,7 @@ TORSIONS = ClaimSpec(
 def measure_torsions(ev: RingEvidence) -> Measured:
     dev = 0.0
     for N in TWISTS:
-        s, w1, w2, w3 = reference_torsions(N)
+        s, w1, w2, w3 = ring_reference_torsions(N)
         dev = max(dev, float(np.max(np.abs(w1 - np.cos(N * s)))),
                   float(np.max(np.abs(w2 + np.sin(N * s)))), float(np.max(np.abs(w3 - N))))
     status = derivation_status("ring_linearisation")
@@ -195,21 +195,6 @@ COUPLING_CASE = (2, 2.0, 1.0)
 #: A coupling block counts if its largest entry exceeds this share of K's largest (round-off
 #: of the quadrature is ~1e-15 of it).
 COUPLING_TOL = 1.0e-12
-
-
-def coupling_blocks(N: int, nu: float, e: float) -> dict[str, float]:
-    """Largest |K| entry (relative to max |K|) linking y_phi to (y_z, alpha), and linking
-    frequency f to f + 2N (a variable coefficient cos 2Omega), in the frequencies 0..4N+4."""
-    freqs = list(range(0, 4 * max(N, 1) + 5))
-    K, _, basis = assemble(N, nu, e, "hydrostatic", freqs)
-    scale = float(np.max(np.abs(K)))
-    fld = np.array([lab[0] for lab in basis.labels])
-    f = np.array([lab[1] for lab in basis.labels])
-    inp = fld == "y_phi"
-    fields = float(np.max(np.abs(K[np.ix_(inp, ~inp)]))) / scale
-    shift = np.abs(f[:, None] - f[None, :]) == 2 * N if N else np.zeros(K.shape, bool)
-    variable = float(np.max(np.abs(K[shift]))) / scale if shift.any() else 0.0
-    return {"fields": fields, "variable_coefficients": variable}
 
 
 THREE_EQUATIONS = ClaimSpec(
@@ -230,8 +215,8 @@ THREE_EQUATIONS = ClaimSpec(
 
 def measure_three_equations(ev: RingEvidence) -> Measured:
     N, nu, e = COUPLING_CASE
-    twisted = coupling_blocks(N, nu, e)
-    flat, circular = coupling_blocks(0, nu, e), coupling_blocks(N, 1.0, e)
+    twisted = ring_coupling_strengths(N, nu, e)
+    flat, circular = ring_coupling_strengths(0, nu, e), ring_coupling_strengths(N, 1.0, e)
     return Measured(
         numbers={"twisted": twisted, "untwisted": flat, "circular": circular,
                  "sympy": derivation_status("ring_linearisation")},
@@ -246,7 +231,6 @@ def measure_three_equations(ev: RingEvidence) -> Measured:
 
 __all__ = [
     "ADJACENT",
-    "RIGID_MOTIONS",
     "SUPPORTS",
     "THREE_EQUATIONS",
     "TORSIONS",

@@ -4,8 +4,7 @@ and, through f-strings, in its text) and the methods the rows cite."""
 from __future__ import annotations
 
 from reproduce.ledger import Method
-from spectral_rod import RING_LOADS
-from spectral_rod.figure_data import FIGURE1_NU
+from spectral_rod import FIGURE1_NU, RING_LOADS
 
 SCENE = "ring"
 #: "Exact": every q_cr is converged to 1e-12 relative, so 1e-9 is the solvers' accuracy with a
