@@ -84,6 +84,8 @@ class RingEvidence:
     rectangle: pd.DataFrame
     #: The one-harmonic Galerkin loads (:func:`one_harmonic_rows`)
     one_harmonic: pd.DataFrame = field(default_factory=pd.DataFrame)
+    #: In-plane share of the critical mode beyond the table's twists (:func:`large_twist_shares`)
+    large_twist_shares: dict[int, float] = field(default_factory=dict)
     equilibrium: dict[str, object] = field(default_factory=dict)
     rod_non_planarity: float = math.nan
     solves: dict[str, int] = field(default_factory=dict)
@@ -209,6 +211,18 @@ def one_harmonic_rows(solve: Solve, table: pd.DataFrame) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
+#: (nu, e, load) and the twists N beyond the table at which the critical mode's in-plane share
+#: is followed toward N -> infinity.
+LARGE_TWIST_CASE = (2.0, 1.0, "hydrostatic")
+LARGE_TWISTS = (10, 20, 40)
+
+
+def large_twist_shares(solve: Solve) -> dict[int, float]:
+    """In-plane share of the load work of the critical mode at :data:`LARGE_TWISTS`."""
+    nu, e, load = LARGE_TWIST_CASE
+    return {N: float(solve(N, nu, e, load).in_plane_fraction) for N in LARGE_TWISTS}
+
+
 def formulation_rows(solve: Solve) -> pd.DataFrame:
     """The two formulations (second variation, Munder) on :data:`AGREEMENT_CASES`: the columns
     of :func:`spectral_rod.ring_formulation_agreement` (without its timings), from this run's
@@ -292,6 +306,7 @@ def compute_evidence(progress: Callable[[str], None] = lambda _m: None) -> RingE
     table = timed("table", lambda: table_rows(solve, progress=progress))
     progress("threshold twists, untwisted circular ring, the straight rod's mode")
     thresholds = timed("checks", lambda: threshold_rows(table, solve))
+    shares = timed("checks", lambda: large_twist_shares(solve))
     circ = timed("checks", lambda: untwisted_circular_rows(solve))
     rod = timed("checks", rod_mode_non_planarity)
     progress("the one-harmonic Galerkin (the paper's stated method) on the table")
@@ -306,8 +321,8 @@ def compute_evidence(progress: Callable[[str], None] = lambda _m: None) -> RingE
     equilibrium = timed("equilibrium checks", lambda: equilibrium_checks(solve))
     info = solve.cache_info()
     solves = {"distinct": info.misses, "requested": info.hits + info.misses}
-    return RingEvidence(table, thresholds, circ, forms, wide, boundaries, rect, one, equilibrium,
-                        rod, solves, timings, solve)
+    return RingEvidence(table, thresholds, circ, forms, wide, boundaries, rect, one, shares,
+                        equilibrium, rod, solves, timings, solve)
 
 
 def q_at(ev: RingEvidence, nu: float, N: int, label: str = "e=1",
