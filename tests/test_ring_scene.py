@@ -374,12 +374,14 @@ def test_zero_load_numbers_cover_the_table_and_the_wide_scan(evidence) -> None:
 
 
 def test_each_ring_is_solved_once_per_run(evidence) -> None:
-    from reproduce.ring.evidence import EQUILIBRIUM_CASES
+    from reproduce.ring.evidence import EQUILIBRIUM_CASES, LARGE_TWIST_CASE
     e_of = scene.E_RATIOS
     second = ({(r.N, r.nu, r.e_ratio, ld) for r in evidence.table.itertuples()
                for ld in RING_LOADS}
               | {(r.N, r.nu, e_of[r.e_label], r.load) for r in evidence.wide.itertuples()}
-              | {(r.N, r.nu, r.e_ratio, r.load) for r in evidence.rectangle.itertuples()})
+              | {(r.N, r.nu, r.e_ratio, r.load) for r in evidence.rectangle.itertuples()}
+              | {(N, LARGE_TWIST_CASE[0], LARGE_TWIST_CASE[1], LARGE_TWIST_CASE[2])
+                 for N in evidence.large_twist_shares})
     munder = {(r.N, r.nu, r.e_ratio, r.load) for r in evidence.formulations.itertuples()}
     munder |= set(EQUILIBRIUM_CASES)
     distinct = len(second) + len(munder) + len(EQUILIBRIUM_CASES)  # + Kirchhoff's
