@@ -455,8 +455,11 @@ def measure_rate(ev: RingEvidence) -> Measured:
                  f"{min(span):g} … {max(span):g} depending on the series (e=1/hydrostatic, "
                  + ", ".join(f"{k}: to {v:g}" for k, v in ends.get(
                      "e=1/hydrostatic", next(iter(ends.values()))).items())
-                 + f"), so over the paper's range ν ≤ {PAPER_NU_MAX:g}, and then falls. "
-                 f"Drop q(0)→q({WIDE_TWISTS[-1]}) by ν (e=1/hydrostatic): "
+                 + "), " + (f"so over the paper's range ν ≤ {PAPER_NU_MAX:g}"
+                            if min(span) >= PAPER_NU_MAX else
+                            f"not over the whole of the paper's range ν ≤ {PAPER_NU_MAX:g}")
+                 + (", and then falls. " if min(span) < max(WIDE_NUS) else ". ")
+                 + f"Drop q(0)→q({WIDE_TWISTS[-1]}) by ν (e=1/hydrostatic): "
                  + ", ".join(f"{nu:g}: {v:+.3f}" for nu, v in h.items())
                  + ". " + _drop_sign_text(drops) + ". Limit ν → ∞ (closed form, drop from q(0) "
                  "to q(N → ∞)): " + ", ".join(f"{ld} {v:+.3f}" for ld, v in limits.items())
