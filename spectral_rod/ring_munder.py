@@ -9,8 +9,8 @@ none of it.  It starts from the paper's own *force balances*, Eq. ``Munder`` wit
 every unknown field (no elimination by hand), and lets the computer do the linearisation: the
 nonlinear residuals are evaluated in complex arithmetic at x0 + i h e_k (complex step, h =
 1e-20), so Im(residual)/h is the exact derivative to round-off.  What the two formulations have
-in common is only the model (Kirchhoff rod, the ring, the two load models), which is the point of
-the comparison.  A discrete rod (option (B)) would have rebuilt the energy and the load
+in common is only the model (Kirchhoff rod, the ring, the four readings of the load), which is
+the point of the comparison.  A discrete rod (option (B)) would have rebuilt the energy and the load
 potentials, i.e. the same *kind* of derivation as the first formulation; the equilibrium route
 also tests Eq. ``Munder`` as printed, and the conservative-load potentials of the first
 formulation independently.
@@ -66,17 +66,18 @@ All loads are q R^3/(E1 I1): A1 = 1, A2 = nu, A3 = e (1 + nu).
 Findings (``tests/test_ring_second_formulation.py``)
 ----------------------------------------------------
 * The loaded circle with F_t = -q R and no moment satisfies all four lines of Eq. ``Munder``
-  (residual ~1e-15), for both load models.
+  (residual ~1e-15), for every reading of the load.
 * Eq. ``Munder`` as printed needs no correction (its lines 3 and 4 are -(F' + q).u and
   +(F' + q).v; only the way they are recombined before projection matters for the truncated
   system, see :func:`_residual`): it gives the same q_cr as the Kirchhoff vector
-  balances (relative ~1e-15), and the same q_cr as the energy formulation on 17 cases
-  (N = 0..8, nu = 1..4, e = 1 and 1/2.6, both loads) to a few 1e-15; reversing the sign of any
-  one of its 20 printed terms moves q_cr by at least 3.9 % (axis load, N = 2, nu = 2), so the
-  agreement is not blind to a misprint.  (With the hydrostatic load q_t = 0 identically, so
-  that term's sign cannot matter there.)
-* The closed forms (in plane 3 and 4.5 A1/R^3, out of plane Timoshenko-Gere, twist-independence
-  for nu = 1) are reproduced to ~1e-15.
+  balances (relative ~1e-15), and the same q_cr as the energy formulation on 23 cases
+  (N = 0..8, nu = 1..4, e = 1 and 1/2.6, every reading of the load) to a few 1e-15; reversing
+  the sign of any one of its 20 printed terms moves q_cr by at least 3.9 % (axis load, N = 2,
+  nu = 2), so the agreement is not blind to a misprint.  (With the hydrostatic load q_t = 0
+  identically, so that term's sign cannot matter there.)
+* The closed forms (in plane 3, 4.5, 4.5, 4 A1/R^3 for the hydrostatic, axis, centre and dead
+  readings, out of plane Timoshenko-Gere, twist-independence for nu = 1) are reproduced to
+  ~1e-15 (``tests/test_ring_loads.py`` for the centre and dead readings).
 * The measured blocks of the Jacobian are the frequency families f = +-n (mod 2N) of the
   twist, each split in two by the ring's reflection symmetry.
 """
