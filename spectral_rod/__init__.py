@@ -126,6 +126,16 @@ _EXPORTS = {
     "increasing_up_to": "measures", "settling_point": "measures", "observed_order": "measures",
     "ring_buckling": "ring_stability", "ring_critical_load": "ring_stability",
     "ring_roundoff_floor": "ring_stability:roundoff_floor",
+    "untwisted_critical_load": "ring_closed_forms",
+    "rigid_motion_load_work": "ring_loads",
+    "rigid_motion_stiffness": "ring_loads",
+    "RING_RIGID_MOTIONS": "ring_loads:RIGID_MOTIONS",
+    "ring_constraint_rank": "ring_loads:constraint_rank_on_rigid_motions",
+    "in_plane_mode_load": "ring_closed_forms",
+    "out_of_plane_mode_load": "ring_closed_forms",
+    "ring_reference_torsions": "ring_munder:reference_torsions",
+    "ring_one_harmonic_load": "ring_stability:one_harmonic_load",
+    "ring_coupling_strengths": "ring_stability:coupling_strengths",
 }
 
 __all__ = sorted(_EXPORTS)

@@ -9,8 +9,8 @@ none of it.  It starts from the paper's own *force balances*, Eq. ``Munder`` wit
 every unknown field (no elimination by hand), and lets the computer do the linearisation: the
 nonlinear residuals are evaluated in complex arithmetic at x0 + i h e_k (complex step, h =
 1e-20), so Im(residual)/h is the exact derivative to round-off.  What the two formulations have
-in common is only the model (Kirchhoff rod, the ring, the two load models), which is the point of
-the comparison.  A discrete rod (option (B)) would have rebuilt the energy and the load
+in common is only the model (Kirchhoff rod, the ring, the four readings of the load), which is
+the point of the comparison.  A discrete rod (option (B)) would have rebuilt the energy and the load
 potentials, i.e. the same *kind* of derivation as the first formulation; the equilibrium route
 also tests Eq. ``Munder`` as printed, and the conservative-load potentials of the first
 formulation independently.
@@ -40,7 +40,8 @@ Residuals, each evaluated from the nonlinear expressions
 * the six constraints.
 
 Load models ("hydrostatic": q e_z x R'(s) per unit length, R' = t0 + y'; "axis": magnitude q,
-horizontal, towards the ring's axis at the displaced point R0 + y) are forces only.
+horizontal, towards the ring's axis at the displaced point R0 + y; "centre": magnitude q,
+towards the ring's centre point, -q R/|R|; "dead": -q e_r(s), fixed) are forces only.
 
 With ``equations="kirchhoff"`` the Munder lines are replaced by the vector balances
 M' + t x F = 0 and F' + q = 0 with the full force F = -q R t0 + dF (three more unknown fields
@@ -65,17 +66,18 @@ All loads are q R^3/(E1 I1): A1 = 1, A2 = nu, A3 = e (1 + nu).
 Findings (``tests/test_ring_second_formulation.py``)
 ----------------------------------------------------
 * The loaded circle with F_t = -q R and no moment satisfies all four lines of Eq. ``Munder``
-  (residual ~1e-15), for both load models.
+  (residual ~1e-15), for every reading of the load.
 * Eq. ``Munder`` as printed needs no correction (its lines 3 and 4 are -(F' + q).u and
   +(F' + q).v; only the way they are recombined before projection matters for the truncated
   system, see :func:`_residual`): it gives the same q_cr as the Kirchhoff vector
-  balances (relative ~1e-15), and the same q_cr as the energy formulation on 17 cases
-  (N = 0..8, nu = 1..4, e = 1 and 1/2.6, both loads) to a few 1e-15; reversing the sign of any
-  one of its 20 printed terms moves q_cr by at least 3.9 % (axis load, N = 2, nu = 2), so the
-  agreement is not blind to a misprint.  (With the hydrostatic load q_t = 0 identically, so
-  that term's sign cannot matter there.)
-* The closed forms (in plane 3 and 4.5 A1/R^3, out of plane Timoshenko-Gere, twist-independence
-  for nu = 1) are reproduced to ~1e-15.
+  balances (relative ~1e-15), and the same q_cr as the energy formulation on 23 cases
+  (N = 0..8, nu = 1..4, e = 1 and 1/2.6, every reading of the load) to a few 1e-15; reversing
+  the sign of any one of its 20 printed terms moves q_cr by at least 3.9 % (axis load, N = 2,
+  nu = 2), so the agreement is not blind to a misprint.  (With the hydrostatic load q_t = 0
+  identically, so that term's sign cannot matter there.)
+* The closed forms (in plane 3, 4.5, 4.5, 4 A1/R^3 for the hydrostatic, axis, centre and dead
+  readings, out of plane Timoshenko-Gere, twist-independence for nu = 1) are reproduced to
+  ~1e-15 (``tests/test_ring_loads.py`` for the centre and dead readings).
 * The measured blocks of the Jacobian are the frequency families f = +-n (mod 2N) of the
   twist, each split in two by the ring's reflection symmetry.
 """
@@ -337,6 +339,18 @@ class _Problem:
         return len(self.fields) * self.n_field + 6
 
 
+def reference_torsions(N: object, M: int = 8) -> tuple[NDArray[np.float64], ...]:
+    """(s, w10, w20, w30) of the stress-free twisted ring (R = 1, Omega = N s): Eq. ``frenet``
+    applied to the paper's frame t0 = e_phi, u0 = -cos Omega e_r + sin Omega e_z, v0 = sin Omega
+    e_r + cos Omega e_z by spectral differentiation on this formulation's grid (truncation M),
+    to be compared with the paper's w10 = cos Omega/R, w20 = -sin Omega/R, w30 = N/R."""
+    n_turns = check_twist_count(N, maximum=MAX_TWIST)
+    grid = _grid(check_int(M, "M", 4, 200), n_turns)
+    geo = _geometry(grid, n_turns)
+    w0 = _darboux(geo.t0.astype(complex), geo.u0.astype(complex), geo.v0.astype(complex), grid)
+    return (grid.s, *(np.real(np.squeeze(w)) for w in w0))
+
+
 def _problem(N: int, nu: float, e_ratio: float, load: str, M: int, equations: str,
              flip: str | None = None) -> _Problem:
     if flip is not None and flip not in MUNDER_TERMS:
@@ -371,9 +385,14 @@ def _external_force(prob: _Problem, q: float, R: NDArray, dR: NDArray, lam: NDAr
     g = prob.geo
     if prob.load == "hydrostatic":
         force = q * np.cross(g.e_z, dR)
-    else:  # "axis": horizontal, towards the axis of the ring, at the displaced point
+    elif prob.load == "axis":  # horizontal, towards the axis of the ring, at the displaced point
         rho = np.sqrt(R[..., 0] ** 2 + R[..., 1] ** 2)
         force = -q * np.stack([R[..., 0] / rho, R[..., 1] / rho, 0.0 * rho], axis=-1)
+    elif prob.load == "centre":  # towards the ring's centre point, at the displaced point
+        dist = np.sqrt(R[..., 0] ** 2 + R[..., 1] ** 2 + R[..., 2] ** 2)
+        force = -q * R / dist[..., None]
+    else:  # "dead": fixed direction -e_r(s) at the material point, whatever the displacement
+        force = -q * (g.e_r + 0.0 * R)
     R0 = g.e_r  # R = 1
     reaction = lam[:, None, :3] + np.cross(lam[:, None, 3:], R0)
     return force + reaction
@@ -652,7 +671,7 @@ class MunderBuckling:
     max_frequency   final truncation M (frequencies 0..M per field)
     n_unknowns      size of the full linear system at M
     rel_change      |q(M) - q(previous M)| / q
-    converged       rel_change <= tol and ring_stability.roundoff_floor(e_ratio) <= tol
+    converged       rel_change <= tol and ring_stability.roundoff_floor(e_ratio, nu, N) <= tol
     history         [(M, q)] of the truncations tried
     max_imag        largest |Im q|/|q| of any finite eigenvalue at the final M
     """
@@ -709,7 +728,7 @@ def munder_buckling(N: object, nu: object, *, e_ratio: object = 1.0,
     check_choice(equations, "equations", EQUATIONS)
     raise_on_failure = check_bool(raise_on_failure, "raise_on_failure")
     if raise_on_failure:
-        check_reachable(tol, e)
+        check_reachable(tol, e, v, n_turns)
 
     def solve(M: int) -> tuple[tuple[BlockLoad, float], float]:
         bl, worst = block_loads(n_turns, v, e, ld, M, equations)
@@ -718,7 +737,7 @@ def munder_buckling(N: object, nu: object, *, e_ratio: object = 1.0,
 
     (best, worst), history, rel = refine(_truncations(n_turns), solve, tol)
     M = history[-1][0]
-    floor = roundoff_floor(e)  # successive truncations do not see it (ring_stability)
+    floor = roundoff_floor(e, v, n_turns)  # truncations do not see it (ring_stability)
     converged = bool(rel <= tol and floor <= tol)
     if not converged and raise_on_failure:
         raise RingConvergenceError(
@@ -755,7 +774,7 @@ ISOTROPIC_POISSON = 0.3
 #: e = E2/E1 of that material: A3 = E2 (I1 + I2) is G J of a circular section, so
 #: E2 = G = E1/(2 (1 + Poisson)).
 E_ISOTROPIC = 1.0 / (2.0 * (1.0 + ISOTROPIC_POISSON))
-#: The agreement cases (N, nu, e, load): N = 0..8, several nu and e, both loads.
+#: The agreement cases (N, nu, e, load): N = 0..8, several nu and e, every reading of the load.
 AGREEMENT_CASES: tuple[tuple[int, float, float, str], ...] = (
     (0, 1.0, 1.0, "hydrostatic"),
     (0, 4.0, E_ISOTROPIC, "axis"),
@@ -774,6 +793,12 @@ AGREEMENT_CASES: tuple[tuple[int, float, float, str], ...] = (
     (7, 2.0, E_ISOTROPIC, "hydrostatic"),
     (8, 4.0, 1.0, "hydrostatic"),
     (8, 1.3, E_ISOTROPIC, "axis"),
+    (0, 4.0, 1.0, "centre"),
+    (2, 2.0, 1.0, "centre"),
+    (3, 1.3, E_ISOTROPIC, "centre"),
+    (0, 2.0, E_ISOTROPIC, "dead"),
+    (2, 4.0, 1.0, "dead"),
+    (3, 1.5, E_ISOTROPIC, "dead"),
 )
 
 

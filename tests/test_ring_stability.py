@@ -21,6 +21,7 @@ from spectral_rod.ring_closed_forms import (
 )
 from spectral_rod.ring_formula import ring_formula_load
 from spectral_rod.ring_stability import (
+    RING_LOADS,
     RingConvergenceError,
     assemble,
     destabilisation_threshold,
@@ -57,7 +58,7 @@ def test_operator_matches_sympy_derivation(derivation: tuple, N: int, seed: int)
     nu, e = rng.uniform(1.0, 4.0), rng.uniform(0.3, 2.0)
     A1, A2, A3 = 1.0, nu, e * (1 + nu)
     fam = frequency_families(N, 9)[min(2, N)] if N else list(range(5))
-    for load in ("hydrostatic", "axis"):
+    for load in RING_LOADS:
         K, G, basis = assemble(N, nu, e, load, fam)
         x = rng.normal(size=basis.size)
         fields = {name: {} for name in ("y_phi", "y_z", "alpha")}
@@ -387,3 +388,24 @@ def test_an_unreachable_tol_is_refused_before_solving() -> None:
         munder_buckling(20, 1e4, e_ratio=1e-6)
     with pytest.raises(RingConvergenceError, match="below the round-off floor"):
         ring_buckling(20, 1e4, e_ratio=1e-6)
+
+
+def test_stiff_torsion_corner_is_refused() -> None:
+    """ring_critical_load(60, 1e4, e_ratio=1e6, tol=1e-8): every argument in range, but the
+    load scatters by ~1e-6 between truncations (0.9 eps e (1 + nu)/2), so the refinement ran
+    27-113 s and failed; now it is refused at once with the reachable range, and a tol in that
+    range converges (checked at N = 5, where the same floor applies and the solve is fast)."""
+    import time
+
+    from spectral_rod.ring_stability import RingConvergenceError, roundoff_floor
+
+    t = time.perf_counter()
+    with pytest.raises(RingConvergenceError, match=r"ask for tol in \["):
+        ring_critical_load(60, 1e4, e_ratio=1e6, tol=1e-8)
+    assert time.perf_counter() - t < 5.0  # refused before any solve (generous on a busy host)
+    floor = roundoff_floor(1e6, 1e4, 5)
+    assert floor > 1e-8 and roundoff_floor(1e6, 1e4, 0) < 1e-8  # the twist's coupling term
+    r = ring_buckling(5, 1e4, e_ratio=1e6, tol=4 * floor)
+    assert r.converged
+    # the corner's neighbours keep the default tol: e = 1, nu = 1e4, and e = 1e6, nu = 1
+    assert roundoff_floor(1.0, 1e4, 5) < 1e-12 and roundoff_floor(1e6, 1.0, 5) < 1e-8

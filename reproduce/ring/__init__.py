@@ -6,17 +6,21 @@ under a uniform inward load q; loads as q R^3/(E1 I1), nu = I2/I1, e = E2/E1.
 Compares: the paper's one-mode Galerkin estimate Eq. ``crit2`` with the converged solution of the
 linearised problem in two formulations that share no hand derivation -- the Fourier-Galerkin
 second variation (:mod:`spectral_rod.ring_stability`) and the numerically linearised Eqs.
-``Munder`` (:mod:`spectral_rod.ring_munder`) -- for both load models ("hydrostatic": pressure on
-the projection; "axis": the paper's literal -q e_r), for N = 0..10, nu in {1, 1.1, 1.3, 1.5, 2,
-4} (and to nu = 100 for the general claims), e = 1 and isotropic; closed forms of the untwisted
-ring and of the rapidly twisted ring; rectangular sections (the torsion caveat).
+``Munder`` (:mod:`spectral_rod.ring_munder`) -- for every reading of the load ("hydrostatic":
+pressure on the projection; "axis": toward the ring's axis; "centre": toward its centre point;
+"dead": fixed direction), for N = 0..10, nu in {1, 1.1, 1.3, 1.5, 2, 4} (and to nu = 100 for the
+general claims), e = 1 and isotropic; the one-harmonic Galerkin the paper states; closed forms of
+the untwisted ring and of the rapidly twisted ring, and the limits N, nu -> infinity
+(:mod:`.limits`); the rigid motions each reading destabilises (the supports); rectangular
+sections (the torsion caveat).
 Writes: ring_table.csv / ring_table.md, ring_threshold.csv / ring_threshold.md,
 ring_formulations.csv (the two formulations side by side), ring_wide.csv (the wide-nu scan),
 ring.png, the ring rows of claims.json / claims.md and the report section.
 
-The package: :mod:`.evidence` computes every number (calls to the library), :mod:`.rows`
-declares each claim with its verdict rule and measures it, :mod:`.outputs` writes tables and the
-figure.
+The package: :mod:`.evidence` computes every number (calls to the library), :mod:`.rows`,
+:mod:`.galerkin_rows` and :mod:`.model_rows` declare each claim with its verdict rule and measure
+it, with the named thresholds of :mod:`.standards` and the root causes of :mod:`.root_causes`;
+:mod:`.outputs` writes tables and the figure.
 """
 
 from __future__ import annotations
@@ -54,8 +58,8 @@ from spectral_rod import RING_LOADS
 
 NAME = "ring"
 SUMMARY = ("twisted ring: Eq. crit2 vs the converged q_cr in two formulations (second variation, "
-           "Munder), both load models -> ring_table.*, ring_threshold.*, ring_formulations.csv, "
-           "ring_wide.csv, ring.png, ring ledger rows")
+           "Munder), every reading of the load -> ring_table.*, ring_threshold.*, "
+           "ring_formulations.csv, ring_wide.csv, ring.png, ring ledger rows")
 
 #: `python -m reproduce check`: per output file and column (or JSON key), how a regenerated
 #: value may differ from the committed one (rules in reproduce/compare.py).
@@ -96,6 +100,16 @@ def physical_threshold_text(claim: Claim) -> str:
     return f"**Is the threshold twist physical?** {answer} {facts} (see `ring_threshold.md`)."
 
 
+def verdicts_by_reading_markdown(claims: list[Claim]) -> str:
+    """The ring verdicts under each reading of the load alone (from caveat-load-model)."""
+    per = next(c for c in claims if c.id == "caveat-load-model").numbers["verdicts_per_load"]
+    rows = [[f"`{cid}`", *(v[ld] for ld in RING_LOADS),
+             "**depends on the reading**" if len(set(v.values())) > 1 else ""]
+            for cid, v in per.items()]
+    return ("**Verdicts under each reading of the load** (each row judged on that reading's "
+            "numbers alone):\n\n" + markdown_table(["row", *RING_LOADS, ""], rows))
+
+
 def report_section(claims: list[Claim], ev: RingEvidence, seconds: float,
                    witnesses: int = 0) -> str:
     d = crit2_deviation(ev)
@@ -105,14 +119,15 @@ def report_section(claims: list[Claim], ev: RingEvidence, seconds: float,
     lines = ["## Ring: Eq. crit2 against the converged answer", "",
              f"{len(ev.table)} rings (N = {TWISTS[0]}..{TWISTS[-1]}, ν ∈ "
              f"{{{', '.join(f'{v:g}' for v in NUS)}}}, e = 1 and isotropic e = "
-             f"{E_RATIOS['isotropic']:.4f}) solved for both load models; every critical load "
+             f"{E_RATIOS['isotropic']:.4f}) solved for every reading of the load ("
+             + ", ".join(RING_LOADS) + "); every critical load "
              f"converged (largest change between the last two truncations {rel:.1e} relative, "
              f"frequencies ≤ {int(conv)}), and {len(ev.wide)} cases on the wide scan to ν = "
              f"{max(WIDE_NUS):g}. Each ring is solved once per run through one memo: "
              f"{ev.solves['distinct']} solves for {ev.solves['requested']} requests (the ν* "
              f"searches of `destabilisation_threshold` solve their own rings), and {witnesses} "
              "rings re-solved by Eqs. Munder as witnesses (the decisive rings of two verdicts, "
-             "on the evidence of both load models and of each alone).", "",
+             "on the evidence of all readings and of each alone).", "",
              f"**Two formulations.** The second variation of the energy and the paper's "
              f"equilibrium equations Munder (linearised numerically) agree to "
              f"{ev.formulations['rel_diff'].max():.1e} (limit {FORMULATION_TOL:g}) on "
@@ -125,6 +140,7 @@ def report_section(claims: list[Claim], ev: RingEvidence, seconds: float,
              f"{h['max_rel_dev_N0']:.2f}. crit2 is ≤ 0 in {h['n_formula_nonpositive']} of "
              f"{len(ev.table)} cases, whereas the numerical load never falls below "
              f"{min(d[ld]['min_numerical'] for ld in RING_LOADS):.4f}.", "",
+             verdicts_by_reading_markdown(claims), "",
              physical_threshold_text(
                  next(c for c in claims if c.id == "ring-spontaneous-instability")), "",
              markdown_table(["id", "claim", "verdict"],

@@ -37,6 +37,7 @@ from spectral_rod import (
     ring_buckling,
     ring_formula_load,
     ring_formulation_row,
+    ring_one_harmonic_load,
     threshold_twist,
 )
 
@@ -81,6 +82,10 @@ class RingEvidence:
     wide: pd.DataFrame
     boundaries: pd.DataFrame
     rectangle: pd.DataFrame
+    #: The one-harmonic Galerkin loads (:func:`one_harmonic_rows`)
+    one_harmonic: pd.DataFrame = field(default_factory=pd.DataFrame)
+    #: In-plane share of the critical mode beyond the table's twists (:func:`large_twist_shares`)
+    large_twist_shares: dict[int, float] = field(default_factory=dict)
     equilibrium: dict[str, object] = field(default_factory=dict)
     rod_non_planarity: float = math.nan
     solves: dict[str, int] = field(default_factory=dict)
@@ -153,7 +158,7 @@ def table_rows(solve: Solve, nus: tuple[float, ...] = NUS, twists: tuple[int, ..
     """Formula and converged numerical q_cr R^3/(E1 I1) for every (e, nu, N) and load model."""
     rows = []
     for label, e in e_ratios.items():
-        progress(f"solving {len(nus) * len(twists)} rings for {label} (e = {e:.4f}), both loads")
+        progress(f"solving {len(nus) * len(twists)} rings for {label} (e = {e:.4f}), every reading")
         rows += [_table_row(solve, label, e, nu, N) for nu in nus for N in twists]
     return pd.DataFrame(rows)
 
@@ -188,9 +193,34 @@ def untwisted_circular_rows(solve: Solve) -> pd.DataFrame:
                          "in_plane": inp.load, "in_plane_n": inp.dominant_frequency,
                          "in_plane_closed": in_plane_untwisted(1.0, load),
                          "out_of_plane": out.load, "out_of_plane_n": out.dominant_frequency,
-                         "out_of_plane_closed": out_of_plane_untwisted(1.0, 2.0 * e),
+                         "out_of_plane_closed": out_of_plane_untwisted(1.0, 2.0 * e, load),
                          "critical": full.load, "kind": full.kind})
     return pd.DataFrame(rows)
+
+
+def one_harmonic_rows(solve: Solve, table: pd.DataFrame) -> pd.DataFrame:
+    """The one-harmonic Galerkin load beside the converged one for every table ring (long
+    format: e_label, nu, N, load, q_one_harmonic, n_one_harmonic, q)."""
+    rows = []
+    for r in table.itertuples():
+        for load in RING_LOADS:
+            q1, n = ring_one_harmonic_load(int(r.N), float(r.nu), float(r.e_ratio), load)
+            rows.append({"e_label": r.e_label, "nu": r.nu, "N": r.N, "load": load,
+                         "q_one_harmonic": q1, "n_one_harmonic": n,
+                         "q": solve(int(r.N), float(r.nu), float(r.e_ratio), load).load})
+    return pd.DataFrame(rows)
+
+
+#: (nu, e, load) and the twists N beyond the table at which the critical mode's in-plane share
+#: is followed toward N -> infinity.
+LARGE_TWIST_CASE = (2.0, 1.0, "hydrostatic")
+LARGE_TWISTS = (10, 20, 40)
+
+
+def large_twist_shares(solve: Solve) -> dict[int, float]:
+    """In-plane share of the load work of the critical mode at :data:`LARGE_TWISTS`."""
+    nu, e, load = LARGE_TWIST_CASE
+    return {N: float(solve(N, nu, e, load).in_plane_fraction) for N in LARGE_TWISTS}
 
 
 def formulation_rows(solve: Solve) -> pd.DataFrame:
@@ -276,8 +306,11 @@ def compute_evidence(progress: Callable[[str], None] = lambda _m: None) -> RingE
     table = timed("table", lambda: table_rows(solve, progress=progress))
     progress("threshold twists, untwisted circular ring, the straight rod's mode")
     thresholds = timed("checks", lambda: threshold_rows(table, solve))
+    shares = timed("checks", lambda: large_twist_shares(solve))
     circ = timed("checks", lambda: untwisted_circular_rows(solve))
     rod = timed("checks", rod_mode_non_planarity)
+    progress("the one-harmonic Galerkin (the paper's stated method) on the table")
+    one = timed("one-harmonic Galerkin", lambda: one_harmonic_rows(solve, table))
     progress(f"second formulation (Munder) on {len(AGREEMENT_CASES)} cases")
     forms = timed("second formulation", lambda: formulation_rows(solve))
     wide = timed("wide scan", lambda: wide_rows(solve, progress))
@@ -288,8 +321,8 @@ def compute_evidence(progress: Callable[[str], None] = lambda _m: None) -> RingE
     equilibrium = timed("equilibrium checks", lambda: equilibrium_checks(solve))
     info = solve.cache_info()
     solves = {"distinct": info.misses, "requested": info.hits + info.misses}
-    return RingEvidence(table, thresholds, circ, forms, wide, boundaries, rect, equilibrium,
-                        rod, solves, timings, solve)
+    return RingEvidence(table, thresholds, circ, forms, wide, boundaries, rect, one, shares,
+                        equilibrium, rod, solves, timings, solve)
 
 
 def q_at(ev: RingEvidence, nu: float, N: int, label: str = "e=1",

@@ -20,7 +20,8 @@ from spectral_rod import crit2, threshold_twist
 def table_markdown(ev: RingEvidence) -> str:
     lines = ["# Ring: Eq. crit2 vs the converged critical load", "",
              "q_cr R³/(E₁I₁); each cell: crit2 / numerical hydrostatic / numerical axis "
-             "(kind of the hydrostatic mode: i in-plane, o out-of-plane, c coupled).", ""]
+             "(kind of the hydrostatic mode: i in-plane, o out-of-plane, c coupled); the "
+             "centre and dead readings are in `ring_table.csv`.", ""]
     for label, e in E_RATIOS.items():
         t = ev.table[ev.table["e_label"] == label]
         rows = []
@@ -65,6 +66,10 @@ def formulations_markdown(ev: RingEvidence) -> str:
                            "relative difference", "mode", "Munder resolution"], rows)
 
 
+#: Markers (and sizes) of the readings of the load other than "hydrostatic" (drawn as lines).
+OTHER_READINGS = {"axis": ("s", 6), "centre": ("^", 5), "dead": ("D", 3.5)}
+
+
 def draw(ev: RingEvidence):
     fig, axes = plt.subplots(1, 2, figsize=(12.0, 5.2), sharey=True)
     colors = dict(zip(NUS, plt.cm.viridis(np.linspace(0.0, 0.9, len(NUS))), strict=True))
@@ -78,23 +83,25 @@ def draw(ev: RingEvidence):
             ax.plot(n_fine, crit2(n_fine, nu, e), ls="--", color=c, lw=1.2)
             ax.plot(g["N"], g["q_hydrostatic"], "o-", color=c, ms=4, lw=1.4,
                     label=f"ν = {nu:g}")
-            ax.plot(g["N"], g["q_axis"], "s", color=c, ms=6, mfc="none", lw=0)
+            for load, (marker, size) in OTHER_READINGS.items():
+                ax.plot(g["N"], g[f"q_{load}"], marker, color=c, ms=size, mfc="none", lw=0)
             th = threshold_twist(nu)
             if not math.isinf(th.continuous) and th.continuous <= 10:
                 ax.plot([th.continuous], [0.0], marker="x", color=c, ms=9, mew=2)
         ax.set_title(f"{TITLES[label]}: e = E₂/E₁ = {e:.3f}")
         ax.set_xlabel("twist N (turns of the cross-section around the ring)")
         ax.set_xlim(-0.3, 10.3)
-        ax.set_ylim(-2.0, 6.5)
+        ax.set_ylim(-2.0, 7.8)  # room for the style legend above the loads
         ax.set_xticks(range(11))
         ax.grid(alpha=0.3)
     axes[0].set_ylabel("critical load  q_cr R³ / (E₁ I₁)")
     style = [Line2D([], [], color="k", ls="--", label="Eq. crit2 (paper)"),
              Line2D([], [], color="k", marker="o", ms=4, label="numerical, hydrostatic"),
-             Line2D([], [], color="k", marker="s", mfc="none", lw=0, label="numerical, axis"),
+             *(Line2D([], [], color="k", marker=m, ms=sz, mfc="none", lw=0,
+                      label=f"numerical, {load}") for load, (m, sz) in OTHER_READINGS.items()),
              Line2D([], [], color="k", marker="x", mew=2, lw=0,
                     label="crit2 = 0 (threshold twist)")]
-    first = axes[0].legend(handles=style, loc="lower left", fontsize=8, framealpha=0.9)
+    first = axes[0].legend(handles=style, loc="upper right", fontsize=8, framealpha=0.9)
     axes[0].add_artist(first)
     axes[1].legend(loc="lower left", fontsize=8, ncol=2, framealpha=0.9)
     fig.suptitle("Twisted ring: the paper's Eq. crit2 (dashed, leaves the plot below −2) vs the "

@@ -28,7 +28,9 @@ also run under ``python -O``):
    theta that closes the ring and is orthogonal to t0); the work of the hoop force on it is
    -int F_t t0 . y2' ds = (q R / 2) int ((theta.t0)^2 - |theta|^2) ds = -(q R/2) int |theta_perp|^2.
 6. Load potentials, second order in eps: "hydrostatic" V = q/2 int (R x R').e_z ds (q times the
-   projected enclosed area), "axis" V = q int rho ds (rho = distance from the axis).
+   projected enclosed area), "axis" V = q int rho ds (rho = distance from the axis), "centre"
+   V = q int |R| ds (distance from the centre point), "dead" V = q int e_r(s).R ds (a force
+   -q e_r(s) fixed at the material point: linear in y, no second-order part).
 
 Result: second variation 1/2 int (k_density - q g_density) ds with the densities returned by
 :func:`derive`, in terms of y_phi(s), y_z(s), alpha(s).
@@ -156,16 +158,25 @@ def hoop_work_density(F: dict[str, sp.Matrix], Ft: sp.Expr) -> sp.Expr:
 
 
 def load_potential_second_order(F: dict[str, sp.Matrix]) -> dict[str, sp.Expr]:
-    """Step 6: eps^2 coefficients of the two load potentials (densities per unit s), for a
+    """Step 6: eps^2 coefficients of the four load potentials (densities per unit s), for a
     general displacement y = y_r e_r + y_phi e_phi + y_z e_z."""
     y_r = sp.Function("y_r", real=True)(s)
     y = y_r * F["e_r"] + y_phi * F["e_phi"] + y_z * F["e_z"]
     Rv = R * F["e_r"] + eps * y
     area = Rv.cross(_d(Rv)).dot(F["e_z"]) * q / 2
     rho = q * sp.sqrt(Rv[0] ** 2 + Rv[1] ** 2)
-    hyd = sp.simplify(sp.diff(area, eps, 2).subs(eps, 0) / 2)
-    axis = sp.simplify(sp.diff(rho, eps, 2).subs(eps, 0) / 2)
-    return {"hydrostatic": hyd, "axis": axis, "y_r": y_r}
+    dist = q * sp.sqrt(Rv.dot(Rv))
+    dead = q * F["e_r"].dot(Rv)
+
+    def second(v: sp.Expr) -> sp.Expr:
+        return sp.simplify(sp.diff(v, eps, 2).subs(eps, 0) / 2)
+
+    return {"hydrostatic": second(area), "axis": second(rho), "centre": second(dist),
+            "dead": second(dead), "y_r": y_r}
+
+
+#: The readings of the load whose potentials are derived (those of spectral_rod.RING_LOADS).
+LOADS = ("hydrostatic", "axis", "centre", "dead")
 
 
 @lru_cache(maxsize=1)
@@ -173,7 +184,8 @@ def derive() -> dict[str, sp.Expr]:
     """The second variation 1/2 int (K - q G) ds of the twisted ring, all checks applied.
 
     Returns sympy densities in y_phi(s), y_z(s), alpha(s) (see the module symbols):
-    ``K`` (A1 dw1^2 + A2 dw2^2 + A3 dw3^2), ``G_hydrostatic`` and ``G_axis``, plus
+    ``K`` (A1 dw1^2 + A2 dw2^2 + A3 dw3^2), ``G_hydrostatic``, ``G_axis``, ``G_centre`` and
+    ``G_dead`` (one per reading of the load, :data:`spectral_rod.RING_LOADS`), plus
     ``F_t`` (hoop force), ``theta_r``, ``theta_z``, ``y_r`` (constraint solution) and
     ``w10``, ``w20``, ``w30``.
     """
@@ -197,7 +209,7 @@ def derive() -> dict[str, sp.Expr]:
            "5: hoop part of G = R (theta_r^2 + theta_z^2)")
     pots = load_potential_second_order(F)
     out = {"K": K, "F_t": Ft, "w10": w0[0], "w20": w0[1], "w30": w0[2], **cons}
-    for name in ("hydrostatic", "axis"):
+    for name in LOADS:
         v2 = pots[name].subs(pots["y_r"], cons["y_r"]).doit()
         out[f"G_{name}"] = sp.expand(g_hoop - 2 * v2 / q)
     # the simple forms quoted in spectral_rod.ring_stability's docstring (R = 1 there)
@@ -207,6 +219,12 @@ def derive() -> dict[str, sp.Expr]:
     _check(_z(out["G_axis"].subs(R, 1) - (cons["theta_r"] ** 2 + cons["theta_z"] ** 2
                                          - y_phi ** 2).subs(R, 1)),
            "6: G_axis is the form quoted in ring_stability")
+    _check(_z(out["G_centre"].subs(R, 1) - (cons["theta_r"] ** 2 + cons["theta_z"] ** 2
+                                           - y_phi ** 2 - y_z ** 2).subs(R, 1)),
+           "6: G_centre is the form quoted in ring_stability")
+    _check(_z(out["G_dead"].subs(R, 1) - (cons["theta_r"] ** 2 + cons["theta_z"] ** 2
+                                         ).subs(R, 1)),
+           "6: G_dead is the form quoted in ring_stability")
     return out
 
 
@@ -226,7 +244,7 @@ def main() -> None:
     print(f"y_r = {d['y_r']},  theta_r = {d['theta_r']},  theta_z = {d['theta_z']}")
     print("\nx.K x density (A1 dw1^2 + A2 dw2^2 + A3 dw3^2):")
     print(sp.simplify(d["K"].subs(R, 1)))
-    for name in ("hydrostatic", "axis"):
+    for name in LOADS:
         print(f"\nx.G x density, load '{name}':")
         print(sp.factor(d[f"G_{name}"].subs(R, 1)))
     print("\nEuler-Lagrange equations (hydrostatic, R = 1):")
