@@ -82,7 +82,7 @@ def main(argv: list[str] | None = None) -> int:
             print(f"{PROG}: error: 'info' takes no scene names, --out or --against",
                   file=sys.stderr)
             return 2
-        from spectral_rod._engine_report import format_engine_report
+        from spectral_rod import format_engine_report
 
         print(format_engine_report())
         return 0

@@ -1,9 +1,9 @@
 """What will run a solve of Eq. ``inst1`` on this install: the engine, its instruction-set
 variant, the BLAS libraries and their threads, and the dependency versions.
 
-:func:`engine_report` gathers it as a dict, :func:`format_engine_report` prints it;
-``python -m spectral_rod`` and ``spectral-rod info`` show it, and ``python -m reproduce`` records
-:func:`engine_summary` in its report's environment table.
+:func:`engine_report` gathers it as a dict, :func:`format_engine_report` prints it (both public:
+``spectral_rod.engine_report``); ``python -m spectral_rod`` and ``spectral-rod info`` show it,
+and ``python -m reproduce`` records its ``summary`` line in its report's environment table.
 
 The engine is the batched eigen-solver's compiled kernel
 (:mod:`spectral_rod.straight_rod.modal_kernel`) where it was built at install and loads, and its
@@ -99,22 +99,30 @@ def _version(name: str) -> str:
 def engine_report() -> dict[str, Any]:
     """The install's engine, BLAS and versions, as a dict of plain values.
 
-    Keys: ``version`` (spectral_rod's), ``python``, ``platform``, ``engine`` (the kernel's
-    entries: ``kernel`` bool, ``engine`` text, the instruction-set ``variant``, and whatever
-    ``modal_kernel.engine_info()`` adds), ``blas`` (one dict per library threadpoolctl finds),
-    ``thread_policy`` (text), ``dependencies`` (name -> version).
+    Returns
+    -------
+    dict with keys ``version`` (spectral_rod's), ``python``, ``platform``, ``engine`` (the
+    kernel's entries: ``kernel`` bool, ``engine`` text, the instruction-set ``variant``, and
+    whatever ``modal_kernel.engine_info()`` adds), ``summary`` (one line: engine and variant),
+    ``blas`` (one dict per library threadpoolctl finds), ``thread_policy`` (text),
+    ``dependencies`` (name -> version).
 
-    >>> report = engine_report()
-    >>> sorted(report)[:3], isinstance(report["engine"]["kernel"], bool)
-    (['blas', 'dependencies', 'engine'], True)
+    Examples
+    --------
+    >>> import spectral_rod
+    >>> report = spectral_rod.engine_report()
+    >>> isinstance(report["engine"]["kernel"], bool), report["version"] == spectral_rod.__version__
+    (True, True)
     """
     from spectral_rod import __version__
 
+    engine = _kernel_entries()
     return {
         "version": __version__,
         "python": platform.python_version(),
         "platform": platform.platform(),
-        "engine": _kernel_entries(),
+        "engine": engine,
+        "summary": engine_summary(engine),
         "blas": _blas(),
         "thread_policy": "solves run with every BLAS on one thread (threadpoolctl, "
                          "spectral_rod._blas_threads.one_blas_thread); the caller's setting "
@@ -136,7 +144,22 @@ def engine_summary(engine: dict[str, Any] | None = None) -> str:
 
 
 def format_engine_report(report: dict[str, Any] | None = None) -> str:
-    """The report as the text ``python -m spectral_rod`` prints."""
+    """The report (`report`: an :func:`engine_report`, default this install's) as the text
+    ``python -m spectral_rod`` prints.
+
+    Returns
+    -------
+    str: the version line, then the engine, BLAS and dependency blocks.
+
+    Examples
+    --------
+    >>> import spectral_rod
+    >>> print(spectral_rod.format_engine_report())  # doctest: +ELLIPSIS
+    spectral_rod ... (Python ...)
+    <BLANKLINE>
+    engine:
+      kernel: ...
+    """
     report = report or engine_report()
     lines = [f"spectral_rod {report['version']} (Python {report['python']}, "
              f"{report['platform']})", "", "engine:"]
