@@ -60,8 +60,13 @@ TARGET_ERROR = {**ACHIEVED_ERROR, "within": ("target", 1.0)}
 #: value may differ from the committed one (rules in reproduce/compare.py). A fixed-resolution
 #: error (no tol: ``within`` gives no slack) is a truncation error, reproducible to its 6 printed
 #: digits; timings and their ratios are machine-dependent; degrees are exact.
+#: A resolution study's error (convergence.csv): the tol rows as ACHIEVED_ERROR; the others at
+#: a fixed resolution, whose round-off in p* grows with the unknowns per field N: 16 eps N
+#: absolute (finite differences at N = 16383 moved by 1.8e-11 = 4.9 eps N between scipy 1.9
+#: and 1.17; below N ~ 280 the 1e-12 floor is the larger).
+RUN_ERROR = {**ACHIEVED_ERROR, "per_row": ("unknowns_per_field", 16 * 2.0**-52)}
 CHECK = {
-    "convergence.csv": {"seconds": "ignore", "rel_error": ACHIEVED_ERROR, "*": "exact"},
+    "convergence.csv": {"seconds": "ignore", "rel_error": RUN_ERROR, "*": "exact"},
     "convergence_cost.csv": {"seconds": "ignore", "rel_error": TARGET_ERROR, "*": "exact"},
     "convergence_tol_trade.csv": {"*seconds": "ignore", "*cost_ratio": "ignore",
                                   "*error*": ACHIEVED_ERROR, "*": "exact"},
