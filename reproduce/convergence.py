@@ -1,4 +1,4 @@
-"""Scene `convergence`: the speed-accuracy trade of the straight-rod solvers (issue 5).
+"""Scene `convergence`: the speed-accuracy trade of the straight-rod solvers.
 
 Models: the hinged straight rod with spontaneous twist (paper, Eq. ``inst1``); p* = P_cr /
 (pi^2 A1/L^2), Omega(L) = omega30 L, nu = I2/I1.
@@ -97,9 +97,9 @@ def interleaved_best_times(fns: list[Callable[[], object]], min_total: float,
                            max_rounds: int = 20) -> list[tuple[float, object]]:
     """:func:`best_time` of several functions, their repeats interleaved: each round runs every
     function once, until each has run ~min_total seconds, so that a change of machine load
-    during the measurement hits all of them alike (timed one after the other, the tol trade's
-    cost ratios of one run were out of order: tol 1e-2 0.48 of 1e-12, 1e-4 0.34, measured
-    2026-12-02). One untimed call of each first, as there."""
+    during the measurement hits all of them alike (timed one after the other, a load change
+    between two tols can put their cost ratios out of order). One untimed call of each first,
+    as there."""
     outs = [fn() for fn in fns]
     best, total = [np.inf] * len(fns), [0.0] * len(fns)
     for _ in range(max_rounds):

@@ -205,7 +205,7 @@ def draw(grid: pd.DataFrame, inc: pd.DataFrame, res: pd.DataFrame, route: pd.Dat
         ax.loglog(sub["twist_angle"], np.maximum(sub["char_rel_error"], 1e-17), "s--", ms=3,
                   label=f"characteristic eq. (double), ν={nu:g}")
     om = np.asarray(ROUTE_TWISTS)
-    # the route's own estimate (eps (8 + |Omega|) since 2026-12-04), not a copy of its formula
+    # the route's own estimate (eps (8 + |Omega|)), not a copy of its formula
     est = critical_load(om, np.full(om.size, 1.5), method="characteristic",
                         full_output=True).error_estimate
     ax.loglog(om, est, "k:", lw=1, label="characteristic eq.: its error estimate")
