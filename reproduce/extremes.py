@@ -215,7 +215,8 @@ def draw(grid: pd.DataFrame, inc: pd.DataFrame, res: pd.DataFrame, route: pd.Dat
     ax.set_ylim(1e-17, 1e-8)
     ax.set_xlabel("Ω(L)")
     ax.set_ylabel("relative error of p*")
-    ax.set_title("large twist: both methods measured (collocation n capped at 512)", fontsize=9)
+    ax.set_title(f"large twist: both methods measured at tol {TOL:.0e} (collocation n capped "
+                 "at 512)", fontsize=9)
     ax.legend(fontsize=7, loc="upper left")
     ax.grid(True, which="major", alpha=0.3)
     return fig
