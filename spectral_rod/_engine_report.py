@@ -143,9 +143,8 @@ def engine_summary(engine: dict[str, Any] | None = None) -> str:
     return str(engine["engine"]) + (f", variant {variant}" if variant else "")
 
 
-def format_engine_report(report: dict[str, Any] | None = None) -> str:
-    """The report (`report`: an :func:`engine_report`, default this install's) as the text
-    ``python -m spectral_rod`` prints.
+def format_engine_report() -> str:
+    """This install's :func:`engine_report` as the text ``python -m spectral_rod`` prints.
 
     Returns
     -------
@@ -160,7 +159,11 @@ def format_engine_report(report: dict[str, Any] | None = None) -> str:
     engine:
       kernel: ...
     """
-    report = report or engine_report()
+    return _format(engine_report())
+
+
+def _format(report: dict[str, Any]) -> str:
+    """`report` (an :func:`engine_report`) as text."""
     lines = [f"spectral_rod {report['version']} (Python {report['python']}, "
              f"{report['platform']})", "", "engine:"]
     lines += [f"  {k}: {v}" for k, v in report["engine"].items()]
@@ -185,5 +188,5 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--json", action="store_true", help="print the report as JSON")
     args = parser.parse_args(sys.argv[1:] if argv is None else argv)
     report = engine_report()
-    print(json.dumps(report, indent=2) if args.json else format_engine_report(report))
+    print(json.dumps(report, indent=2) if args.json else _format(report))
     return 0

@@ -124,19 +124,20 @@ def test_info_prints_the_engine(capsys):
     assert f"kernel: {available()}" in out and "numpy:" in out and "BLAS" in out
 
 
-def test_python_m_spectral_rod_prints_the_engine():
+def test_python_m_spectral_rod_prints_the_engine(tmp_path):
+    # run outside the checkout: the package these tests import, not a source tree in the cwd
     import json
 
     import spectral_rod
     from spectral_rod.straight_rod.modal_kernel import available
 
-    text = subprocess.run([sys.executable, "-m", "spectral_rod"], cwd=ROOT, capture_output=True,
-                          text=True, timeout=120, check=True).stdout
+    text = subprocess.run([sys.executable, "-m", "spectral_rod"], cwd=tmp_path,
+                          capture_output=True, text=True, timeout=120, check=True).stdout
     assert text.startswith(f"spectral_rod {spectral_rod.__version__} (Python ")
     assert ("engine: C kernel" if available() else "engine: numpy (no compiled kernel") in text
     report = json.loads(subprocess.run([sys.executable, "-m", "spectral_rod", "--json"],
-                                       cwd=ROOT, capture_output=True, text=True, timeout=120,
-                                       check=True).stdout)
+                                       cwd=tmp_path, capture_output=True, text=True,
+                                       timeout=120, check=True).stdout)
     assert report["engine"]["kernel"] is available()
     assert set(report["dependencies"]) >= {"numpy", "scipy", "threadpoolctl"}
 

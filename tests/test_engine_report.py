@@ -45,7 +45,7 @@ def test_cpu_level_needs_every_feature_of_a_level(flags, level):
 
 def test_the_text_names_the_engine_blas_and_versions():
     report = spectral_rod.engine_report()
-    text = spectral_rod.format_engine_report(report)
+    text = _engine_report._format(report)
     assert f"engine: {report['engine']['engine']}" in text
     assert "BLAS / OpenMP (threadpoolctl):" in text and "policy:" in text
     for name, version in report["dependencies"].items():
@@ -56,3 +56,9 @@ def test_the_reproduce_report_records_the_engine():
     from reproduce._runner import versions
 
     assert versions()["engine"] == spectral_rod.engine_report()["summary"]
+
+
+def test_format_engine_report_is_the_formatted_report():
+    text = spectral_rod.format_engine_report()
+    assert text.startswith(f"spectral_rod {spectral_rod.__version__} (Python ")
+    assert f"kernel: {modal_kernel.available()}" in text
