@@ -54,7 +54,8 @@ ring stability (the truth)          :func:`ring_critical_load`, :func:`ring_buck
 Public names are imported lazily (``import spectral_rod`` stays light; scipy and mpmath load
 when a function that needs them is first used); type checkers see them through the
 ``TYPE_CHECKING`` imports below. ``python -m spectral_rod`` (:func:`format_engine_report`) prints
-the engine that solves Eq. ``inst1`` on this install, its BLAS and the dependency versions. Every public function validates its arguments;
+the engine that solves Eq. ``inst1`` on this install, its BLAS and the dependency versions.
+Every public function validates its arguments;
 the raw kernels they are built on (e.g. :func:`spectral_rod.wavenumbers.characteristic_roots`,
 :func:`spectral_rod.characteristic.determinant` on mpmath numbers) live in their modules.
 """
