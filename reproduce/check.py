@@ -93,7 +93,10 @@ def run_check(names: list[str], against: Path, log: Callable[[str], None],
         with tempfile.TemporaryDirectory(prefix="spectral-rod-check-") as tmp:
             run_scenes(names, Path(tmp), log)
             return run_check(names, against, log, fresh=Path(tmp))
+    from spectral_rod import engine_report  # which engine regenerated the values compared
+
     results = compare_scenes(names, against, fresh)
+    print(f"engine: {engine_report()['summary']}\n")
     print(format_report(results))
     n_bad = sum(len(r.regressions) for _, r in results)
     n_changed = sum(len(r.differences) for _, r in results) - n_bad
