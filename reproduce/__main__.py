@@ -46,7 +46,7 @@ def entry_point(argv: list[str] | None = None) -> int:
         if signum is None:
             raise
         # The interrupt was raised inside a C extension's initialisation, which turned it into
-        # another exception (seen in CI, 2026-12-03: SIGINT in matplotlib's ft2font import gave
+        # another exception (seen in CI: SIGINT in matplotlib's ft2font import gave
         # "ImportError: initialization failed"), and the half-built module then crashed the
         # interpreter's finalisation. The outputs are whole (the finally clauses ran): skip it.
         status = interrupted_exit(Interrupted(signum))

@@ -101,6 +101,9 @@ def versions() -> dict[str, str]:
             out[mod] = importlib.import_module(mod).__version__
         except Exception:
             out[mod] = "not installed"
+    from spectral_rod import engine_report  # the engine every solve ran on
+
+    out["engine"] = engine_report()["summary"]
     return out
 
 

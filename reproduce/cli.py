@@ -1,7 +1,11 @@
 """The command line: ``python -m reproduce`` / ``spectral-rod``.
 
-    spectral-rod {all | list | SCENE... | check [SCENE...]} [--out DIR] [--against DIR]
+    spectral-rod {all | list | info | SCENE... | check [SCENE...]} [--out DIR] [--against DIR]
                  [--quiet] [--version]
+
+``info`` prints the engine that will solve Eq. ``inst1`` (compiled kernel or numpy, its
+instruction-set variant), the BLAS and its threads, and the dependency versions (as
+``python -m spectral_rod``).
 
 Exit status: 0 done (``check``: no regression), 1 ``check`` found a regression, 2 usage error,
 unwritable output, missing or corrupt input (the message names the file), 130/143 interrupted by
@@ -37,7 +41,7 @@ def _parser() -> argparse.ArgumentParser:
         f"temporary directory and compares with --against (default ./{OUT_NAME}); exit 1 on "
         "any regression.")
     p.add_argument("targets", nargs="+", metavar="TARGET",
-                   help="'all', 'list', one or more scene names, or 'check' [scene names]")
+                   help="'all', 'list', 'info', one or more scene names, or 'check' [scene names]")
     p.add_argument("--out", type=Path, default=None,
                    help=f"output directory (default: ./{OUT_NAME} in the current directory)")
     p.add_argument("--against", type=Path, default=None,
@@ -51,11 +55,17 @@ def _parser() -> argparse.ArgumentParser:
 def _scene_names(parser: argparse.ArgumentParser, targets: list[str]) -> list[str] | None:
     """Scene names for `targets` ('all' -> every scene; a repeated name runs once, in the place
     it was first given); None (after printing usage) if bad."""
+    if "all" in targets and len(targets) > 1:
+        parser.print_usage(sys.stderr)
+        print(f"{PROG}: error: 'all' cannot be combined with scene names "
+              f"({', '.join(t for t in targets if t != 'all')}): give 'all' alone, or the "
+              "scenes alone", file=sys.stderr)
+        return None
     names = list(SCENE_MODULES) if targets in (["all"], []) else list(dict.fromkeys(targets))
     unknown = [t for t in names if t not in SCENE_MODULES]
-    if unknown or ("all" in targets and len(targets) > 1):
+    if unknown:
         parser.print_usage(sys.stderr)
-        print(f"{PROG}: error: unknown target(s) {unknown or targets}; choose 'all', 'list', "
+        print(f"{PROG}: error: unknown target(s) {unknown}; choose 'all', 'list', 'info', "
               f"'check' or scenes from {', '.join(SCENE_MODULES)}", file=sys.stderr)
         return None
     return names
@@ -66,6 +76,16 @@ def main(argv: list[str] | None = None) -> int:
     parser = _parser()
     args = parser.parse_intermixed_args(argv)  # 'check --against DIR figure1' too
     targets: list[str] = args.targets
+    if targets[0] == "info":
+        if len(targets) > 1 or args.out is not None or args.against is not None:
+            parser.print_usage(sys.stderr)
+            print(f"{PROG}: error: 'info' takes no scene names, --out or --against",
+                  file=sys.stderr)
+            return 2
+        from spectral_rod import format_engine_report
+
+        print(format_engine_report())
+        return 0
     if targets[0] == "list":
         if len(targets) > 1 or args.out is not None or args.against is not None:
             parser.print_usage(sys.stderr)

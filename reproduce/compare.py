@@ -13,13 +13,23 @@ name or a dotted JSON key path (``fnmatch`` wildcards; the first matching patter
 - a dict with any of ``rel``, ``abs``, ``floor`` (the name of a column holding the solver's
   own relative error estimate for that row) and ``per_row`` (a pair (name, factor): an absolute
   slack of factor times the committed row's value of column, or sibling JSON key, `name`):
-  ``|new - old| <= max(rel |old|, abs, max(est_old, est_new) |old|, factor row[name])``.
+  ``|new - old| <= max(rel |old|, abs, max(est_old, est_new) |old|, factor row[name])``;
+  and ``within``, for an achieved error whose digits depend on the engine and the BLAS (where
+  an iteration stops, the order of its sums): a stated bound, a number or a pair (name,
+  factor) giving factor times the committed row's `name` (its tol), which both the committed
+  and the regenerated value must meet (``|old|, |new| <= bound``) for a change beyond the
+  other terms to be allowed: the promise still holds, which is what such a number records.
+
+- a :class:`Tie`: a label naming the lowest of competing values (the mode family), which may
+  change only where those values tie (its ``tied`` callable, given the committed row, decides).
 
 A spec may also hold ``"_owner": KEY`` (for a JSON list of rows with an ``id``, like
 ``claims.json``, which several scenes share): only the rows whose ``KEY`` equals the scene's
 name are compared. Values no pattern matches are compared by :data:`DEFAULT_RULE` and reported
 as undeclared. Non-finite numbers must match exactly; a missing file, column, row or key, or a
-changed number of rows, is a regression.
+changed number of rows, is a regression. CSV cells are parsed one by one (a number where the
+text is one, else the text; an empty cell is ``"(missing)"``), so a garbled or missing committed
+cell is one regression showing that cell, and leaves the rest of its column compared as numbers.
 
 >>> rule_allows({"rel": 1e-9}, 1.0, 1.0 + 1e-10)
 True
@@ -29,14 +39,14 @@ False
 
 from __future__ import annotations
 
+import csv
 import fnmatch
 import math
 import re
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
-
-import pandas as pd
 
 from reproduce.io import read_json
 
@@ -47,6 +57,22 @@ DEFAULT_RULE: dict[str, float] = {"rel": 1e-9}
 #: noise rather than results.
 TEXT_ABS = 1e-10
 _NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
+#: A CSV cell that is a number as pandas writes one (``nan`` and ``inf`` included).
+_CSV_NUMBER = re.compile(r"^[-+]?(?:(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|nan|inf)$",
+                         re.IGNORECASE)
+#: How an empty CSV cell or an absent JSON key is shown.
+MISSING = "(missing)"
+
+
+@dataclass(frozen=True)
+class Tie:
+    """Rule for a label that names the lowest of competing values (e.g. the mode family of
+    p*): where those values tie, which one is named is not a result, so a changed label is
+    allowed exactly where ``tied(row)`` (the committed row, column -> value) is true.
+    `meaning` states the tie in words for the report."""
+
+    tied: Callable[[Mapping[str, Any]], bool]
+    meaning: str
 
 
 @dataclass
@@ -115,12 +141,16 @@ def _text_allows(old: str, new: str) -> bool:
 
 
 def rule_allows(rule: Any, old: Any, new: Any, est: tuple[float, float] = (0.0, 0.0),
-                row_slack: float = 0.0) -> bool:
+                row_slack: float = 0.0, bound: float = math.nan) -> bool:
     """Whether `new` may replace `old` under `rule` (`est`: the row's error estimates;
-    `row_slack`: its ``per_row`` slack).
+    `row_slack`: its ``per_row`` slack; `bound`: its ``within`` bound, NaN for none).
 
     >>> rule_allows({"rel": 1e-3, "per_row": ("tol", 0.01)}, 8.1e-11, 8.2e-11, row_slack=1e-8)
     True
+    >>> rule_allows({"rel": 1e-5, "within": 1e-4}, 2.4e-10, 4.5e-9, bound=1e-4)
+    True
+    >>> rule_allows({"rel": 1e-5, "within": 1e-4}, 2.4e-10, 2e-4, bound=1e-4)
+    False
     """
     if rule == "ignore":
         return True
@@ -133,35 +163,66 @@ def rule_allows(rule: Any, old: Any, new: Any, est: tuple[float, float] = (0.0, 
     if rule in ("exact", "text"):
         return old == new
     scale = max(rule.get("rel", 0.0), *(e for e in est if math.isfinite(e))) * abs(old)
+    if abs(old) <= bound and abs(new) <= bound:  # False for a NaN bound
+        return True
     return abs(new - old) <= max(scale, rule.get("abs", 0.0), row_slack)
 
 
+def _bound(rule: Any, row: Mapping[str, Any]) -> float:
+    """The ``within`` bound of `rule` for the committed `row` (NaN where there is none)."""
+    within = rule.get("within") if isinstance(rule, dict) else None
+    if within is None:
+        return math.nan
+    if _is_number(within):
+        return float(within)
+    return within[1] * _number(row.get(within[0]))
+
+
 def _describe(rule: Any) -> str:
+    if isinstance(rule, Tie):
+        return f"tie ({rule.meaning})"
     if isinstance(rule, dict):
         return ", ".join(f"{k} {v:g}" if _is_number(v) else f"{k} {v}" for k, v in rule.items())
     return str(rule)
 
 
-def _cell(x: Any) -> Any:
-    """A CSV cell as a Python value (numbers as float, NaN kept, strings as they are)."""
-    if isinstance(x, str):
-        return x
-    if x is None or (isinstance(x, float) and math.isnan(x)):
-        return math.nan
-    return x.item() if hasattr(x, "item") else x
+def _cell(text: str) -> Any:
+    """A CSV cell as a Python value: a float where the text is a number (exactly as Python
+    reads it), :data:`MISSING` where it is empty, else the text."""
+    if _CSV_NUMBER.match(text):
+        return float(text)
+    return text if text else MISSING
+
+
+def _read_csv(path: Path) -> tuple[list[str], list[list[Any]]]:
+    """Header and rows of a CSV file, every cell by :func:`_cell` (short rows padded with
+    :data:`MISSING`)."""
+    with path.open(newline="", encoding="utf-8") as f:
+        lines = list(csv.reader(f))
+    header = lines[0] if lines else []
+    rows = [[_cell(c) for c in line] + [MISSING] * (len(header) - len(line))
+            for line in lines[1:] if line]
+    return header, rows
+
+
+def _number(x: Any) -> float:
+    """A cell used as a number by another column's rule (an estimate, a slack): NaN if it is
+    not one (a garbled estimate then gives no slack, and its own cell is reported)."""
+    return float(x) if _is_number(x) else math.nan
 
 
 def compare_csv(name: str, old_path: Path, new_path: Path, spec: dict[str, Any]
                 ) -> FileComparison:
     """Compare two CSV files row by row, column by column, under `spec`."""
     out = FileComparison(name)
-    old, new = pd.read_csv(old_path), pd.read_csv(new_path)
-    if list(old.columns) != list(new.columns) or len(old) != len(new):
+    (cols, old), (new_cols, new) = _read_csv(old_path), _read_csv(new_path)
+    if cols != new_cols or len(old) != len(new):
         out.differences.append(Difference(
-            name, "shape", f"{len(old)} rows x {list(old.columns)}",
-            f"{len(new)} rows x {list(new.columns)}", "same rows and columns", True))
+            name, "shape", f"{len(old)} rows x {cols}", f"{len(new)} rows x {new_cols}",
+            "same rows and columns", True))
         return out
-    for col in old.columns:
+    index = {c: j for j, c in enumerate(cols)}
+    for j, col in enumerate(cols):
         rule, declared = rule_for(spec, col)
         if not declared:
             out.undeclared.add(col)
@@ -170,15 +231,22 @@ def compare_csv(name: str, old_path: Path, new_path: Path, spec: dict[str, Any]
             continue
         floor = rule.get("floor") if isinstance(rule, dict) else None
         per_row = rule.get("per_row") if isinstance(rule, dict) else None
-        for i, (a, b) in enumerate(zip(old[col], new[col], strict=True)):
-            a, b = _cell(a), _cell(b)
-            est = (float(old[floor].iloc[i]), float(new[floor].iloc[i])) if floor else (0, 0)
-            slack = per_row[1] * float(old[per_row[0]].iloc[i]) if per_row else 0.0
+        for i, (old_row, new_row) in enumerate(zip(old, new, strict=True)):
+            a, b = old_row[j], new_row[j]
             out.compared += 1
-            if a != b and not _both_nan(a, b):
-                out.differences.append(Difference(name, f"row {i + 2}, {col}", a, b,
-                                                  _describe(rule),
-                                                  not rule_allows(rule, a, b, est, slack)))
+            if a == b or _both_nan(a, b):
+                continue
+            if isinstance(rule, Tie):
+                allowed = rule.tied(dict(zip(cols, old_row, strict=True)))
+            else:
+                est = ((_number(old_row[index[floor]]), _number(new_row[index[floor]]))
+                       if floor in index else (0.0, 0.0))
+                slack = (per_row[1] * _number(old_row[index[per_row[0]]])
+                         if per_row and per_row[0] in index else 0.0)
+                allowed = rule_allows(rule, a, b, est, 0.0 if math.isnan(slack) else slack,
+                                      _bound(rule, dict(zip(cols, old_row, strict=True))))
+            out.differences.append(Difference(name, f"row {i + 2}, {col}", a, b,
+                                              _describe(rule), not allowed))
     return out
 
 
@@ -219,14 +287,22 @@ def compare_json(name: str, old_path: Path, new_path: Path, spec: dict[str, Any]
             continue
         out.compared += 1
         if key not in old or key not in new:
-            out.differences.append(Difference(name, key, old.get(key, "(missing)"),
-                                              new.get(key, "(missing)"), "present", True))
+            out.differences.append(Difference(name, key, old.get(key, MISSING),
+                                              new.get(key, MISSING), "present", True))
         elif old[key] != new[key] and not _both_nan(old[key], new[key]):
+            allowed = (rule.tied(_siblings(key, old)) if isinstance(rule, Tie) else
+                       rule_allows(rule, old[key], new[key],
+                                   row_slack=_json_slack(rule, key, old),
+                                   bound=_bound(rule, _siblings(key, old))))
             out.differences.append(Difference(name, key, old[key], new[key], _describe(rule),
-                                              not rule_allows(rule, old[key], new[key],
-                                                              row_slack=_json_slack(rule, key,
-                                                                                    old))))
+                                              not allowed))
     return out
+
+
+def _siblings(key: str, flat: dict[str, Any]) -> dict[str, Any]:
+    """The JSON object holding `key`, as last key -> value (a :class:`Tie`'s row)."""
+    parent = key.rpartition(".")[0]
+    return {k.rpartition(".")[2]: v for k, v in flat.items() if k.rpartition(".")[0] == parent}
 
 
 def _json_slack(rule: Any, key: str, flat: dict[str, Any]) -> float:

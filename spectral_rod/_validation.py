@@ -4,6 +4,7 @@ that names the argument and its allowed range."""
 from __future__ import annotations
 
 import numbers
+from typing import cast
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -39,7 +40,7 @@ def as_float(value: numbers.Real, name: str, allowed: str) -> float:
         return float(value)
     except OverflowError:
         raise ValueError(f"{name} must be {allowed}, got an integer of "
-                         f"{len(str(abs(int(value))))} digits") from None
+                         f"{len(str(abs(value)))} digits") from None
 
 
 def check_choice(value: object, name: str, choices: tuple[str, ...]) -> str:
@@ -170,7 +171,7 @@ def broadcast_points(**arrays: NDArray[np.float64]) -> tuple[int, ...]:
                          ) from None
 
 
-def _scalar(value: object, name: str, what: str) -> object:
+def _scalar(value: object, name: str, what: str) -> float:
     """`value` unwrapped from a 0-d array; TypeError for arrays, bool, str, complex."""
     if isinstance(value, np.ndarray) and value.ndim == 0:
         value = value[()]
@@ -179,7 +180,7 @@ def _scalar(value: object, name: str, what: str) -> object:
                                                                          np.ndarray))
                else type(value).__name__)
         raise TypeError(f"{name} must be a scalar ({what}), got {got}")
-    return value
+    return cast(float, value)  # a numbers.Real: numpy converts it as it does a float
 
 
 def scalar_nu(nu: object, name: str = "nu", max_value: float = 1.0e4) -> float:

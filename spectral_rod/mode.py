@@ -74,7 +74,7 @@ def _centreline(c1: NDArray[np.float64], c2: NDArray[np.float64], twist: float, 
 
 
 def _collocation_fields(twist: float, nu: float, n: int, family: str, s: NDArray[np.float64]
-                        ) -> tuple[NDArray[np.float64], ...]:
+                        ) -> tuple[NDArray[np.floating], ...]:
     """(omega1, omega2, x1, x2) at s, unscaled, from the collocation eigenvector."""
     c1, c2 = collocation_mode_coefficients(abs(twist), nu, n, family)
     if twist < 0:  # p* is even in Omega; the mode of -Omega is the mirror image (omega2 -> -)

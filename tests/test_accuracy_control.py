@@ -82,7 +82,10 @@ def test_estimate_covers_the_eigen_iteration_above_the_default_tol(reference):
     tw, nv = (np.array(a, dtype=float) for a in zip(*itertools.product(
         (55.0, 59.0, 64.0, 73.0, 82.0), (2.15, 10.0, 100.0)), strict=True))
     ref = np.array([reference(float(a), float(b)) for a, b in zip(tw, nv, strict=True)])
-    for tol, undercut in ((1e-4, 1e3), (1e-6, 10.0), (1e-8, 1.5)):
+    # At 1e-8 the iteration often stops inside the tail part (error / tail part 0.80 on one
+    # install, 3.6-4.4 on others: where it stops depends on the engine's rounding), so there
+    # only the bound is asserted.
+    for tol, undercut in ((1e-4, 1e3), (1e-6, 10.0), (1e-8, None)):
         res = collocation_load(tw, nv, n=64, tol=tol, full_output=True)
         err = np.abs(res.p_star / ref - 1)
         tail_part = res.error_estimate - iteration_allowance(tol)
@@ -90,7 +93,8 @@ def test_estimate_covers_the_eigen_iteration_above_the_default_tol(reference):
               f"error / estimate <= {np.max(err / res.error_estimate):.3f}, "
               f"error / tail part alone <= {np.max(err / tail_part):.3g}")
         assert res.converged.all() and np.all(err <= res.error_estimate)
-        assert np.max(err / tail_part) > undercut  # the allowance is what makes it a bound
+        if undercut is not None:  # the allowance is what makes it a bound
+            assert np.max(err / tail_part) > undercut
     assert iteration_allowance(1e-12) == iteration_allowance(1e-14) == 0.0
 
 

@@ -99,3 +99,45 @@ def test_module_entry_point_exit_status():
                           capture_output=True, text=True, timeout=120)
     assert proc.returncode == 2
     assert "usage:" in proc.stderr and proc.stdout == ""
+
+
+@pytest.mark.parametrize("argv", [["all", "figure1"], ["figure1", "all"],
+                                  ["check", "all", "figure1"]])
+def test_all_with_scenes_is_a_usage_error(capsys, argv):
+    assert cli.main(argv) == 2
+    err = capsys.readouterr().err
+    assert "'all' cannot be combined with scene names (figure1)" in err
+    assert "unknown target" not in err
+
+
+@pytest.mark.parametrize("argv", [["info", "figure1"], ["info", "--out", "x"]])
+def test_info_takes_nothing_else(capsys, argv):
+    assert cli.main(argv) == 2
+    assert "'info' takes no scene names" in capsys.readouterr().err
+
+
+def test_info_prints_the_engine(capsys):
+    from spectral_rod.straight_rod.modal_kernel import available
+
+    assert cli.main(["info"]) == 0
+    out = capsys.readouterr().out
+    assert f"kernel: {available()}" in out and "numpy:" in out and "BLAS" in out
+
+
+def test_python_m_spectral_rod_prints_the_engine(tmp_path):
+    # run outside the checkout: the package these tests import, not a source tree in the cwd
+    import json
+
+    import spectral_rod
+    from spectral_rod.straight_rod.modal_kernel import available
+
+    text = subprocess.run([sys.executable, "-m", "spectral_rod"], cwd=tmp_path,
+                          capture_output=True, text=True, timeout=120, check=True).stdout
+    assert text.startswith(f"spectral_rod {spectral_rod.__version__} (Python ")
+    assert ("engine: C kernel" if available() else "engine: numpy (no compiled kernel") in text
+    report = json.loads(subprocess.run([sys.executable, "-m", "spectral_rod", "--json"],
+                                       cwd=tmp_path, capture_output=True, text=True,
+                                       timeout=120, check=True).stdout)
+    assert report["engine"]["kernel"] is available()
+    assert set(report["dependencies"]) >= {"numpy", "scipy", "threadpoolctl"}
+

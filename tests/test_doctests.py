@@ -16,7 +16,7 @@ import spectral_rod
 CANDIDATES = sorted(
     [m.name for m in pkgutil.walk_packages(spectral_rod.__path__, "spectral_rod.")]
     + ["spectral_rod", "reproduce.ledger", "reproduce.tables", "reproduce.compare",
-       "reproduce.io"])
+       "reproduce.io", "reproduce.ties"])
 
 
 def _has_examples(name: str) -> bool:

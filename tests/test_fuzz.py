@@ -468,6 +468,8 @@ EXEMPT = {
                        "test_figure1_forensics",
     "characteristic_mode": "takes a CharacteristicRoot; covered by test_exempt_calls",
     "crossing_wavenumbers": "takes a FamilyCrossing; covered by test_exempt_calls",
+    "engine_report": "no arguments",
+    "format_engine_report": "no arguments",
     "figure1_picture": "no arguments",
     "inst1_variant_table": "no arguments (~4 s); tested in test_derivation_straight_rod",
     "ring_formulation_row": "takes two solver results; covered by test_exempt_calls",

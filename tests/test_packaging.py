@@ -12,6 +12,7 @@ from importlib import metadata, resources
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 import spectral_rod
 from spectral_rod import buckling_mode, critical_load
@@ -22,7 +23,7 @@ META = metadata.metadata("spectral_rod")  # the installed metadata, built from p
 
 
 def test_license_matches_pyproject():
-    assert META["License"] == "MIT"
+    assert META["License-Expression"] == "MIT"
     assert (ROOT / "LICENSE").read_text(encoding="utf-8").startswith("MIT License")
 
 
@@ -106,3 +107,45 @@ def test_the_c_kernel_is_built_where_a_compiler_is():
 
         pytest.skip(f"no C compiler ({compiler}) here")
     assert modal_kernel.available()
+
+
+def test_one_source_for_the_version():
+    # pyproject.toml reads the version from spectral_rod.__version__ (no second literal)
+    tomllib = pytest.importorskip("tomllib")  # Python >= 3.11
+
+    project = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))
+    assert "version" not in project["project"] and "version" in project["project"]["dynamic"]
+    assert project["tool"]["setuptools"]["dynamic"]["version"] == {
+        "attr": "spectral_rod.__version__"}
+    assert META["Version"] == spectral_rod.__version__
+
+
+def _cff_field(text: str, key: str) -> str:
+    """A top-level scalar of a CITATION.cff (YAML), without a YAML parser."""
+    for line in text.splitlines():
+        if line.startswith(f"{key}:"):
+            return line.partition(":")[2].strip().strip('"')
+    raise AssertionError(f"CITATION.cff has no {key!r}")
+
+
+def test_citation_names_the_package_version_and_the_paper():
+    text = (ROOT / "CITATION.cff").read_text(encoding="utf-8")
+    assert _cff_field(text, "cff-version") == "1.2.0"
+    assert _cff_field(text, "version") == spectral_rod.__version__
+    assert _cff_field(text, "license") == META["License-Expression"]
+    assert 'title: "Buckling of rods with spontaneous twist and curvature"' in text
+    assert "family-names: Drozdov" in text and "family-names: Rabin" in text
+
+
+def test_changelog_has_unreleased_and_the_current_version():
+    text = (ROOT / "CHANGELOG.md").read_text(encoding="utf-8")
+    assert "## [Unreleased]" in text
+    assert f"## [{spectral_rod.__version__}]" in text
+
+
+def test_classifiers_name_every_supported_python():
+    classifiers = META.get_all("Classifier") or []
+    low = int(META["Requires-Python"].removeprefix(">=3."))
+    for minor in range(low, 14):
+        assert f"Programming Language :: Python :: 3.{minor}" in classifiers
+    assert "Typing :: Typed" in classifiers

@@ -71,3 +71,40 @@ def test_large_twist_mode_is_finite_and_fast():
     m = spectral_rod.buckling_mode(1000.0, 1.3)
     assert m.method == "characteristic" and m.converged
     assert np.all(np.isfinite(m.x1)) and abs(m.x1[0]) < 1e-12 and abs(m.x1[-1]) < 1e-12
+
+
+def _type_checking_names(init: Path) -> dict[str, str]:
+    """Public name -> "module:attribute" as the TYPE_CHECKING block of `init` binds it (an
+    import ``from spectral_rod.M import A as N`` or an assignment ``N = _M.A``)."""
+    tree = ast.parse(init.read_text(encoding="utf-8"))
+    block = next(node for node in tree.body if isinstance(node, ast.If)
+                 and isinstance(node.test, ast.Name) and node.test.id == "TYPE_CHECKING")
+    aliases, names = {}, {}
+    for node in block.body:
+        if isinstance(node, ast.Import):
+            aliases.update({a.asname: a.name for a in node.names if a.asname})
+        elif isinstance(node, ast.ImportFrom):
+            for a in node.names:
+                names[a.asname or a.name] = f"{node.module}:{a.name}"
+        elif isinstance(node, ast.Assign):
+            value = node.value
+            assert isinstance(value, ast.Attribute) and isinstance(value.value, ast.Name)
+            names[node.targets[0].id] = f"{aliases[value.value.id]}:{value.attr}"
+    return names
+
+
+def test_type_checking_block_matches_the_lazy_exports():
+    # the names type checkers see are exactly the lazy loader's, bound to the same objects
+    seen = _type_checking_names(ROOT / "spectral_rod" / "__init__.py")
+    expected = {}
+    for name, target in spectral_rod._EXPORTS.items():
+        module, _, attr = target.partition(":")
+        expected[name] = f"spectral_rod.{module}:{attr or name}"
+    assert seen == expected
+
+
+def test_a_misspelled_public_name_is_an_attribute_error():
+    import pytest
+
+    with pytest.raises(AttributeError, match="critical_lod"):
+        spectral_rod.critical_lod  # noqa: B018

@@ -71,7 +71,7 @@ import math
 import warnings
 from collections.abc import Sequence
 from functools import lru_cache
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 import numpy as np
 import pandas as pd
@@ -394,7 +394,7 @@ def _isotropic_shift(k1: sp.Expr, k2: sp.Expr, A: sp.Symbol, phi: sp.Function) -
 
 
 @lru_cache(maxsize=1)
-def derive() -> dict[str, object]:
+def derive() -> dict[str, Any]:
     """All steps, checked; returns the results.
 
     Keys: ``w0`` (w10, w20, w30), ``w_first`` (first-order w1, w2, w3 in x1, x2, alpha),
@@ -474,7 +474,7 @@ def coupling_matrix(coeffs: tuple[float, float, float, float], twist_angle: floa
 
 
 def coupled_spectrum(coeffs: tuple[float, float, float, float], twist_angle: float,
-                     n: int = N_DEFAULT) -> NDArray[np.complex128]:
+                     n: int = N_DEFAULT) -> NDArray[np.inexact]:
     """All eigenvalues lambda = P L^2/A1 of :func:`coupling_matrix`.
 
     Example: coupled_spectrum((1, 1, 0, 0), 0.0) contains pi^2 twice (the Euler load).
@@ -506,7 +506,7 @@ class VariantRoot(NamedTuple):
     lowest_complex: complex | None
 
 
-def _split(ev: NDArray[np.complex128]) -> tuple[NDArray[np.float64], NDArray[np.complex128]]:
+def _split(ev: NDArray[np.inexact]) -> tuple[NDArray[np.float64], NDArray[np.complex128]]:
     """(sorted positive real eigenvalues, complex eigenvalues), both divided by pi^2."""
     ev = ev / math.pi**2
     is_real = np.abs(ev.imag) <= IMAG_REL * np.abs(ev)
