@@ -64,14 +64,17 @@ def cpu_level(cpuinfo: str | None = None) -> str:
 def _kernel_entries() -> dict[str, Any]:
     from spectral_rod.straight_rod import modal_kernel
 
-    info: dict[str, Any] = {"kernel": bool(modal_kernel.available())}
+    kernel = bool(modal_kernel.available())
+    info: dict[str, Any] = {"kernel": kernel, "engine": (
+        "C kernel (spectral_rod.straight_rod._modal_kernel)" if kernel
+        else "numpy (no compiled kernel: " + KERNEL_HINT + ")")}
     engine_info = getattr(modal_kernel, "engine_info", None)
     if callable(engine_info):
-        info.update(engine_info())
-    if "engine" not in info:
-        info["engine"] = ("C kernel (spectral_rod.straight_rod._modal_kernel)" if info["kernel"]
-                          else "numpy (no compiled kernel: " + KERNEL_HINT + ")")
-    if info["kernel"] and not any("variant" in k or "isa" in k for k in info):
+        extra = engine_info()
+        info.update({k: v for k, v in extra.items() if k not in ("engine", "available", "isa")})
+        if kernel and extra.get("isa"):
+            info["variant"] = f"{extra['isa']} (picked by the kernel's loader)"
+    if kernel and "variant" not in info:
         machine = platform.machine().lower()
         info["variant"] = (f"{cpu_level()} (best target_clones level of this CPU)"
                            if machine in ("x86_64", "amd64") else f"default ({machine})")
