@@ -5,7 +5,7 @@
 Defaults: ../shared/paper/drozdov-rabin-buckling.tex (relative to the project root) and
 spectral_rod/data/figure1_digitised.csv (shipped with the package). The picture environment is
 also copied verbatim to figure1_picture.tex next to the CSV (its line formatting is evidence
-for spectral_rod.figure1_forensics). See spectral_rod/data/figure1_digitised.md for the
+for spectral_rod.figure1.forensics). See spectral_rod/data/figure1_digitised.md for the
 provenance. Only this script needs the paper.
 """
 
@@ -15,8 +15,8 @@ import sys
 from pathlib import Path
 
 from reproduce.io import write_text, write_with
-from spectral_rod.figure1_forensics import picture_environment
-from spectral_rod.figure_data import parse_figure1
+from spectral_rod.figure1.data import parse_figure1
+from spectral_rod.figure1.forensics import picture_environment
 
 ROOT = Path(__file__).resolve().parent.parent
 DEFAULT_TEX = ROOT.parent / "shared" / "paper" / "drozdov-rabin-buckling.tex"

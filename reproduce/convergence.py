@@ -5,8 +5,8 @@ Models: the hinged straight rod with spontaneous twist (paper, Eq. ``inst1``); p
 Compares, at several (Omega(L), nu) including a large twist: (a) the Chebyshev collocation
 solver (:func:`spectral_rod.critical_load` with ``method="collocation"``) at fixed degree n and
 with automatic resolution, (b) second-order finite differences of the same equations
-(:mod:`spectral_rod.finite_difference`), (c) the cost of the extended-precision characteristic
-equation (:mod:`spectral_rod.characteristic`), which is also the reference for every error.
+(:mod:`spectral_rod.rod.finite_difference`), (c) the cost of the extended-precision characteristic
+equation (:mod:`spectral_rod.rod.characteristic`), which is also the reference for every error.
 Writes: convergence_resolution.png (error vs unknowns per field, log-log), convergence_time.png
 (error vs wall time), convergence_coefficients.png (the mode's Chebyshev coefficients: how
 resolution is judged), convergence.csv (every run), convergence_cost.csv (cost to reach
@@ -404,7 +404,7 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
         f"Figure 1 sweep ({int(speed['points']):,} points, tol {SPEED_TOL:g}): "
         f"{speed['new_s'] * 1e3:.1f} ms against {speed['baseline_s'] * 1e3:.0f} ms for the "
         "obvious implementation (Trefethen `cheb`, n = 24, dense operator and `eigvals` per "
-        f"point; `spectral_rod.baseline`): ratio {speed['ratio']:.0f} in this run "
+        f"point; `spectral_rod.rod.baseline`): ratio {speed['ratio']:.0f} in this run "
         "(informational, wall clock on a shared machine; the benchmark ratio is "
         "`python -m pytest tests/bench -m bench`). The two agree to "
         f"{speed['max_rel_diff']:.1e}.", "",

@@ -258,7 +258,7 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
         "## Extremes: accuracy at the edges of the (Ω(L), ν) plane", "",
         "Reference: the paper's characteristic equation in mpmath at "
         f"{DPS} digits. Routing: collocation for |Ω(L)| < {TWIST_ROUTE:g}, double-precision "
-        "characteristic equation above (`spectral_rod.critical`).", "",
+        "characteristic equation above (`spectral_rod.rod.critical`).", "",
         f"* p*: worst relative error {worst_p['rel_error']:.1e} at Ω = "
         f"{worst_p['twist_angle']:g}, ν = {worst_p['nu']:.12g} (tol {TOL:.0e}, pass limit "
         f"{P_LIMIT:.0e}); "
@@ -278,7 +278,7 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
         "root in its bounds [1, ν]); else collocation.",
         "* Asymptote (not used for values): p* = p_inf [1 − π²(ν−1)²/(4(ν+1)²Ω²)] + "
         "O(Ω⁻³) with p_inf = 2ν/(1+ν); the O(Ω⁻³) term is the ripple "
-        "−π²(ν−1)/(ν+1) p_inf |sin Ω|/Ω³ (`spectral_rod.asymptotics`).",
+        "−π²(ν−1)/(ν+1) p_inf |sin Ω|/Ω³ (`spectral_rod.rod.closed_form`).",
         f"* Status: {'PASS' if ok else 'FAIL'}; run time {time.perf_counter() - t0:.1f} s.",
         "", "![extremes](extremes.png)", "",
         "### p* − 1 (relative error)", "",

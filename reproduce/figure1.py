@@ -5,7 +5,7 @@ Compares: the Chebyshev collocation p* with every digitised point of the paper's
 Writes: figure1.png, figure1.pdf (paper's axes, digitised points over computed curves, residual
 panel), figure1_comparison.csv (computed vs digitised p* at each digitised point),
 figure1_forensics.json / figure1_forensics.png (every point explained:
-:mod:`spectral_rod.figure1_forensics`), the Figure 1 row of the claims ledger (claims.json/.md)
+:mod:`spectral_rod.figure1.forensics`), the Figure 1 row of the claims ledger (claims.json/.md)
 and the report section (per-curve rms/max deviation, resolution, run time, the forensics).
 """
 
@@ -76,7 +76,7 @@ SECTION_TEXT = {
              "deviation, n, error_estimate, mode_family).",
     "forensics_head": "### Every point explained\n\n![Figure 1 forensics]"
                       "(figure1_forensics.png)\n\nAnalysis time {seconds:.1f} s "
-                      "(spectral_rod.figure1_forensics; output `figure1_forensics.json`). A point "
+                      "(spectral_rod.figure1.forensics; output `figure1_forensics.json`). A point "
                       "is *reproduced* if the model's y, printed to the print quantum, equals "
                       "the picture's ({quantum:g} picture units = {quantum_p:.1e} in p*). Points "
                       "{ranges} the imaginary-β₁ window: {sizes}.",
@@ -388,7 +388,7 @@ FIG1 = ClaimSpec(
          "λ − Ω² on fixed step grids; simulated sign-change scans of the boundary "
          "determinant; two runs with a fitted switch), then clusters of points off the best "
          "model and missing grid points, each with computed causes and the LaTeX lines' "
-         "formatting (spectral_rod.figure1_forensics).",
+         "formatting (spectral_rod.figure1.forensics).",
     methods=METHODS, rule=Rule(RULE, figure1_verdict), figure="figure1_forensics.png",
     related=("rod-beta-real", "rod-first-maximum", "rod-further-maxima"))
 

@@ -6,7 +6,7 @@ variant, the BLAS libraries and their threads, and the dependency versions.
 and ``python -m reproduce`` records its ``summary`` line in its report's environment table.
 
 The engine is the batched eigen-solver's compiled kernel
-(:mod:`spectral_rod.straight_rod.modal_kernel`) where it was built at install and loads, and its
+(:mod:`spectral_rod.rod.collocation.modal_kernel`) where it was built at install and loads, and its
 numpy code otherwise (same algorithm, results equal to rounding, 2-5 times slower per solve).
 Where the kernel module offers ``engine_info()``, its entries are reported as they are; the
 instruction-set variant is otherwise the best of the kernel's ``target_clones`` levels
@@ -62,11 +62,11 @@ def cpu_level(cpuinfo: str | None = None) -> str:
 
 
 def _kernel_entries() -> dict[str, Any]:
-    from spectral_rod.straight_rod import modal_kernel
+    from spectral_rod.rod.collocation import modal_kernel
 
     kernel = bool(modal_kernel.available())
     info: dict[str, Any] = {"kernel": kernel, "engine": (
-        "C kernel (spectral_rod.straight_rod._modal_kernel)" if kernel
+        "C kernel (spectral_rod.rod.collocation._modal_kernel)" if kernel
         else "numpy (no compiled kernel: " + KERNEL_HINT + ")")}
     engine_info = getattr(modal_kernel, "engine_info", None)
     if callable(engine_info):

@@ -6,7 +6,7 @@ from functools import lru_cache
 
 import pytest
 
-from spectral_rod.characteristic import characteristic_critical_load
+from spectral_rod.rod.characteristic import characteristic_critical_load
 
 
 @lru_cache(maxsize=4096)

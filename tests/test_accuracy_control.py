@@ -14,10 +14,10 @@ import numpy as np
 import pytest
 
 from spectral_rod import ConvergenceWarning, critical_load
-from spectral_rod.families import FAMILIES
-from spectral_rod.straight_rod.discretisation import family_operator
-from spectral_rod.straight_rod.eigensolver import iteration_allowance, physical_eig, solve_family
-from spectral_rod.straight_rod.resolution import error_estimate, roundoff_floor
+from spectral_rod.rod.collocation.discretisation import family_operator
+from spectral_rod.rod.collocation.eigensolver import iteration_allowance, physical_eig, solve_family
+from spectral_rod.rod.collocation.resolution import error_estimate, roundoff_floor
+from spectral_rod.rod.families import FAMILIES
 
 
 def collocation_load(*args, **kwargs):
@@ -61,7 +61,7 @@ def test_error_is_a_tenth_of_tol_on_random_points(tol):
     # docstring): before, at tol 1e-12, 226 of the 20,000 collocation points of a 200 x 200 map
     # erred by 1.0-1.6e-13 (Omega(L) > 30), ~1 % of points like these. Reference: the
     # characteristic equation in double precision (its error <= eps (8 + |Omega|), 1.3e-14).
-    from spectral_rod.characteristic import double_error_estimate
+    from spectral_rod.rod.characteristic import double_error_estimate
 
     rng = np.random.default_rng(20261205)
     tw, nv = rng.uniform(0.0, 50.0, 1500), 10.0 ** rng.uniform(0.0, 4.0, 1500)
@@ -102,12 +102,12 @@ def test_modal_quotient_round_off_is_far_below_the_loose_iteration_tolerance():
     # tuning.LOOSE_DEGREE: from rtol = LOOSE_RTOL on and up to that degree the eigenvalue
     # is the modal quotient; its difference from the pencil quotient (same converged vectors) is
     # K's round-off, largest at small Omega: measured <= 4e-11 at n = 50 and <= 1.1e-10 at n = 64
-    from spectral_rod.straight_rod.eigensolver import (
+    from spectral_rod.rod.collocation.eigensolver import (
         lowest_eigenpair,
         modal_family,
         pencil_rayleigh_quotient,
     )
-    from spectral_rod.straight_rod.tuning import LOOSE_DEGREE, LOOSE_RTOL
+    from spectral_rod.rod.collocation.tuning import LOOSE_DEGREE, LOOSE_RTOL
 
     rng = np.random.default_rng(5)
     worst = {}

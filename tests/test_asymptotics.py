@@ -1,4 +1,4 @@
-"""Closed forms of spectral_rod.asymptotics against the characteristic equation (mpmath).
+"""Closed forms of spectral_rod.rod.closed_form against the characteristic equation (mpmath).
 
 The references are the extended-precision roots of the paper's characteristic equation, never
 the collocation solver and never the formulas under test.
@@ -12,7 +12,8 @@ import mpmath as mp
 import numpy as np
 import pytest
 
-from spectral_rod.asymptotics import (
+from spectral_rod.rod.characteristic import characteristic_critical_load, family_critical_load
+from spectral_rod.rod.closed_form import (
     crossing_closed_form,
     crossing_twist_asymptotic,
     imaginary_beta1_window,
@@ -21,8 +22,7 @@ from spectral_rod.asymptotics import (
     large_twist_limit,
     large_twist_wavenumbers,
 )
-from spectral_rod.characteristic import characteristic_critical_load, family_critical_load
-from spectral_rod.crossings import collocation_crossing, family_crossing
+from spectral_rod.rod.crossings import collocation_crossing, family_crossing
 
 EPS = float(np.finfo(float).eps)
 

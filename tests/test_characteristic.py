@@ -5,7 +5,7 @@ from __future__ import annotations
 import mpmath as mp
 import pytest
 
-from spectral_rod.characteristic import (
+from spectral_rod.rod.characteristic import (
     characteristic_critical_load,
     determinant,
     family_critical_load,
@@ -47,7 +47,7 @@ def test_family_double_batch_gives_each_familys_lowest_root():
     beyond (1.1 <= nu <= 10), including near the family crossings 2 pi and 3 pi."""
     import numpy as np
 
-    from spectral_rod.characteristic import family_double_batch
+    from spectral_rod.rod.characteristic import family_double_batch
 
     rng = np.random.default_rng(11)
     tw = np.concatenate([rng.uniform(0.1, 20.0, 12), [6.275, 2 * np.pi + 1e-3, 9.43]])
@@ -65,8 +65,8 @@ def test_double_determinants_follow_mpmath_in_both_precisions():
     (X_- < 0 well beyond rounding), the same values elsewhere."""
     import numpy as np
 
-    from spectral_rod.characteristic import determinants
-    from spectral_rod.wavenumbers import characteristic_roots
+    from spectral_rod.rod.characteristic import determinants
+    from spectral_rod.rod.wavenumbers import characteristic_roots
 
     p, om, nu = np.linspace(0.8, 1.6, 17), 3.0, 1.5  # beta_1 imaginary for 0.912 < p < 1.368
     with mp.workdps(30):
@@ -105,7 +105,7 @@ def _points():
 def test_large_twist_brackets_are_certified_and_meet_the_reference():
     import numpy as np
 
-    from spectral_rod.characteristic import _bracketed_batch, characteristic_double
+    from spectral_rod.rod.characteristic import _bracketed_batch, characteristic_double
 
     tw, nv = _points()
     p, fam, ok = _bracketed_batch(tw, nv)
@@ -124,8 +124,8 @@ def test_a_bracket_that_misses_the_root_is_not_certified(monkeypatch):
     # leave no sign change in the brackets, the points go to the scan, and p* stays right
     import numpy as np
 
-    import spectral_rod.asymptotics as asymptotics
-    from spectral_rod.characteristic import (
+    import spectral_rod.rod.closed_form as asymptotics
+    from spectral_rod.rod.characteristic import (
         _bracketed_batch,
         _bracketed_point,
         characteristic_double_batch,
@@ -146,7 +146,7 @@ def test_a_bracket_that_misses_the_root_is_not_certified(monkeypatch):
 def test_family_bound_brackets_near_nu_1():
     import numpy as np
 
-    from spectral_rod.characteristic import _family_bound_batch
+    from spectral_rod.rod.characteristic import _family_bound_batch
 
     tw = np.array([0.0, 1e-6, 0.5, 3.0, 20.0, 49.0])
     nv = 1.0 + np.array([1e-3, 1e-12, 1e-8, 1e-5, 1e-4, 1e-3])

@@ -117,7 +117,7 @@ def test_info_takes_nothing_else(capsys, argv):
 
 
 def test_info_prints_the_engine(capsys):
-    from spectral_rod.straight_rod.modal_kernel import available
+    from spectral_rod.rod.collocation.modal_kernel import available
 
     assert cli.main(["info"]) == 0
     out = capsys.readouterr().out
@@ -129,7 +129,7 @@ def test_python_m_spectral_rod_prints_the_engine(tmp_path):
     import json
 
     import spectral_rod
-    from spectral_rod.straight_rod.modal_kernel import available
+    from spectral_rod.rod.collocation.modal_kernel import available
 
     text = subprocess.run([sys.executable, "-m", "spectral_rod"], cwd=tmp_path,
                           capture_output=True, text=True, timeout=120, check=True).stdout

@@ -8,8 +8,8 @@ import math
 import mpmath
 import pytest
 
-from spectral_rod import cross_section
-from spectral_rod.cross_section import rectangle_torsion_ratio
+from spectral_rod.ring import cross_section
+from spectral_rod.ring.cross_section import rectangle_torsion_ratio
 
 
 def test_zeta5_constant() -> None:

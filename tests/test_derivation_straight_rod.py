@@ -14,7 +14,7 @@ import sympy as sp
 import spectral_rod.derivations.straight_rod as straight_rod
 from reproduce.figure1 import MAX_LIMIT, RMS_LIMIT
 from spectral_rod.derivations._sympy import DerivationError
-from spectral_rod.figure_data import FIGURE1_NU
+from spectral_rod.figure1.data import FIGURE1_NU
 
 WRONG = ("factor_one", "sign_flipped", "A_exchanged")
 CHANGES_P = ("factor_one", "sign_flipped")

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from spectral_rod.errors import PerformanceWarning
-from spectral_rod.straight_rod import modal_kernel
+from spectral_rod.rod.collocation import modal_kernel
 
 needs_kernel = pytest.mark.skipif(not modal_kernel.available(),
                                   reason="the C kernel is not built here")
@@ -80,7 +80,7 @@ _CHILD = """
 import warnings, json, sys
 warnings.simplefilter("always")
 from spectral_rod import critical_load
-from spectral_rod.straight_rod import modal_kernel
+from spectral_rod.rod.collocation import modal_kernel
 with warnings.catch_warnings(record=True) as got:
     warnings.simplefilter("always")
     a = critical_load(3.0, 1.5)
@@ -167,7 +167,7 @@ def test_full_output_names_numpy_without_the_kernel(monkeypatch):
 
 @needs_kernel
 def test_points_the_kernel_rejects_are_recorded_as_numpy(monkeypatch):
-    from spectral_rod.straight_rod.collocation import collocation_critical_load
+    from spectral_rod.rod.collocation.driver import collocation_critical_load
 
     twist, nu = _figure1_sample()
     real = modal_kernel.modal_lowest
@@ -200,9 +200,9 @@ def test_one_lane_kernel_matches_the_numpy_reference(n):
     # on one lane, against the numpy reference's iteration, pencil_rayleigh_quotient and
     # mode_tails on the same points: eigenvalues within the round-off part of the error model,
     # error estimates (what the tail decides) within 1e-3 of each other
-    from spectral_rod.straight_rod import few_points
-    from spectral_rod.straight_rod.resolution import error_estimate
-    from spectral_rod.straight_rod.tuning import iteration_rtol
+    from spectral_rod.rod.collocation import few_points
+    from spectral_rod.rod.collocation.resolution import error_estimate
+    from spectral_rod.rod.collocation.tuning import iteration_rtol
 
     rng = np.random.default_rng(n)
     tw, nv = rng.uniform(0.0, max(1.0, 1.8 * (n - 16)), 40), rng.uniform(1.1, 20.0, 40)
@@ -225,7 +225,7 @@ def test_one_lane_kernel_matches_the_numpy_reference(n):
 
 
 def _numpy_reference(n, family, tw, nv, rtol):
-    from spectral_rod.straight_rod.eigensolver import solve_family
+    from spectral_rod.rod.collocation.eigensolver import solve_family
 
     return solve_family(n, family, tw, nv, rtol=rtol)[:2]
 
@@ -245,9 +245,9 @@ def test_the_solver_stack_carries_no_history():
 
     root = Path(spectral_rod.__file__).parent
     files = [*(path for pattern in ("*.py", "*.c", "*.h")
-               for path in sorted((root / "straight_rod").glob(pattern))),
-             *(root / name for name in ("critical.py", "results.py", "families.py",
-                                        "errors.py"))]
+               for path in sorted((root / "rod" / "collocation").glob(pattern))),
+             *(root / name for name in ("rod/critical.py", "rod/results.py",
+                                        "rod/families.py", "errors.py"))]
     found = [f"{path.name}:{i}: {line.strip()}" for path in files
              for i, line in enumerate(path.read_text().splitlines(), 1)
              if re.search(_HISTORY, line, re.IGNORECASE)]

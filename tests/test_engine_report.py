@@ -8,7 +8,7 @@ import pytest
 
 import spectral_rod
 from spectral_rod import _engine_report
-from spectral_rod.straight_rod import modal_kernel
+from spectral_rod.rod.collocation import modal_kernel
 
 
 def test_the_report_follows_the_kernel(monkeypatch):

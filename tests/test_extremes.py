@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 from spectral_rod import TWIST_ROUTE, ConvergenceWarning, critical_load
-from spectral_rod.asymptotics import large_twist_expansion, large_twist_limit
-from spectral_rod.characteristic import characteristic_critical_load, characteristic_double
+from spectral_rod.rod.characteristic import characteristic_critical_load, characteristic_double
+from spectral_rod.rod.closed_form import large_twist_expansion, large_twist_limit
 
 
 def ref(twist: float, nu: float, dps: int = 40):
@@ -162,7 +162,7 @@ def test_large_twist_route_against_the_order_4_expansion(nu):
     # an independent check of the characteristic route above Omega(L) = 100 (the mpmath
     # reference shares its formulas): the perturbation series to Omega^-4, whose remainder is
     # O(Omega^-5) (measured coefficient <= 63 on these points), plus the route's own estimate
-    from spectral_rod.characteristic import double_error_estimate
+    from spectral_rod.rod.characteristic import double_error_estimate
 
     om = np.array([300.0, 640.0, 1000.0, 3000.0, 1e4])
     p = critical_load(om, nu, tol=1e-11)

@@ -18,8 +18,8 @@ import pytest
 import reproduce.cli
 from reproduce._runner import run_scenes
 from reproduce.io import json_value, remove_stale_temporaries, write_text, write_with
-from spectral_rod import figure_data
-from spectral_rod.figure_data import ReferenceDataError, figure1_path, load_figure1
+from spectral_rod.figure1 import data as figure_data
+from spectral_rod.figure1.data import ReferenceDataError, figure1_path, load_figure1
 
 RUN = [sys.executable, "-m", "reproduce", "figure1", "--out"]
 

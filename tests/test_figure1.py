@@ -13,7 +13,7 @@ import pytest
 
 from reproduce import figure1
 from reproduce.__main__ import main
-from spectral_rod.figure_data import figure1_path, load_figure1, parse_figure1
+from spectral_rod.figure1.data import figure1_path, load_figure1, parse_figure1
 
 ROOT = Path(__file__).resolve().parent.parent
 CSV = figure1_path()

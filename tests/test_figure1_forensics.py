@@ -1,4 +1,4 @@
-"""Figure 1 point by point (spectral_rod.figure1_forensics, issue 12).
+"""Figure 1 point by point (spectral_rod.figure1.forensics, issue 12).
 
 The model's claims are recomputed here from its stated rule (not read from its output); the
 cluster finder is run on synthetic data with known patches; a cluster may only be explained
@@ -20,12 +20,15 @@ import pytest
 
 from reproduce import figure1
 from reproduce.ledger import VERDICTS, Claim
-from spectral_rod.asymptotics import crossing_closed_form, imaginary_beta1_window
-from spectral_rod.characteristic import determinants, family_critical_load
-from spectral_rod.closed_form import boundary_determinant_4x4
-from spectral_rod.critical import critical_load
 from spectral_rod.errors import ReferenceDataError
-from spectral_rod.figure1_forensics import (
+from spectral_rod.figure1.data import (
+    check_picture_matches,
+    figure1_path,
+    figure1_picture,
+    load_figure1,
+    picture_points,
+)
+from spectral_rod.figure1.forensics import (
     MERGE_GAP,
     analyse_figure1,
     determinant_product,
@@ -44,15 +47,12 @@ from spectral_rod.figure1_forensics import (
     site_physics,
     straight_line,
 )
-from spectral_rod.figure1_forensics.scan import REPORT_RULES
-from spectral_rod.figure_data import (
-    check_picture_matches,
-    figure1_path,
-    figure1_picture,
-    load_figure1,
-    picture_points,
-)
-from spectral_rod.wavenumbers import characteristic_roots
+from spectral_rod.figure1.forensics.scan import REPORT_RULES
+from spectral_rod.rod.characteristic import determinants, family_critical_load
+from spectral_rod.rod.characteristic_mode import boundary_determinant_4x4
+from spectral_rod.rod.closed_form import crossing_closed_form, imaginary_beta1_window
+from spectral_rod.rod.critical import critical_load
+from spectral_rod.rod.wavenumbers import characteristic_roots
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -406,7 +406,7 @@ def test_verdict_rule_branches(fx):
 
 
 def test_ledger_row(fx):
-    from spectral_rod.figure_data import load_figure1 as _load
+    from spectral_rod.figure1.data import load_figure1 as _load
 
     table = figure1.comparison_table(_load(CSV))
     summary = figure1.deviation_summary(table)
@@ -473,8 +473,7 @@ def test_a_broken_picture_file_is_named(tmp_path, damage):
 def test_cli_exits_2_naming_a_broken_picture_file(tmp_path, monkeypatch, capsys):
     from reproduce import cli
     from reproduce import figure1 as scene
-    from spectral_rod import figure_data
-
+    from spectral_rod.figure1 import data as figure_data
     bad = tmp_path / "figure1_picture.tex"
     bad.write_text(figure1_picture()[:5000], encoding="utf-8")
     monkeypatch.setattr(scene, "figure1_picture", lambda: figure_data.figure1_picture(bad))

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from spectral_rod.finite_difference import fd_critical_load, fd_operator
+from spectral_rod.rod.finite_difference import fd_critical_load, fd_operator
 
 
 @pytest.mark.parametrize("twist,nu", [(0.0, 1.5), (2.0, 1.5), (7.0, 1.1), (20.0, 3.0)])

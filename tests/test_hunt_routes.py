@@ -11,10 +11,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-import spectral_rod.increment as increment
+import spectral_rod.rod.increment as increment
 from spectral_rod import ConvergenceWarning, critical_load
-from spectral_rod.characteristic import characteristic_critical_load
-from spectral_rod.closed_form import characteristic_mode
+from spectral_rod.rod.characteristic import characteristic_critical_load
+from spectral_rod.rod.characteristic_mode import characteristic_mode
 
 sys.path.insert(0, str(Path(__file__).parent / "bench"))
 import hunt_routes

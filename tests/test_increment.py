@@ -14,8 +14,8 @@ import mpmath as mp
 import numpy as np
 import pytest
 
-from spectral_rod.characteristic import characteristic_critical_load
-from spectral_rod.increment import critical_load_increment, galerkin_increments
+from spectral_rod.rod.characteristic import characteristic_critical_load
+from spectral_rod.rod.increment import critical_load_increment, galerkin_increments
 
 sys.path.insert(0, str(Path(__file__).parent / "bench"))
 import hunt_increment
@@ -93,7 +93,7 @@ def test_increment_at_twist_1000():
 def test_closed_form_moments_equal_the_quadrature(twist):
     # the batched route's closed forms (sinc sums) against the Gauss-Legendre quadrature of the
     # same integrals: two independent evaluations of every omega2 moment
-    from spectral_rod.increment import _moments_closed, _moments_dense, bucket
+    from spectral_rod.rod.increment import _moments_closed, _moments_dense, bucket
 
     n = bucket(twist)
     om = np.array([twist, 0.5 * twist])
@@ -112,7 +112,7 @@ def test_a_point_does_not_depend_on_the_other_points_of_the_call():
     # stacks iterate until their slowest point converges; a finished point must keep its value,
     # so on one route (here the closed forms: > DENSE_POINTS points share each bucket) a point's
     # result is the same to the last bit whatever else is in the call
-    from spectral_rod.increment import DENSE_POINTS, bucket, galerkin_increments
+    from spectral_rod.rod.increment import DENSE_POINTS, bucket, galerkin_increments
 
     rng = np.random.default_rng(3)
     tw, nu = rng.uniform(20.0, 23.0, 40), 1.0 + 10.0 ** rng.uniform(-8.0, -3.0, 40)
@@ -129,7 +129,7 @@ def test_a_point_does_not_depend_on_the_other_points_of_the_call():
 def test_relative_accuracy_of_a_stack(twist):
     # the same grid as one array call: more than DENSE_POINTS points share each bucket, so the
     # stacked route (closed-form moments) answers; reference: mpmath characteristic equation
-    from spectral_rod.increment import DENSE_POINTS
+    from spectral_rod.rod.increment import DENSE_POINTS
 
     small = [e for e in NU_MINUS_1 if e <= 1e-3]
     nu = 1.0 + np.repeat(small, 2)

@@ -1,4 +1,4 @@
-"""The batched engine's C kernel (spectral_rod/straight_rod/modal_kernel.py) against the numpy
+"""The batched engine's C kernel (spectral_rod/rod/collocation/modal_kernel.py) against the numpy
 iteration of the same algorithm (eigensolver._iterate), which is its reference and fallback."""
 
 from __future__ import annotations
@@ -7,10 +7,10 @@ import numpy as np
 import pytest
 
 from spectral_rod import load_figure1
-from spectral_rod.families import SHIFT
-from spectral_rod.straight_rod import eigensolver as E
-from spectral_rod.straight_rod import modal_kernel
-from spectral_rod.straight_rod.stacked_inverse import BACKWARD_TOL
+from spectral_rod.rod.collocation import eigensolver as E
+from spectral_rod.rod.collocation import modal_kernel
+from spectral_rod.rod.collocation.stacked_inverse import BACKWARD_TOL
+from spectral_rod.rod.families import SHIFT
 
 needs_kernel = pytest.mark.skipif(not modal_kernel.available(),
                                   reason="the C kernel is not built here")

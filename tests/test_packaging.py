@@ -16,7 +16,7 @@ import pytest
 
 import spectral_rod
 from spectral_rod import buckling_mode, critical_load
-from spectral_rod.figure_data import figure1_path, figure1_schema
+from spectral_rod.figure1.data import figure1_path, figure1_schema
 
 ROOT = Path(__file__).resolve().parent.parent
 META = metadata.metadata("spectral_rod")  # the installed metadata, built from pyproject.toml
@@ -99,7 +99,7 @@ def test_the_c_kernel_is_built_where_a_compiler_is():
     import shutil
     import sysconfig
 
-    from spectral_rod.straight_rod import modal_kernel
+    from spectral_rod.rod.collocation import modal_kernel
 
     compiler = (sysconfig.get_config_var("CC") or "cc").split()[0]
     if shutil.which(compiler) is None:

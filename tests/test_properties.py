@@ -23,8 +23,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from spectral_rod import critical_load
-from spectral_rod.characteristic import double_error_estimate
-from spectral_rod.increment import critical_load_increment
+from spectral_rod.rod.characteristic import double_error_estimate
+from spectral_rod.rod.increment import critical_load_increment
 
 SETTINGS = settings(max_examples=25, deadline=None)
 twists = st.floats(min_value=0.0, max_value=1e4, allow_nan=False)

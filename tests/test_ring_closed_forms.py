@@ -1,4 +1,4 @@
-"""The ring's closed forms (:mod:`spectral_rod.ring_closed_forms`) against classical hand values
+"""The ring's closed forms (:mod:`spectral_rod.ring.closed_forms`) against classical hand values
 and against a scan over the wavenumber n (the minimum is at n = 2).  The solvers are tested
 against these functions in test_ring_stability.py and test_ring_second_formulation.py."""
 
@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from spectral_rod.ring_closed_forms import (
+from spectral_rod.ring.closed_forms import (
     homogenised_limit,
     in_plane_untwisted,
     out_of_plane_supremum,

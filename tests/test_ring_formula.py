@@ -8,7 +8,7 @@ import math
 import numpy as np
 import pytest
 
-from spectral_rod.ring_formula import ThresholdTwist, ring_formula_load, threshold_twist
+from spectral_rod.ring.formula import ThresholdTwist, ring_formula_load, threshold_twist
 
 
 def crit2_dimensional(E1: float, E2: float, I1: float, I2: float, R: float, N: int) -> float:

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from spectral_rod import RING_LOADS, ring_buckling
-from spectral_rod.ring_closed_forms import (
+from spectral_rod.ring.closed_forms import (
     homogenised_limit,
     in_plane_mode_load,
     in_plane_untwisted,
@@ -18,14 +18,14 @@ from spectral_rod.ring_closed_forms import (
     out_of_plane_untwisted,
     untwisted_critical_load,
 )
-from spectral_rod.ring_loads import (
+from spectral_rod.ring.loads import (
     RIGID_MOTIONS,
     constraint_rank_on_rigid_motions,
     rigid_motion_load_work,
     rigid_motion_stiffness,
     rigid_motion_vectors,
 )
-from spectral_rod.ring_munder import munder_buckling
+from spectral_rod.ring.munder import munder_buckling
 
 #: Classical in-plane loads q_cr R^3/(EI), n = 2 (Simitses & Hodges, rings: 3 for pressure
 #: normal to the deformed ring, 4.5 centrally directed, 4 of constant direction); "axis" is the

@@ -1,4 +1,4 @@
-"""The second ring formulation (:mod:`spectral_rod.ring_munder`): Eq. ``Munder`` linearised
+"""The second ring formulation (:mod:`spectral_rod.ring.munder`): Eq. ``Munder`` linearised
 numerically, against closed forms independent of both formulations, against the energy
 formulation (:func:`spectral_rod.ring_critical_load`), and against itself (Kirchhoff balances,
 resolution, blocking, complex step).  Loads q R^3/(E1 I1); A1 = 1, A2 = nu, A3 = e (1 + nu)."""
@@ -10,10 +10,10 @@ import itertools
 import numpy as np
 import pytest
 
-import spectral_rod.ring_munder as rm
+import spectral_rod.ring.munder as rm
 from spectral_rod import RING_LOADS, RingConvergenceError, ring_buckling
-from spectral_rod.ring_closed_forms import in_plane_untwisted, out_of_plane_untwisted
-from spectral_rod.ring_munder import (
+from spectral_rod.ring.closed_forms import in_plane_untwisted, out_of_plane_untwisted
+from spectral_rod.ring.munder import (
     AGREEMENT_CASES,
     E_ISOTROPIC,
     MUNDER_TERMS,
@@ -250,7 +250,7 @@ def test_edge_cases_agree_whether_split_or_not(N: int, nu: float, e: float, load
     """At the edges of the parameter range the equilibrated entries come close to PATTERN_TOL
     (measured: with or without a gap depending on the library versions' round-off); blocks
     follows its rule and the load agrees with the energy formulation either way."""
-    from spectral_rod.ring_stability import ring_buckling
+    from spectral_rod.ring.second_variation import ring_buckling
 
     M = rm._truncations(N)[1]
     J0, J1 = rm.pencil(rm._problem(N, nu, e, load, M, "munder"))
@@ -340,7 +340,7 @@ def test_munder_mode_kind_agrees_near_circular_sections(N, nu, e, load) -> None:
     the second variation out-of-plane (in-plane share of the load work 5e-16..4e-11): the
     support threshold was applied to the equilibrated unknowns, whose column factors inflate
     the in-plane fields; on the physical amplitudes the two agree."""
-    from spectral_rod.ring_stability import ring_buckling
+    from spectral_rod.ring.second_variation import ring_buckling
 
     ref = ring_buckling(N, nu, e_ratio=e, load=load)
     got = rm.munder_buckling(N, nu, e_ratio=e, load=load)

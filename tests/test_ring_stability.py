@@ -14,22 +14,24 @@ import sympy as sp
 
 import spectral_rod.derivations.ring_linearisation as ring_linearisation
 from spectral_rod.errors import ConvergenceWarning
-from spectral_rod.ring_closed_forms import (
+from spectral_rod.ring.closed_forms import (
     homogenised_limit,
     in_plane_untwisted,
     out_of_plane_untwisted,
 )
-from spectral_rod.ring_formula import ring_formula_load
-from spectral_rod.ring_stability import (
+from spectral_rod.ring.critical import (
+    destabilisation_threshold,
+    ring_critical_load,
+    twist_raises_load,
+)
+from spectral_rod.ring.formula import ring_formula_load
+from spectral_rod.ring.second_variation import (
     RING_LOADS,
     RingConvergenceError,
     assemble,
-    destabilisation_threshold,
     frequency_families,
     rigid_body_constraints,
     ring_buckling,
-    ring_critical_load,
-    twist_raises_load,
 )
 
 
@@ -132,7 +134,7 @@ def test_untwisted_in_plane(load: str, expected: float) -> None:
 @pytest.mark.parametrize("load", ["hydrostatic", "axis"])
 def test_untwisted_out_of_plane_timoshenko(e: float, load: str) -> None:
     A3 = 2 * e
-    from spectral_rod.ring_stability import roundoff_floor
+    from spectral_rod.ring.second_variation import roundoff_floor
 
     tol = max(1e-12, 2 * roundoff_floor(e))  # 3.6e-12 at e = 1e3
     r = ring_buckling(0, 1.0, e_ratio=e, load=load, subspace="out-of-plane", tol=tol)
@@ -241,7 +243,7 @@ def test_mode_kinds_and_shape() -> None:
 
 
 def test_not_converged_is_flagged(monkeypatch: pytest.MonkeyPatch) -> None:
-    import spectral_rod.ring_stability as rs
+    import spectral_rod.ring.second_variation as rs
 
     monkeypatch.setattr(rs, "_truncations", lambda N, M: [2 * N + 2, 2 * N + 4])  # too coarse
     with pytest.raises(RingConvergenceError, match="not converged"):
@@ -340,7 +342,7 @@ def test_destabilisation_threshold_validates(kwargs, exc, name):
 
 def test_destabilisation_threshold_checks_twists_against_the_chosen_method() -> None:
     from spectral_rod import destabilisation_threshold
-    from spectral_rod.ring_munder import MAX_TWIST
+    from spectral_rod.ring.munder import MAX_TWIST
 
     with pytest.raises(ValueError, match=rf"\[0, {MAX_TWIST}\]"):  # before any solve
         destabilisation_threshold(1.0, "hydrostatic", [1.5, 2.0], twists=[0, MAX_TWIST + 1],
@@ -364,7 +366,7 @@ def test_extreme_torsional_stiffness_meets_only_its_roundoff_floor(e: float) -> 
     (2.75e-10 at e = 1e6, 4.3e-11 at 1e-6) exceeds the default tol while successive
     truncations agree to ~1e-15: before 2026-12-04 this was reported converged. Now the load
     is within roundoff_floor(e) of the closed form, and a tol below that floor is not met."""
-    from spectral_rod.ring_stability import RingConvergenceError, roundoff_floor
+    from spectral_rod.ring.second_variation import RingConvergenceError, roundoff_floor
 
     exact = min(in_plane_untwisted(1.0, "hydrostatic"), out_of_plane_untwisted(1.0, 2.0 * e))
     floor = roundoff_floor(e)
@@ -381,8 +383,8 @@ def test_extreme_torsional_stiffness_meets_only_its_roundoff_floor(e: float) -> 
 def test_an_unreachable_tol_is_refused_before_solving() -> None:
     """The Munder form at N = 20, nu = 1e4, e = 1e-6 ran for minutes before ending unconverged
     (found 2026-12-04); its tol 1e-10 is below the floor 1.8e-9, so it is refused at once."""
-    from spectral_rod.ring_munder import munder_buckling
-    from spectral_rod.ring_stability import RingConvergenceError
+    from spectral_rod.ring.munder import munder_buckling
+    from spectral_rod.ring.second_variation import RingConvergenceError
 
     with pytest.raises(RingConvergenceError, match="below the round-off floor"):
         munder_buckling(20, 1e4, e_ratio=1e-6)
@@ -397,7 +399,7 @@ def test_stiff_torsion_corner_is_refused() -> None:
     range converges (checked at N = 5, where the same floor applies and the solve is fast)."""
     import time
 
-    from spectral_rod.ring_stability import RingConvergenceError, roundoff_floor
+    from spectral_rod.ring.second_variation import RingConvergenceError, roundoff_floor
 
     t = time.perf_counter()
     with pytest.raises(RingConvergenceError, match=r"ask for tol in \["):

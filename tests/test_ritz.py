@@ -1,7 +1,7 @@
-"""Rayleigh–Ritz from the lab-frame energy (spectral_rod.ritz) against independent references.
+"""Rayleigh–Ritz from the lab-frame energy (spectral_rod.rod.ritz) against independent references.
 
 References: the paper's characteristic equation in mpmath (the `reference` fixture for p*,
-spectral_rod.characteristic.family_critical_load per family), closed forms (nu = 1 and
+spectral_rod.rod.characteristic.family_critical_load per family), closed forms (nu = 1 and
 Omega = 0: Euler loads), Legendre algebra from numpy.polynomial (exact integration) for the
 basis. The Ritz code never calls the characteristic equation.
 """
@@ -16,11 +16,11 @@ import numpy as np
 import pytest
 from numpy.polynomial import legendre as npleg
 
-import spectral_rod.ritz as ritz
+import spectral_rod.rod.ritz as ritz
 from spectral_rod import ConvergenceWarning
-from spectral_rod.characteristic import family_critical_load
-from spectral_rod.quadrature import gauss_legendre
-from spectral_rod.ritz import (
+from spectral_rod.numerics.quadrature import gauss_legendre
+from spectral_rod.rod.characteristic import family_critical_load
+from spectral_rod.rod.ritz import (
     RITZ_MAX_TWIST,
     RitzLoad,
     family_ritz_value,
@@ -102,14 +102,14 @@ def test_zero_twist_gives_euler_loads_per_family(nu):
 @pytest.mark.parametrize("twist,nu", [(3.0, 1.5), (12.0, 10.0), (47.0, 2.0), (90.0, 100.0)])
 def test_each_family_agrees_with_its_characteristic_determinant(twist, nu):
     # checks the parity assignment: the family named 'symmetric' here is the one whose
-    # determinant D_sym is used in spectral_rod.characteristic, and likewise 'antisymmetric'
+    # determinant D_sym is used in spectral_rod.rod.characteristic, and likewise 'antisymmetric'
     for fam in FAMILIES:
         got = ritz_critical_load(twist, nu, family=fam)
         assert got == pytest.approx(family_reference(fam, twist, nu), rel=1e-12)
 
 
 def test_family_of_p_star_matches_the_characteristic_equation():
-    from spectral_rod.characteristic import characteristic_critical_load
+    from spectral_rod.rod.characteristic import characteristic_critical_load
     for twist, nu in [(3.0, 1.5), (7.0, 2.0), (12.0, 10.0), (25.0, 3.0)]:
         res = ritz_critical_load(twist, nu, full_output=True)
         assert res.family == characteristic_critical_load(twist, nu).family

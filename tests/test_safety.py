@@ -43,7 +43,7 @@ def test_isotropic_rod_never_below_euler(twist):
 @pytest.mark.parametrize("func", ["characteristic_critical_load", "family_critical_load"])
 def test_reference_knobs_are_validated_before_any_work(func, kwargs, exc, monkeypatch):
     # was: a root that is not the lowest (scan_step=1e300), nan, or a hang (12 cases)
-    import spectral_rod.characteristic as ch
+    import spectral_rod.rod.characteristic as ch
 
     f = getattr(sr, func)
     args = ("symmetric", 3.0, 100.0) if func == "family_critical_load" else (3.0, 100.0)
@@ -64,7 +64,7 @@ def test_closed_forms_refuse_arguments_outside_their_validity():
 def test_large_twist_mode_is_the_characteristic_route(twist, monkeypatch):
     # was: 118 s at 1000, > 120 s at 3000, 8 GB exhausted at 1e4 (collocation at n = 512 and a
     # dense fit): the closed-form route answers, and no collocation is ever entered
-    import spectral_rod.mode as mode_module
+    import spectral_rod.rod.mode as mode_module
 
     monkeypatch.setattr(mode_module, "_collocation_fields", _must_not_run("collocation"))
     monkeypatch.setattr(mode_module, "collocation_mode_coefficients",
@@ -75,7 +75,7 @@ def test_large_twist_mode_is_the_characteristic_route(twist, monkeypatch):
 
 
 def test_output_grid_size_is_checked_before_the_solve(monkeypatch):
-    import spectral_rod.mode as mode_module
+    import spectral_rod.rod.mode as mode_module
 
     with monkeypatch.context() as m:
         m.setattr(mode_module, "solve_points", _must_not_run("the solve"))
@@ -88,7 +88,7 @@ def test_increment_at_large_twist_is_bounded(monkeypatch):
     # was: 5.5 s a point at (1000, 1.0005), a Cholesky factorisation per Newton step of a
     # ~1400 x 1400 system; the cost is bounded by one basis of bucket(1000) sine modes and the
     # fixed-point solves (nu - 1 <= FIXED_POINT_MAX_E): no factorisation at all
-    import spectral_rod.increment as inc
+    import spectral_rod.rod.increment as inc
 
     sizes = []
     real = inc._bucket_increments
@@ -187,7 +187,7 @@ def test_scalar_and_array_calls_agree_to_the_stated_bound(points, capsys):
 def test_scalar_and_array_calls_agree_at_a_looser_tol(points, tol, capsys):
     # critical_load's docstring: at a looser tol, within the round-off part plus the iteration
     # tolerance at equal degree (the round-off part alone is exceeded there: printed)
-    from spectral_rod.straight_rod.eigensolver import iteration_rtol
+    from spectral_rod.rod.collocation.eigensolver import iteration_rtol
 
     tw, nv = _agreement_points(points)
     diff, larger, roundoff, same, _ = _agreement(tw, nv, tol)
@@ -228,8 +228,8 @@ def test_a_two_point_mode_grid_is_normalised():
 def test_a_two_point_closed_form_mode_is_scaled_like_a_fine_one():
     # found in review: characteristic_mode scaled by the output grid; at the two hinges x = 0
     # and the "mode" was rounding noise scaled to 1
-    from spectral_rod.characteristic import characteristic_critical_load
-    from spectral_rod.closed_form import characteristic_mode
+    from spectral_rod.rod.characteristic import characteristic_critical_load
+    from spectral_rod.rod.characteristic_mode import characteristic_mode
 
     root = characteristic_critical_load(3.0, 2.0)
     coarse, fine = (characteristic_mode(root, 3.0, 2.0, points=k) for k in (2, 201))
@@ -249,7 +249,7 @@ def _must_not_run(what: str):
 def test_a_non_finite_mode_raises(twist, nu, where, monkeypatch):
     """The guard behind the fuzz finding of 2026-12-04 (a nan mode returned converged=True):
     fields that come out nan or zero raise instead of being returned."""
-    import spectral_rod.mode as mode
+    import spectral_rod.rod.mode as mode
 
     real = getattr(mode, where)
     for broken in (np.nan, 0.0):
@@ -262,7 +262,7 @@ def test_a_non_finite_mode_raises(twist, nu, where, monkeypatch):
 
 
 def test_a_non_finite_closed_form_mode_raises(monkeypatch):
-    import spectral_rod.closed_form as cf
+    import spectral_rod.rod.characteristic_mode as cf
 
     root = sr.characteristic_critical_load(5.0, 1.5)
     size = 2 + cf.SCALE_POINTS  # the output grid of points=2 and the fixed scale grid

@@ -19,14 +19,14 @@ from threadpoolctl import threadpool_info, threadpool_limits
 
 from spectral_rod import ConvergenceWarning, CriticalLoad, critical_load
 from spectral_rod._blas_threads import one_blas_thread
-from spectral_rod.characteristic import characteristic_double_batch
-from spectral_rod.families import CLOSE_REL
-from spectral_rod.router import NEAR_DEGENERATE, TWIST_ROUTE, route, route_point
-from spectral_rod.sign_scan import bracketed_roots, lowest_root, lowest_roots
-from spectral_rod.straight_rod import modal_kernel
-from spectral_rod.straight_rod.collocation import pick_family, pick_family_scalar
-from spectral_rod.straight_rod.eigensolver import solve_family
-from spectral_rod.straight_rod.few_points import solve_few, solve_one
+from spectral_rod.numerics.sign_scan import bracketed_roots, lowest_root, lowest_roots
+from spectral_rod.rod.characteristic import characteristic_double_batch
+from spectral_rod.rod.collocation import modal_kernel
+from spectral_rod.rod.collocation.driver import pick_family, pick_family_scalar
+from spectral_rod.rod.collocation.eigensolver import solve_family
+from spectral_rod.rod.collocation.few_points import solve_few, solve_one
+from spectral_rod.rod.families import CLOSE_REL
+from spectral_rod.rod.router import NEAR_DEGENERATE, TWIST_ROUTE, route, route_point
 
 TWISTS = (0.0, 1e-3, 0.7, 3.0, 6.3, 9.9, 20.0, 45.0)
 NUS = (1.0 + 1e-6, 1.001, 1.1, 1.5, 4.0, 100.0)
@@ -74,7 +74,7 @@ def test_one_element_arrays_take_the_scalar_path_with_the_general_output(
         monkeypatch, twist_shape, nu_shape, dtype):
     # e.g. scipy.optimize.least_squares passes (1,) vectors: the scalar path answers, and the
     # result has the types, dtypes and shapes of the general path's (which it replaces)
-    import spectral_rod.critical as critical
+    import spectral_rod.rod.critical as critical
 
     def arg(value, shape):
         return value if shape is None else np.reshape(np.asarray(value, dtype=dtype), shape)
@@ -108,7 +108,7 @@ def test_one_element_arrays_outside_the_scalar_path_take_the_general_path():
 def test_scalar_path_does_not_solve_below_the_round_off_floor(monkeypatch, reference):
     # tol under the floor eps (32 + 0.3 Omega^2) cannot be met: the scalar path must hand the
     # point to the general path before solving (it solved twice), which warns and flags it
-    import spectral_rod.straight_rod.collocation as collocation
+    import spectral_rod.rod.collocation.driver as collocation
 
     with pytest.warns(ConvergenceWarning):
         array = critical_load(np.array([45.0]), 1.5, tol=1e-14, full_output=True)
@@ -194,7 +194,7 @@ def test_one_point_solver_matches_the_batched_engine_and_the_batch_path(few_engi
 
 
 def test_degree_groups_are_pooled_where_the_cost_model_says_it_is_cheaper():
-    from spectral_rod.straight_rod.collocation import solve_degrees
+    from spectral_rod.rod.collocation.driver import solve_degrees
 
     n = np.repeat([16, 18, 20], [50, 50, 300])
     assert solve_degrees(n).tolist() == [20] * n.size  # two small groups join a large one
@@ -207,7 +207,7 @@ def test_degree_groups_are_pooled_where_the_cost_model_says_it_is_cheaper():
 
 
 def _plan_cost(n, solved_at):
-    from spectral_rod.straight_rod.collocation import solve_cost
+    from spectral_rod.rod.collocation.driver import solve_cost
 
     degs, counts = np.unique(solved_at, return_counts=True)
     return sum(solve_cost(int(c), int(d)) for d, c in zip(degs, counts, strict=True))
@@ -216,8 +216,8 @@ def _plan_cost(n, solved_at):
 @settings(max_examples=200, deadline=None)
 @given(st.lists(st.integers(4, 40).map(lambda k: 2 * k), min_size=1, max_size=600))
 def test_pooled_degrees_never_lower_and_never_costlier(degrees):
-    from spectral_rod.straight_rod.collocation import solve_degrees
-    from spectral_rod.straight_rod.tuning import LEAN_MAX_DEGREE
+    from spectral_rod.rod.collocation.driver import solve_degrees
+    from spectral_rod.rod.collocation.tuning import LEAN_MAX_DEGREE
 
     n = np.array(degrees)
     out = solve_degrees(n)
@@ -228,8 +228,8 @@ def test_pooled_degrees_never_lower_and_never_costlier(degrees):
 
 def test_a_pooled_call_meets_tol_and_agrees_with_scalar_calls(reference):
     # one curve of 300 points spans degrees 16-28: its groups are pooled at higher degrees
-    from spectral_rod.straight_rod.collocation import solve_degrees
-    from spectral_rod.straight_rod.resolution import initial_degree
+    from spectral_rod.rod.collocation.driver import solve_degrees
+    from spectral_rod.rod.collocation.resolution import initial_degree
 
     tw = np.linspace(0.1, 12.0, 300)
     assert np.any(solve_degrees(initial_degree(tw, 1e-12)) > initial_degree(tw, 1e-12))
@@ -313,7 +313,7 @@ def test_scalar_large_twist_path(monkeypatch, reference):
     """A scalar call on the large-twist route (auto, or the characteristic method forced) takes
     the scalar path, gives the general path's answer bit for bit, meets the reference, and
     hands a tol it cannot meet to the general path, which warns and flags it."""
-    import spectral_rod.critical as critical
+    import spectral_rod.rod.critical as critical
 
     cases = [(80.0, 1.5, "auto"), (999.0, 1.0 + 1e-9, "auto"), (3.0, 1.5, "characteristic"),
              (-250.0, 1e4, "auto")]
@@ -337,7 +337,7 @@ def test_few_brackets_in_floats_agree_with_the_array_refinement(reference):
     """The refinement of a few brackets in Python floats (characteristic.FEW_POINTS) and of
     many on numpy arrays find the same roots to within the route's error estimate, and both
     meet the reference."""
-    from spectral_rod.characteristic import FEW_POINTS, double_error_estimate
+    from spectral_rod.rod.characteristic import FEW_POINTS, double_error_estimate
 
     rng = np.random.default_rng(11)
     tw = rng.uniform(50.0, 1000.0, 2 * FEW_POINTS + 1)
@@ -356,7 +356,7 @@ def test_few_brackets_in_floats_agree_with_the_array_refinement(reference):
 def test_scalar_bracketed_root_is_the_array_iteration(roots, lo, width):
     """bracketed_root (Python floats) takes the iterates of bracketed_roots (arrays): on the
     same polynomial, bit for bit."""
-    from spectral_rod.sign_scan import bracketed_root
+    from spectral_rod.numerics.sign_scan import bracketed_root
 
     def poly(x):
         out = x - roots[0]
@@ -413,7 +413,7 @@ def test_scalar_acceptance_rule_is_the_array_rule(sums, tail, quotient, jitter, 
     path's, arrays) accepts, with the same lambda and tail, on zero, infinite and nan iterates
     and modes and on power estimates around the acceptance threshold (jitter: theta_2k about
     theta_k (1 + jitter), delta^2 near rtol)."""
-    from spectral_rod.straight_rod.few_points import _Iterates, _judge, _judge_one
+    from spectral_rod.rod.collocation.few_points import _Iterates, _judge, _judge_one
 
     if all(math.isfinite(v) for v in sums[:2]) and sums[0] != 0.0:
         sums[3] = sums[2] * (sums[1] / sums[0]) * (1.0 + jitter)
@@ -434,8 +434,8 @@ def test_lean_loose_eigenvalue_is_the_discrete_eigenvalue_within_the_iteration_t
     the figure the docstring quotes, on Figure 1's and random points at their a priori degree
     and n = 64."""
     from spectral_rod import load_figure1
-    from spectral_rod.straight_rod.eigensolver import solve_family_eig
-    from spectral_rod.straight_rod.resolution import initial_degree_scalar
+    from spectral_rod.rod.collocation.eigensolver import solve_family_eig
+    from spectral_rod.rod.collocation.resolution import initial_degree_scalar
 
     d = load_figure1()
     rng = np.random.default_rng(7)

@@ -7,8 +7,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from spectral_rod.straight_rod import eigensolver
-from spectral_rod.straight_rod.stacked_inverse import (
+from spectral_rod.rod.collocation import eigensolver
+from spectral_rod.rod.collocation.stacked_inverse import (
     BLOCK_ENTRIES,
     block_inverse,
     stacked_inverse,

@@ -12,16 +12,16 @@ import numpy as np
 import pytest
 
 from spectral_rod import buckling_mode, non_planarity
-from spectral_rod.characteristic import (
+from spectral_rod.rod.characteristic import (
     characteristic_critical_load,
     determinant,
     family_critical_load,
 )
-from spectral_rod.closed_form import boundary_determinant_4x4, characteristic_mode
-from spectral_rod.critical import critical_load
-from spectral_rod.crossings import family_crossing, family_slope
-from spectral_rod.straight_rod import collocation_family_load
-from spectral_rod.straight_rod.eigensolver import solve_family
+from spectral_rod.rod.characteristic_mode import boundary_determinant_4x4, characteristic_mode
+from spectral_rod.rod.collocation import collocation_family_load
+from spectral_rod.rod.collocation.eigensolver import solve_family
+from spectral_rod.rod.critical import critical_load
+from spectral_rod.rod.crossings import family_crossing, family_slope
 
 #: Omega(L) in [0, 40] (with the special twists pi, 2 pi, 3 pi and the window around pi) and
 #: nu in [1, 10]
@@ -105,7 +105,7 @@ def test_closed_form_mode_of_a_split_pair():
     s = np.linspace(0.0, 1.0, 61)
     a = characteristic_mode(family_critical_load("antisymmetric", 1e-13, 4.0), 1e-13, 4.0,
                             points=61)
-    from spectral_rod.mode import _collocation_fields
+    from spectral_rod.rod.mode import _collocation_fields
     _, _, x1, x2 = _collocation_fields(1e-3, 4.0, 40, "antisymmetric", s)
     u, v = np.concatenate([a.x1, a.x2]), np.concatenate([x1, x2])
     u, v = u / np.linalg.norm(u), v / np.linalg.norm(v)
@@ -188,7 +188,7 @@ def _closed_form_vs_collocation(family: str, twist: float, nu: float, n: int = 4
     """Max difference (up to sign) of the unit-norm centrelines (x1, x2) of the closed-form mode
     of family_critical_load's 40-digit root and of the family's collocation eigenvector at
     degree n: two independent solutions of inst1's mode."""
-    from spectral_rod.mode import _collocation_fields
+    from spectral_rod.rod.mode import _collocation_fields
 
     s = np.linspace(0.0, 1.0, 61)
     cm = characteristic_mode(family_critical_load(family, twist, nu), twist, nu, points=61)
@@ -225,7 +225,7 @@ def test_collocation_mode_small_part_at_tiny_twist(family, nu):
     off by 1.1e-5 at Omega(L) = 1e-12 (symmetric, nu = 1.5), 0.41 at nu = 1.0009, 7e25 at
     1e-200 (antisymmetric); now solved from its own block row (measured <= 7e-15; 1.3e-9 at
     nu = 1.0009, where the mode is near-degenerate)."""
-    from spectral_rod.mode import _collocation_fields
+    from spectral_rod.rod.mode import _collocation_fields
 
     s = np.linspace(0.0, 1.0, 201)
     for twist in (1e-6, 1e-12, 1e-200):

@@ -7,10 +7,10 @@ import math
 import numpy as np
 import pytest
 
-from spectral_rod.asymptotics import large_twist_expansion, large_twist_limit
-from spectral_rod.critical import critical_load
-from spectral_rod.figure_data import load_figure1
-from spectral_rod.increment import critical_load_increment
+from spectral_rod.figure1.data import load_figure1
+from spectral_rod.rod.closed_form import large_twist_expansion, large_twist_limit
+from spectral_rod.rod.critical import critical_load
+from spectral_rod.rod.increment import critical_load_increment
 
 PUBLIC = {
     "critical_load": critical_load,

@@ -4,7 +4,7 @@ Models: the hinged straight rod with spontaneous twist (Eq. ``inst1``); p* = P_c
 L^2), Omega(L) = omega30 L, nu = I2/I1.
 Compares: Chebyshev collocation (the dense curves), the paper's characteristic equation in
 mpmath (every decisive number: family crossings, slopes, loads at large twist, window ends,
-modes) and the closed forms of :mod:`spectral_rod.asymptotics`.
+modes) and the closed forms of :mod:`spectral_rod.rod.closed_form`.
 Writes: claims.json / claims.md (via :mod:`reproduce.ledger`, keeping the other scenes' rows),
 claims_load.png (p* to 20 pi with the limit lines and the approach to the limit),
 claims_wavenumbers.png (beta_k L and beta_2 - beta_1 against Omega(L), the imaginary-beta_1

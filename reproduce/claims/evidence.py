@@ -1,6 +1,6 @@
 """The evidence of the straight-rod claims: every number the claims are judged on, computed by
 calls to the library (dense collocation curves, the characteristic equation in mpmath for every
-decisive number, the closed forms of :mod:`spectral_rod.asymptotics`).
+decisive number, the closed forms of :mod:`spectral_rod.rod.closed_form`).
 """
 
 from __future__ import annotations

@@ -111,11 +111,11 @@ ROOT_UNIQUENESS = ("Sec. 1 says Eqs. Munder with constit 'uniquely determine' F_
 ROOT_P_STAR_TYPO = ("Typo in the definition of the load: p* = P_cr/P_cr (identically 1) for "
                     "p* = P_cr/P_E, P_E = π²A1/L²")
 
-COLLOCATION = Method("Chebyshev collocation (spectral_rod.straight_rod)", "inst1")
-CHARACTERISTIC = Method("characteristic equation in mpmath (spectral_rod.characteristic)",
+COLLOCATION = Method("Chebyshev collocation (spectral_rod.rod.collocation)", "inst1")
+CHARACTERISTIC = Method("characteristic equation in mpmath (spectral_rod.rod.characteristic)",
                         "inst1")
-CLOSED_FORM = Method("closed forms and asymptotics (spectral_rod.asymptotics)", "closed form")
-RITZ = Method("Rayleigh-Ritz on the lab-frame energy (spectral_rod.ritz)", "energy")
+CLOSED_FORM = Method("closed forms and asymptotics (spectral_rod.rod.closed_form)", "closed form")
+RITZ = Method("Rayleigh-Ritz on the lab-frame energy (spectral_rod.rod.ritz)", "energy")
 SYMPY_ENERGY = Method("sympy: Euler-Lagrange equations of the energy "
                       "(spectral_rod.derivations.straight_rod)", "energy")
 SYMPY_MUNDER = Method("sympy: Eqs. Munder with constit linearised about the compressed rod "
@@ -612,7 +612,8 @@ def measure_further_maxima(ev: StraightRodEvidence) -> Measured:
 LIMIT = ClaimSpec(
     id="rod-limit", section=SECTION + ", para. 'For any ν > 1 ...'",
     claim="At large twist p* tends to some limiting value which depends on ν.",
-    test="Closed form from the averaged compliance (derivation in spectral_rod/asymptotics.py): "
+    test="Closed form from the averaged compliance (derivation in "
+         "spectral_rod/rod/closed_form.py): "
          "p∞ = 2ν/(1+ν); expansion p* = p∞ + a2/Ω² − b3|sin Ω|/Ω³ + a4/Ω⁴ + O(Ω⁻⁵). Compared "
          f"with p* from both solvers at Ω = π/2 + 2πj, j = {LIMIT_J}; observed decay order of "
          "p* − p∞ and of the expansion error.",

@@ -5,8 +5,8 @@ Omega = N s/R, with bending stiffnesses A1 = E1 I1 <= A2 = E1 I2 and torsion A3 
 under a uniform inward load q; loads as q R^3/(E1 I1), nu = I2/I1, e = E2/E1.
 Compares: the paper's one-mode Galerkin estimate Eq. ``crit2`` with the converged solution of the
 linearised problem in two formulations that share no hand derivation -- the Fourier-Galerkin
-second variation (:mod:`spectral_rod.ring_stability`) and the numerically linearised Eqs.
-``Munder`` (:mod:`spectral_rod.ring_munder`) -- for every reading of the load ("hydrostatic":
+second variation (:mod:`spectral_rod.ring.second_variation`) and the numerically linearised Eqs.
+``Munder`` (:mod:`spectral_rod.ring.munder`) -- for every reading of the load ("hydrostatic":
 pressure on the projection; "axis": toward the ring's axis; "centre": toward its centre point;
 "dead": fixed direction), for N = 0..10, nu in {1, 1.1, 1.3, 1.5, 2, 4} (and to nu = 100 for the
 general claims), e = 1 and isotropic; the one-harmonic Galerkin the paper states; closed forms of

@@ -1,5 +1,5 @@
 """The ring verdicts' limits beyond the scanned range, in closed form
-(:mod:`spectral_rod.ring_closed_forms`): N -> infinity (homogenisation: the rotating section
+(:mod:`spectral_rod.ring.closed_forms`): N -> infinity (homogenisation: the rotating section
 bends like an isotropic one of harmonic-mean stiffness 2 A1 A2/(A1 + A2)) and nu -> infinity.
 
 * N -> infinity at fixed nu: q_cr(N) -> :func:`spectral_rod.homogenised_limit`, against the

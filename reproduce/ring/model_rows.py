@@ -28,7 +28,7 @@ from spectral_rod import (
 )
 
 RIGID = Method("rigid motions of the ring in the second variation "
-               "(spectral_rod.ring_loads)", "second variation")
+               "(spectral_rod.ring.loads)", "second variation")
 #: x.K x of a rigid motion relative to the largest stiffness: zero to round-off.
 RIGID_TOL = 1.0e-12
 #: |x.G x| below this is a neutral rigid motion (the load work is O(1) otherwise).

@@ -2,8 +2,8 @@
 evidence (``measure_*``) and judged by its named rule (:func:`reproduce.ledger.judge`).
 
 Two formulations stand behind the ring's numbers: the Fourier-Galerkin solution of the sympy
-second variation (:mod:`spectral_rod.ring_stability`) and the numerical linearisation of the
-paper's Eqs. ``Munder`` (:mod:`spectral_rod.ring_munder`). Munder is solved on the comparison
+second variation (:mod:`spectral_rod.ring.second_variation`) and the numerical linearisation of the
+paper's Eqs. ``Munder`` (:mod:`spectral_rod.ring.munder`). Munder is solved on the comparison
 cases, so their agreement is the scene's shared cross-check, carried by every row that uses
 second-variation loads (``shared_checks=True``), and on the decisive rings ("witnesses") of the
 verdicts that rest on a range it does not cover (the largest rise of ring-monotone-decrease, the

@@ -43,11 +43,11 @@ PAPER_NU_MAX = max(FIGURE1_NU)
 PAPER_CIRCULAR_LOAD = 3.0
 
 SECOND_VARIATION = Method("Fourier-Galerkin of the sympy second variation "
-                          "(spectral_rod.ring_stability)", "second variation")
-MUNDER = Method("Eqs. Munder, constit, frenet linearised numerically (spectral_rod.ring_munder)",
+                          "(spectral_rod.ring.second_variation)", "second variation")
+MUNDER = Method("Eqs. Munder, constit, frenet linearised numerically (spectral_rod.ring.munder)",
                 "Munder")
 CRIT2 = Method("the paper's Eq. crit2 (one-mode Galerkin estimate)", "crit2")
-CLASSICAL = Method("classical closed forms of the untwisted ring (spectral_rod.ring_closed_forms)",
+CLASSICAL = Method("classical closed forms of the untwisted ring (spectral_rod.ring.closed_forms)",
                    "closed form")
 ROD = Method("Chebyshev collocation of the straight rod (spectral_rod.buckling_mode)", "inst1")
 

@@ -2,7 +2,7 @@
 
 Run ``python -m spectral_rod.derivations.ring_linearisation`` to print the operator and the
 checks; tests call :func:`derive` and compare the numerical operator of
-``spectral_rod.ring_stability`` against its output at random parameter values.
+``spectral_rod.ring.second_variation`` against its output at random parameter values.
 
 Setting (Drozdov & Rabin, section "Stability of a ring"): centreline R0 = R e_r, t0 = e_phi,
 u0 = -cos(Omega) e_r + sin(Omega) e_z, v0 = sin(Omega) e_r + cos(Omega) e_z, Omega = N s / R.
@@ -212,7 +212,7 @@ def derive() -> dict[str, sp.Expr]:
     for name in LOADS:
         v2 = pots[name].subs(pots["y_r"], cons["y_r"]).doit()
         out[f"G_{name}"] = sp.expand(g_hoop - 2 * v2 / q)
-    # the simple forms quoted in spectral_rod.ring_stability's docstring (R = 1 there)
+    # the simple forms quoted in spectral_rod.ring.second_variation's docstring (R = 1 there)
     _check(_z(out["G_hydrostatic"].subs(R, 1) - (cons["theta_r"] ** 2 + cons["theta_z"] ** 2
                                                 - y_phi * cons["theta_z"]).subs(R, 1)),
            "6: G_hydrostatic is the form quoted in ring_stability")

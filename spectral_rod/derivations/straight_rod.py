@@ -85,7 +85,7 @@ from spectral_rod.derivations._sympy import d as _d
 from spectral_rod.derivations._sympy import vec as _vec
 from spectral_rod.derivations._sympy import z as _z
 from spectral_rod.derivations._sympy import zv as _zv
-from spectral_rod.figure_data import FIGURE1_NU
+from spectral_rod.figure1.data import FIGURE1_NU
 
 A1, A2, A3, P = sp.symbols("A1 A2 A3 P", positive=True)
 omega30 = sp.Symbol("omega30", real=True)
@@ -610,7 +610,7 @@ def variant_table(twist_angles: Sequence[float] | None = None,
     ``figure_max`` / ``figure_rms`` (vs the digitised curve, every ``every``-th point),
     ``max_solver_error``. Cost: about 4 s.
     """
-    from spectral_rod.characteristic import characteristic_critical_load
+    from spectral_rod.rod.characteristic import characteristic_critical_load
 
     grid = np.linspace(0.0, 10.0, 41) if twist_angles is None else np.asarray(twist_angles)
     rows = []

@@ -23,7 +23,7 @@ from __future__ import annotations
 import numpy as np
 
 import spectral_rod as sr
-from spectral_rod.straight_rod import eigensolver
+from spectral_rod.rod.collocation import eigensolver
 
 EPS = float(np.finfo(float).eps)
 

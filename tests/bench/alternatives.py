@@ -42,14 +42,14 @@ from work_per_point import contraction
 
 from spectral_rod import critical_load, load_figure1
 from spectral_rod._blas_threads import one_blas_thread
-from spectral_rod.characteristic import characteristic_critical_load
-from spectral_rod.families import SHIFT
-from spectral_rod.straight_rod import eigensolver as E
-from spectral_rod.straight_rod.collocation import solve_degrees
-from spectral_rod.straight_rod.discretisation import term_coefficients
-from spectral_rod.straight_rod.eigensolver import _rowdot, _ShiftedModal, _start_vector
-from spectral_rod.straight_rod.resolution import initial_degree
-from spectral_rod.straight_rod.stacked_inverse import block_inverse
+from spectral_rod.rod.characteristic import characteristic_critical_load
+from spectral_rod.rod.collocation import eigensolver as E
+from spectral_rod.rod.collocation.discretisation import term_coefficients
+from spectral_rod.rod.collocation.driver import solve_degrees
+from spectral_rod.rod.collocation.eigensolver import _rowdot, _ShiftedModal, _start_vector
+from spectral_rod.rod.collocation.resolution import initial_degree
+from spectral_rod.rod.collocation.stacked_inverse import block_inverse
+from spectral_rod.rod.families import SHIFT
 
 ROUNDS = 15
 EPS = float(np.finfo(float).eps)
@@ -291,7 +291,7 @@ def near_fifty() -> None:
 
 
 if __name__ == "__main__":
-    from spectral_rod.straight_rod import modal_kernel
+    from spectral_rod.rod.collocation import modal_kernel
 
     modal_kernel._library = lambda: None  # the numpy iteration (module docstring)
     main()

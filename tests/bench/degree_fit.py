@@ -20,8 +20,8 @@ import itertools
 
 import numpy as np
 
-from spectral_rod.straight_rod.collocation import _solve_points
-from spectral_rod.straight_rod.resolution import TRUNCATION_SHARE, truncation_error
+from spectral_rod.rod.collocation.driver import _solve_points
+from spectral_rod.rod.collocation.resolution import TRUNCATION_SHARE, truncation_error
 
 TOLS = 10.0 ** -np.arange(2, 13)
 LIMIT = 0.005  # the largest share of points short of `need` at any tol

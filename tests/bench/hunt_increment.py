@@ -6,7 +6,7 @@ against mpmath references: p* - 1 to GAIN_TOL relative?
 Points: nu - 1 log-uniform in [1e-10, 1e4], |Omega(L)| log-uniform in [1e-6, 1e3] (the
 function's range; the increment's leading behaviour (nu - 1) Omega^2 makes the small values the
 hard ones). Reference: the lowest root of the characteristic equation in mpmath
-(:func:`spectral_rod.characteristic.characteristic_critical_load`) at REFERENCE_DPS digits plus
+(:func:`spectral_rod.rod.characteristic.characteristic_critical_load`) at REFERENCE_DPS digits plus
 the digits p* - 1 lies below 1, so that p* - 1 keeps >= 30 significant digits. Prints the
 largest relative error of p* - 1, the number of points above GAIN_TOL, the worst points and
 the error by decade of nu - 1 and of Omega(L); exits 1 if any point misses.
@@ -23,7 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from spectral_rod import critical_load_increment
-from spectral_rod.characteristic import characteristic_critical_load
+from spectral_rod.rod.characteristic import characteristic_critical_load
 
 #: The accuracy the hunt checks (issue 37 item 6).
 GAIN_TOL = 1e-12

@@ -5,7 +5,7 @@ automatic route at near-degenerate points, against 40-digit mpmath references.
 
 For each route, `points` random points in the range the route accepts are solved in one call
 at tol 1e-14 (the tightest tol) and compared with the lowest root of the characteristic
-equation in mpmath (:func:`spectral_rod.characteristic.characteristic_critical_load`, 40
+equation in mpmath (:func:`spectral_rod.rod.characteristic.characteristic_critical_load`, 40
 digits). A *silent miss* is a point whose
 error exceeds tol while it is reported converged; an *estimate miss* is a point whose error
 exceeds its own error estimate. The script prints, per route, the largest error, the largest
@@ -30,7 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from spectral_rod import ConvergenceWarning, critical_load
-from spectral_rod.characteristic import characteristic_critical_load
+from spectral_rod.rod.characteristic import characteristic_critical_load
 
 #: The tol of the hunt: the tightest accepted, where an estimate that falls short shows first.
 HUNT_TOL = 1e-14

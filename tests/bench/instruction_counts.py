@@ -8,12 +8,12 @@ does not move with the load: each pattern runs in a fresh interpreter under ``va
 --tool=callgrind --instr-atstart=no``; after one uncounted (warm) call, counting is switched on
 around one call only (``callgrind_control -i on`` / ``off``), so imports and the per-degree
 operator assembly are excluded. Printed: instructions per point of the yardstick (the baseline,
-``spectral_rod.baseline``, n = 24: its cost does not depend on the point; 40 Figure 1 points)
+``spectral_rod.rod.baseline``, n = 24: its cost does not depend on the point; 40 Figure 1 points)
 and of ``critical_load`` at tol 1e-12 (as the benchmarks), and their ratio; and the Figure 1
 batch at tol 1e-4 as a fraction of tol 1e-12; with ``--inverse-share``, the Figure 1 batch's
 fraction inside numpy's per-matrix inverse (the Schur complements of the batched engine that
 LAPACK inverts: since 2026-12-05 only small stacks and what the block recursion's check
-rejects, ``spectral_rod.straight_rod.stacked_inverse``) and its ratio to the baseline were that
+rejects, ``spectral_rod.rod.collocation.stacked_inverse``) and its ratio to the baseline were that
 inverse free. It is not a time
 ratio: the baseline's dense LAPACK runs more instructions per cycle than numpy's per-call
 overhead, so the wall-clock ratios measured so far lie below these (2026-12-02, one machine:

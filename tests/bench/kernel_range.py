@@ -24,10 +24,10 @@ from alternatives import minima
 
 from spectral_rod import load_figure1
 from spectral_rod._blas_threads import one_blas_thread
-from spectral_rod.straight_rod import collocation as C
-from spectral_rod.straight_rod import eigensolver as E
-from spectral_rod.straight_rod import modal_kernel
-from spectral_rod.straight_rod.discretisation import family_operator
+from spectral_rod.rod.collocation import driver as C
+from spectral_rod.rod.collocation import eigensolver as E
+from spectral_rod.rod.collocation import modal_kernel
+from spectral_rod.rod.collocation.discretisation import family_operator
 
 
 def numpy_only(fn):

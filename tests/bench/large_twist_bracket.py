@@ -1,14 +1,14 @@
 """The remainder of the large-twist expansion to Omega^-4, which sizes the large-twist bracket
-(:data:`spectral_rod.characteristic.BRACKET_REMAINDER`).
+(:data:`spectral_rod.rod.characteristic.BRACKET_REMAINDER`).
 
     python tests/bench/large_twist_bracket.py [--points 4000] [--seed 3]
 
 Each family's lowest root from the sign scan of the double-precision determinants
-(:func:`spectral_rod.characteristic.family_double_batch`, which does not use the expansion)
-against :func:`spectral_rod.asymptotics.family_expansions`, at random points with Omega(L)
+(:func:`spectral_rod.rod.characteristic.family_double_batch`, which does not use the expansion)
+against :func:`spectral_rod.rod.closed_form.family_expansions`, at random points with Omega(L)
 log-uniform in [20, 1e4] and nu log-uniform in [1, 1e4]. Prints max |p_family - expansion|
 Omega^5 by band of Omega(L) (above ~1e3 the scan's own rounding, a few eps, dominates it) and the
-fraction of points whose bracket (:func:`spectral_rod.characteristic._bracketed_batch`) is
+fraction of points whose bracket (:func:`spectral_rod.rod.characteristic._bracketed_batch`) is
 certified.
 """
 
@@ -19,8 +19,8 @@ import sys
 
 import numpy as np
 
-from spectral_rod.asymptotics import family_expansions
-from spectral_rod.characteristic import BRACKET_REMAINDER, _bracketed_batch, family_double_batch
+from spectral_rod.rod.characteristic import BRACKET_REMAINDER, _bracketed_batch, family_double_batch
+from spectral_rod.rod.closed_form import family_expansions
 
 
 def main(argv: list[str] | None = None) -> int:

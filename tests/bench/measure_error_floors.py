@@ -2,10 +2,10 @@
 
     python tests/bench/measure_error_floors.py            # ~10 minutes on a shared 2-core machine
 
-* the large-twist route's estimate eps (8 + |Omega|) (:func:`spectral_rod.characteristic.
+* the large-twist route's estimate eps (8 + |Omega|) (:func:`spectral_rod.rod.characteristic.
   double_error_estimate`): 3,000 random points, Omega(L) log-uniform in [50, 1e4], nu in
   [1, 1e4], against 40-digit roots (printed then: max err/(eps Omega) 0.577, err/estimate 0.532);
-* the Rayleigh-Ritz floor eps (8 + 2 sqrt(nu) + |Omega|/40) (:func:`spectral_rod.ritz.
+* the Rayleigh-Ritz floor eps (8 + 2 sqrt(nu) + |Omega|/40) (:func:`spectral_rod.rod.ritz.
   roundoff_floor`): random values for 300 s, Omega(L) in [400, 1000], nu - 1 in [1e-7, 1e-5]
   (then 1,589 values: |err| <= 29 eps, err/estimate <= 0.84, shortfall <= 0.57 floors, 2.9
   times the floor without the twist term).
@@ -19,7 +19,7 @@ import warnings
 import numpy as np
 
 import spectral_rod as sr
-from spectral_rod.ritz import roundoff_floor
+from spectral_rod.rod.ritz import roundoff_floor
 
 EPS = float(np.finfo(float).eps)
 

@@ -4,7 +4,7 @@
 
 Each pattern is timed twice in the same run, in the same benchmark group: its yardstick first,
 then ``critical_load``. The yardstick of every row is the obvious implementation
-(``spectral_rod.baseline``: Trefethen ``cheb``, n = 24, dense operator and ``eigvals`` per
+(``spectral_rod.rod.baseline``: Trefethen ``cheb``, n = 24, dense operator and ``eigvals`` per
 point). At large twist and near-degenerate points the baseline does not answer correctly (n = 24
 does not resolve Omega(L) >= 50, and it carries no digit of p* - 1 at nu - 1 = 1e-8): there it
 is the cost a user would otherwise pay, and the per-point routes the package used before its
@@ -472,7 +472,7 @@ def test_large_twist_scalar_loop(benchmark, large_twist, reference, bench_regist
 
 @pytest.mark.benchmark(group="near-degenerate")
 def test_near_degenerate_baseline(benchmark, near_degenerate, bench_registry):
-    from spectral_rod.characteristic import characteristic_critical_load
+    from spectral_rod.rod.characteristic import characteristic_critical_load
 
     tw, nv = (v[:20] for v in near_degenerate)
     for i in range(0, tw.size, 5):  # the pre-change route must answer correctly too
@@ -490,7 +490,7 @@ def test_near_degenerate_baseline(benchmark, near_degenerate, bench_registry):
 @pytest.mark.benchmark(group="near-degenerate")
 def test_near_degenerate(benchmark, near_degenerate, reference, bench_registry):
     from spectral_rod import critical_load_increment
-    from spectral_rod.characteristic import characteristic_critical_load
+    from spectral_rod.rod.characteristic import characteristic_critical_load
 
     tw, nv = near_degenerate
     res = critical_load(tw, nv, tol=TOL, full_output=True)
@@ -508,7 +508,7 @@ def test_near_degenerate(benchmark, near_degenerate, reference, bench_registry):
 
 @pytest.mark.benchmark(group="near-degenerate")
 def test_near_degenerate_scalar_loop(benchmark, near_degenerate, bench_registry):
-    from spectral_rod.characteristic import characteristic_critical_load
+    from spectral_rod.rod.characteristic import characteristic_critical_load
 
     tw, nv = (v[:20].tolist() for v in near_degenerate)  # the yardstick's 20 points
     res = [critical_load(a, b, tol=TOL, full_output=True) for a, b in zip(tw, nv, strict=True)]
@@ -654,7 +654,7 @@ def test_pooling_cost_model(benchmark, bench_registry):
     # collocation.FIXED_COST and POINT_COST: a batched solve of 30 and of 300 points of one
     # degree gives the fixed cost and the cost a point; the model is used through their ratio
     from spectral_rod._blas_threads import one_blas_thread
-    from spectral_rod.straight_rod.collocation import FIXED_COST, POINT_COST, _solve_points
+    from spectral_rod.rod.collocation.driver import FIXED_COST, POINT_COST, _solve_points
 
     rng = np.random.default_rng(2)
     measured = {}

@@ -1,4 +1,4 @@
-"""The crossovers behind four constants of ``spectral_rod/straight_rod/tuning.py`` that no other
+"""The crossovers behind four constants of ``spectral_rod/rod/collocation/tuning.py`` that no other
 script measures: SMALL_BATCH / SMALL_DEGREE, LEAN_MAX_DEGREE, SQUARING_MAX and BLOCK_ENTRIES.
 
     python tests/bench/tuning_crossovers.py
@@ -26,11 +26,11 @@ from collections.abc import Callable
 import numpy as np
 
 from spectral_rod._blas_threads import one_blas_thread
-from spectral_rod.straight_rod import collocation as C
-from spectral_rod.straight_rod import eigensolver as E
-from spectral_rod.straight_rod import few_points as F
-from spectral_rod.straight_rod import stacked_inverse as S
-from spectral_rod.straight_rod import tuning
+from spectral_rod.rod.collocation import driver as C
+from spectral_rod.rod.collocation import eigensolver as E
+from spectral_rod.rod.collocation import few_points as F
+from spectral_rod.rod.collocation import stacked_inverse as S
+from spectral_rod.rod.collocation import tuning
 
 ROUNDS = 15
 

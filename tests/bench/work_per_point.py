@@ -9,7 +9,7 @@ the steps it took (counted rows of ``_ShiftedModal.solve``, the numpy iteration)
 contraction per step (lambda_1 - SHIFT)/(lambda_2 - SHIFT) from the full ``eig`` of the pencil
 (median, max); the wall time per point of ``solve_family`` (minimum of 15, one BLAS thread) with
 the numpy iteration and the multiply-add rate it implies, and with the C kernel
-(``spectral_rod.straight_rod.modal_kernel``, where built) and its rate. tests/bench/HISTORY.md's
+(``spectral_rod.rod.collocation.modal_kernel``, where built) and its rate. tests/bench/HISTORY.md's
 account of why numpy's engine could not reach 50x the baseline, and of what the kernel changed,
 quotes this. A development tool, not a test (pytest does not collect it).
 """
@@ -22,12 +22,12 @@ import numpy as np
 
 from spectral_rod import load_figure1
 from spectral_rod._blas_threads import one_blas_thread
-from spectral_rod.families import FAMILIES, SHIFT
-from spectral_rod.straight_rod import eigensolver as E
-from spectral_rod.straight_rod import modal_kernel
-from spectral_rod.straight_rod.collocation import solve_degrees
-from spectral_rod.straight_rod.discretisation import family_operator
-from spectral_rod.straight_rod.resolution import initial_degree
+from spectral_rod.rod.collocation import eigensolver as E
+from spectral_rod.rod.collocation import modal_kernel
+from spectral_rod.rod.collocation.discretisation import family_operator
+from spectral_rod.rod.collocation.driver import solve_degrees
+from spectral_rod.rod.collocation.resolution import initial_degree
+from spectral_rod.rod.families import FAMILIES, SHIFT
 
 
 def contraction(n: int, family: str, tw: np.ndarray, nv: np.ndarray, j: int = 2

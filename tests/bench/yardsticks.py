@@ -15,8 +15,8 @@ from numpy.polynomial.legendre import leggauss
 from scipy.linalg import cho_factor, cho_solve
 from scipy.optimize import brentq
 
-from spectral_rod.characteristic import DOUBLE_SCAN_STEP, SCAN_START, determinants
-from spectral_rod.increment import (
+from spectral_rod.rod.characteristic import DOUBLE_SCAN_STEP, SCAN_START, determinants
+from spectral_rod.rod.increment import (
     _MAX_NEWTON,
     _second_derivatives,
     _tails,

@@ -1,5 +1,5 @@
 """Is the batched engine's numpy the limit? The same algorithm as
-:func:`spectral_rod.straight_rod.eigensolver.lowest_eigenpair` (Schur complement of the modal
+:func:`spectral_rod.rod.collocation.eigensolver.lowest_eigenpair` (Schur complement of the modal
 form, LU with partial pivoting, shift-and-invert steps on right and left vectors, the same
 first-order convergence test: first check at step 6, then every 2) written as plain C loops per
 point (``lowest.c``), against the numpy code on the Figure 1 points, interleaved. A measurement
@@ -19,14 +19,14 @@ import numpy as np
 from numpy.ctypeslib import ndpointer
 
 from spectral_rod import load_figure1
-from spectral_rod.families import SHIFT
-from spectral_rod.straight_rod.discretisation import term_coefficients
-from spectral_rod.straight_rod.eigensolver import (
+from spectral_rod.rod.collocation.discretisation import term_coefficients
+from spectral_rod.rod.collocation.eigensolver import (
     MODAL_TERMS,
     _start_vector,
     lowest_eigenpair,
     modal_family,
 )
+from spectral_rod.rod.families import SHIFT
 
 
 def _library(path: str) -> ctypes.CDLL:

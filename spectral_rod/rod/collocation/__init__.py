@@ -1,0 +1,71 @@
+r"""Critical load of the hinged, spontaneously twisted straight rod by Chebyshev collocation.
+
+The physics (paper, section "Stability of a rectilinear rod", Eq. ``inst1``)
+-----------------------------------------------------------------------------
+With s/L in [0, 1], the total twist angle Omega = omega30 L, nu = A2/A1 = I2/I1 >= 1 and the
+load lambda = P L^2 / A1 = pi^2 p*, Eq. ``inst1`` for the curvatures omega1, omega2 reads
+
+    -omega1'' + Omega^2 omega1 + 2 nu Omega omega2'          = lambda omega1
+    -nu omega2'' + nu Omega^2 omega2 - 2 Omega omega1'       = lambda omega2
+
+(declared once, term by term, in :data:`spectral_rod.rod.collocation.discretisation.INST1`).
+Hinged ends: x1 = x2 = 0 and x1'' = x2'' = 0 at s = 0, L. Since x'' is omega rotated by the
+twist angle (the paper's geometric relations), x'' = 0 <=> omega1 = omega2 = 0. The conditions
+x = 0 are then implied: moment balance of the rod between an end and s, with the end moments
+zero, gives A1 omega1 = -P xi and A2 omega2 = -P eta, where (xi, eta) are the displacement
+components along (u0, v0); omega = 0 at an end is therefore x = 0 there, and conversely any
+solution of ``inst1`` with omega = 0 at both ends gives a centreline with x = x'' = 0 at both ends
+(:func:`spectral_rod.buckling_mode` integrates x'' = R(Omega s) omega and a test checks this).
+So:  hinged ends  <=>  omega1 = omega2 = 0 at s = 0 and s = L.
+
+Multiplied by A1 and A2 the equations form a self-adjoint, positive definite pencil, so all
+eigenvalues are real and positive, with the bounds of :mod:`spectral_rod.rod.families`.
+
+The modules
+-----------
+* :mod:`.chebyshev` -- points and parity integration bases (the kernel);
+* :mod:`.discretisation` -- Eq. ``inst1`` declared term by term and its collocation pencil per
+  mode family;
+* :mod:`.resolution` -- the a priori degree, the mode's coefficient tail and the error model;
+* :mod:`.eigensolver` -- the lowest physical eigenpair for batches (modal basis, Schur
+  complement, two-sided shift-and-invert iteration): the numpy reference of the kernel, and
+  the full ``eig`` with the physical-eigenvalue rule, the test reference and last resort;
+* :mod:`.modal_kernel` -- the engine: that iteration in C, 32 points side by side or one point
+  at a time, and the pencil's Rayleigh-quotient terms in double-double; its contract is
+  ``_modal_kernel.h`` (structs, INFO returns, an ABI version checked at load);
+  :func:`.modal_kernel.engine_info` reports what runs here;
+* :mod:`.few_points` -- the eigenvalue for one point or a few: the kernel one lane at a time,
+  or without it dense pencils in numpy (kept for the no-kernel scalar and small-batch rows);
+* :mod:`.stacked_inverse` -- the numpy reference's Schur inverses for large stacks;
+* :mod:`.tuning` -- every speed threshold and cost-model constant, and
+  :func:`.tuning.solver_settings`, the one map from ``tol`` to the solver's settings;
+* :mod:`.collocation` -- the one driver: p* for any call shape with automatic resolution (its
+  degree loop; :func:`.collocation.collocation_point` is its one-point path).
+
+Which engine answers (decided in :mod:`.collocation` by the constants of :mod:`.tuning`):
+
+==================================  ===================================  ======================
+call shape                          with the C kernel                    without it
+==================================  ===================================  ======================
+a scalar call, <= few_points_limit  kernel, one lane (``modal_points``)  dense pencils (numpy)
+  points of a degree (n <= 64)
+more points of a degree, n <= 128   kernel, 32 lanes (``modal_lowest``)  numpy reference
+n > 128 (Schur block > 64)          numpy reference                      numpy reference
+a point the kernel rejects          numpy reference (pivoted inverse)    --
+not converged, or <= 4 points of a  full ``eig`` with the rule           full ``eig``
+  degree <= 40 in the batched path
+==================================  ===================================  ======================
+
+``CriticalLoad.engine`` records per point whether the kernel computed it.
+"""
+
+from spectral_rod.rod.collocation.driver import (
+    N_MAX,
+    N_MIN,
+    collocation_critical_load,
+    collocation_family_load,
+    collocation_mode_coefficients,
+)
+
+__all__ = ["N_MAX", "N_MIN", "collocation_critical_load", "collocation_family_load",
+           "collocation_mode_coefficients"]

@@ -1,0 +1,601 @@
+r"""The lowest physical eigenpair of the collocation pencil of Eq. ``inst1``, fast.
+
+Only the lowest eigenvalue is needed and it is >= pi^2 (:mod:`spectral_rod.rod.families`). The
+uncoupled operators -d^2/ds^2 of each field are diagonalised once per degree
+(:class:`ModalFamily`); in that basis the family is K z = lambda z with K diagonal plus an
+Omega-proportional coupling, so K - SHIFT is inverted through a Schur complement of the smaller
+block, for all points of a degree at once (:class:`_ShiftedModal`). Shift-and-invert iteration
+on right and left vectors (:func:`lowest_eigenpair`, contraction 0.01-0.2 per step on
+Figure 1's range; run by the C kernel of :mod:`.modal_kernel` where it is built, this module's
+numpy code being its reference and fallback) gives the eigenvectors, and the eigenvalue is
+the two-sided Rayleigh quotient of the O(1) pencil (A, B) itself (error = product of the two
+vectors' errors).
+
+Choosing the physical eigenvalue (the rule)
+-------------------------------------------
+The continuous spectrum is real and >= pi^2. Collocation adds spurious eigenvalues that are
+complex or very large (theta = 1/lambda near 0). The rule: from each family keep theta with
+|Im theta| <= 1e-8 |theta| and Re theta > 0 and take the largest (the smallest lambda); p* is
+the smaller of the two families. The fast path returns the eigenvalue nearest above SHIFT;
+as every physical eigenvalue is >= pi^2 > SHIFT this is the rule's choice unless a spurious
+eigenvalue is nearer to SHIFT, in which case the iteration does not converge to a real value
+>= SHIFT and the full ``eig`` of the inverse pencil A^{-1} B with the rule decides (the two are
+compared on a grid in ``tests/test_accuracy_control.py``). The choice is accepted only if the
+error estimate from the mode's Chebyshev coefficients (:mod:`.resolution`; a spurious mode is
+unresolved by construction) meets the tolerance.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import math
+from dataclasses import dataclass
+from functools import lru_cache
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import NDArray
+
+from spectral_rod.rod.collocation import modal_kernel
+from spectral_rod.rod.collocation.discretisation import (
+    INST1,
+    FamilyOperator,
+    family_operator,
+    term_coefficients,
+)
+from spectral_rod.rod.collocation.resolution import mode_tails
+from spectral_rod.rod.collocation.stacked_inverse import BACKWARD_TOL, stacked_inverse
+from spectral_rod.rod.collocation.tuning import (
+    CALIBRATED_TOL,
+    KERNEL_MAX_SCHUR,
+    LONG_TWIST,
+    POWER_RTOL,
+    POWER_STEPS,
+    SMALL_BATCH,
+    SMALL_DEGREE,
+    first_check,
+    iteration_allowance,
+    iteration_rtol,
+    loose_quotient,
+)
+from spectral_rod.rod.families import FAMILIES, SHIFT
+
+__all__ = ["CALIBRATED_TOL", "ISOLATION_GAP", "KERNEL_MAX_SCHUR", "ModalFamily", "ModalParts",
+           "first_check", "iteration_allowance", "iteration_rtol", "kernel_families",
+           "loose_quotient", "lowest_eigenpair", "lowest_gap", "modal_family", "modal_parts",
+           "pencil_rayleigh_quotient",
+           "physical_eig", "solve_family", "solve_family_eig", "uses_kernel"]
+
+#: Eigenvalues with |Im| above this fraction of |lambda| are complex, i.e. not physical.
+IMAG_REL = 1.0e-8
+
+
+def _modal_terms() -> tuple[tuple[int, int, int], tuple[int, int, int]]:
+    """Indices in INST1 of (second-order own, zero-order own, first-order coupling) term per
+    equation: the structure the modal form relies on (checked here, once)."""
+    out = []
+    for e in range(2):
+        idx = {(t.field == e, t.order): i for i, t in enumerate(INST1) if t.equation == e}
+        if set(idx) != {(True, 2), (True, 0), (False, 1)}:
+            raise ArithmeticError("the modal eigensolver needs, per equation, a 2nd- and a "
+                                  "0th-order own term and a 1st-order coupling term")
+        out.append((idx[True, 2], idx[True, 0], idx[False, 1]))
+    return out[0], out[1]
+
+
+MODAL_TERMS = _modal_terms()
+
+
+def _lowest_physical(theta: NDArray[np.complex128]) -> NDArray[np.int_]:
+    """Index of the largest real positive theta = 1/lambda in each row (the rule above)."""
+    ok = (np.abs(theta.imag) <= IMAG_REL * np.abs(theta)) & (theta.real > 0)
+    return np.argmax(np.where(ok, theta.real, -np.inf), axis=-1)
+
+
+def physical_eig(m: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Largest real positive theta of each matrix and its eigenvector by full ``eig`` (the rule).
+
+    theta = nan where no eigenvalue passes the rule.
+    """
+    theta, vec = np.linalg.eig(m)
+    idx = _lowest_physical(theta)
+    rows = np.arange(theta.shape[0])
+    th = theta[rows, idx]
+    valid = (np.abs(th.imag) <= IMAG_REL * np.abs(th)) & (th.real > 0)
+    return np.where(valid, th.real, np.nan), vec[rows, :, idx].real
+
+
+@dataclass(frozen=True)
+class ModalFamily:
+    """One parity family in the eigenbasis of its uncoupled second-derivative operators.
+
+    S_i = -4 V_i^{-1} D2_i (the collocated -d^2/ds^2 with omega = 0 at the ends; real spectrum
+    ~ (j pi)^2, eigenvector matrices U_i with condition numbers <= 21 up to n = 256) is
+    diagonalised once per degree: S_i = U_i diag(Lambda_i) U_i^{-1}. With c_i = U_i z_i and the
+    rows multiplied by U_i^{-1} V_i^{-1}, the pencil (A, B) becomes the similar standard problem
+
+        K z = lambda z,   K = diag(c0_1 - c2_1 Lambda_1, c0_2 - c2_2 Lambda_2)
+                              + [[0, 2 c1_1 G12], [2 c1_2 G21, 0]],
+
+    with c2_i, c0_i, c1_i the coefficients of equation i's second-order, zero-order and coupling
+    terms in :data:`INST1` (for ``inst1``: diag(Lambda_1 + Omega^2, nu (Lambda_2 + Omega^2)) +
+    Omega [[0, 4 nu G12], [-4 G21, 0]]), G12 = U_1^{-1} V_1^{-1} C12 U_2, G21 = U_2^{-1} V_2^{-1}
+    C21 U_1 (C = d/dx of the other field's basis at the equation's points): diagonal plus an
+    Omega-proportional coupling, so shifted solves
+    need only a Schur complement of one block. It is taken on the smaller block (``schur``:
+    1 or 2), because its per-point inverse is the largest single cost of the fast path.
+    """
+
+    op: FamilyOperator
+    lam1: NDArray[np.float64]  # Lambda_1 (k1,)
+    lam2: NDArray[np.float64]  # Lambda_2 (k2,)
+    u1: NDArray[np.float64]  # c1 = U_1 z1
+    u2: NDArray[np.float64]
+    left1: NDArray[np.float64]  # U_1^{-1} V_1^{-1}: left eigenvectors y1^T = w1^T left1
+    left2: NDArray[np.float64]
+    g12: NDArray[np.float64]  # (k1, k2)
+    g21: NDArray[np.float64]  # (k2, k1)
+    schur: int  # the block (1 or 2) that carries the Schur complement; the other is eliminated
+    outer: NDArray[np.float64]  # (k_e, k_s^2): G_se[:, j] (x) G_es[j, :], e eliminated, s Schur
+
+    def right_vectors(self, z: NDArray[np.float64]) -> NDArray[np.float64]:
+        """The pencil's right vectors (coefficients c, rows) from modal ones z: c_i = U_i z_i."""
+        k1 = self.lam1.size
+        return np.hstack([z[:, :k1] @ self.u1.T, z[:, k1:] @ self.u2.T])
+
+    def left_vectors(self, w: NDArray[np.float64]) -> NDArray[np.float64]:
+        """The pencil's left vectors (rows) from modal ones w: y_i^T = w_i^T U_i^{-1} V_i^{-1}."""
+        k1 = self.lam1.size
+        return np.hstack([w[:, :k1] @ self.left1, w[:, k1:] @ self.left2])
+
+
+@lru_cache(maxsize=64)
+def modal_family(n: int, family: str) -> ModalFamily:
+    """Diagonalise the uncoupled operators of (n, family) once (see :class:`ModalFamily`)."""
+    op = family_operator(n, family)
+    b1, b2 = op.bases[0][0], op.bases[1][1]
+    lam1, u1 = _real_eig(-4.0 * np.linalg.solve(b1.value, b1.d2))
+    lam2, u2 = _real_eig(-4.0 * np.linalg.solve(b2.value, b2.d2))
+    left1 = np.linalg.solve(u1, np.linalg.inv(b1.value))
+    left2 = np.linalg.solve(u2, np.linalg.inv(b2.value))
+    g12 = left1 @ op.bases[0][1].d1 @ u2
+    g21 = left2 @ op.bases[1][0].d1 @ u1
+    schur = 2 if lam2.size <= lam1.size else 1
+    g_es, g_se = (g12, g21) if schur == 2 else (g21, g12)
+    outer = np.einsum("ij,jk->jik", g_se, g_es).reshape(g_es.shape[0], -1)
+    return ModalFamily(op, lam1, lam2, u1, u2, left1, left2, g12, g21, schur, outer)
+
+
+def _real_eig(s: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Eigen-decomposition of a matrix with a real spectrum, ascending."""
+    lam, u = np.linalg.eig(s)
+    if np.abs(lam.imag).max() > 1e-8 * np.abs(lam).max():
+        raise ArithmeticError("second-derivative collocation operator with complex spectrum")
+    order = np.argsort(lam.real)
+    return lam.real[order], u.real[:, order]
+
+
+class ModalParts(NamedTuple):
+    """K - SHIFT at a batch of points in the blocks of :class:`_ShiftedModal`, before its Schur
+    complement is formed: the columns of the eliminated (e) and Schur (s) blocks, r_e (P, k_e) =
+    1 / (D_e - SHIFT), the coupling factors a, b (P, 1), d_s (P, k_s) = D_s - SHIFT and the
+    shared G_es (k_e, k_s), G_se (k_s, k_e)."""
+
+    elim: slice
+    kept: slice
+    r_e: NDArray[np.float64]
+    a: NDArray[np.float64]
+    b: NDArray[np.float64]
+    d_s: NDArray[np.float64]
+    g_es: NDArray[np.float64]
+    g_se: NDArray[np.float64]
+
+    def take(self, idx: NDArray[np.int_]) -> ModalParts:
+        """The points `idx` only."""
+        return self._replace(r_e=self.r_e[idx], a=self.a[idx], b=self.b[idx],
+                             d_s=self.d_s[idx])
+
+
+def modal_parts(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np.float64]
+                ) -> ModalParts:
+    """:class:`ModalParts` of family `mf` at the points (twist, nu)."""
+    coef = term_coefficients(twist, nu)[:, :, None]  # (P, terms, 1)
+    (s1, z1, c1), (s2, z2, c2) = MODAL_TERMS
+    d1, d2 = coef[:, z1] - coef[:, s1] * mf.lam1, coef[:, z2] - coef[:, s2] * mf.lam2
+    a1, a2 = 2.0 * coef[:, c1], 2.0 * coef[:, c2]  # d/ds = 2 d/dx
+    k1 = mf.lam1.size
+    if mf.schur == 2:
+        return ModalParts(slice(0, k1), slice(k1, None), 1.0 / (d1 - SHIFT), a1, a2,
+                          d2 - SHIFT, mf.g12, mf.g21)
+    return ModalParts(slice(k1, None), slice(0, k1), 1.0 / (d2 - SHIFT), a2, a1, d1 - SHIFT,
+                      mf.g21, mf.g12)
+
+
+@dataclass(frozen=True)
+class _ShiftedModal:
+    """K - SHIFT at a batch of points, factorised through a Schur complement.
+
+    In block form K - SHIFT = [[D_e - SHIFT, a G_es], [b G_se, D_s - SHIFT]] with D_e diagonal
+    (the eliminated block), so (K - SHIFT)^{-1} needs only the inverse of
+
+        S = D_s - SHIFT - a b G_se (D_e - SHIFT)^{-1} G_es   (one inverse per point).
+
+    Block 1 (omega1) has a = 2 c1_1 (4 nu Omega for ``inst1``) in front of G12, block 2 has
+    2 c1_2 (-4 Omega) in front of G21.
+    Vectors are rows of one array (points x (k1 + k2)), omega1 block first.
+
+    The per-point inverse of S is the numpy reference's largest single cost
+    (``tests/bench/instruction_counts.py --inverse-share`` measures its share); large stacks are
+    inverted by the checked 2 x 2-block recursion of :func:`.stacked_inverse.stacked_inverse`,
+    small ones by LAPACK (:data:`.tuning.BLOCK_ENTRIES`).
+    """
+
+    elim: slice  # columns of the eliminated block
+    kept: slice  # columns of the Schur block
+    r_e: NDArray[np.float64]  # (P, k_e): 1 / (D_e - SHIFT)
+    a: NDArray[np.float64]  # (P, 1)
+    b: NDArray[np.float64]  # (P, 1)
+    g_es: NDArray[np.float64]  # (k_e, k_s)
+    g_se: NDArray[np.float64]  # (k_s, k_e)
+    schur_inv: NDArray[np.float64]  # (P, k_s, k_s)
+
+    @classmethod
+    def at(cls, mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np.float64]
+           ) -> _ShiftedModal:
+        return cls.from_parts(mf, modal_parts(mf, twist, nu))
+
+    @classmethod
+    def from_parts(cls, mf: ModalFamily, pt: ModalParts) -> _ShiftedModal:
+        k_s = pt.d_s.shape[1]
+        schur = ((-pt.a * pt.b * pt.r_e) @ mf.outer).reshape(-1, k_s, k_s)
+        schur[:, np.arange(k_s), np.arange(k_s)] += pt.d_s
+        return cls(pt.elim, pt.kept, pt.r_e, pt.a, pt.b, pt.g_es, pt.g_se,
+                   stacked_inverse(schur))  # LinAlgError if singular
+
+    def take(self, idx: NDArray[np.int_]) -> _ShiftedModal:
+        """The points `idx` only."""
+        return _ShiftedModal(self.elim, self.kept, self.r_e[idx], self.a[idx], self.b[idx],
+                             self.g_es, self.g_se, self.schur_inv[idx])
+
+    def _assemble(self, z_e: NDArray[np.float64], z_s: NDArray[np.float64]
+                  ) -> NDArray[np.float64]:
+        out = np.empty((z_e.shape[0], z_e.shape[1] + z_s.shape[1]))
+        out[:, self.elim], out[:, self.kept] = z_e, z_s
+        return out
+
+    def solve(self, v: NDArray[np.float64]) -> NDArray[np.float64]:
+        """(K - SHIFT)^{-1} v for each row v."""
+        u = v[:, self.elim] * self.r_e
+        z_s = (self.schur_inv @ (v[:, self.kept] - self.b * (u @ self.g_se.T))[:, :, None]
+               )[:, :, 0]
+        return self._assemble(u - self.a * (z_s @ self.g_es.T) * self.r_e, z_s)
+
+    def solve_transposed(self, v: NDArray[np.float64]) -> NDArray[np.float64]:
+        """(K - SHIFT)^{-T} v for each row v (its Schur complement is S^T)."""
+        u = v[:, self.elim] * self.r_e
+        z_s = ((v[:, self.kept] - self.a * (u @ self.g_es))[:, None, :] @ self.schur_inv
+               )[:, 0, :]
+        return self._assemble(u - self.b * (z_s @ self.g_se) * self.r_e, z_s)
+
+
+def uses_kernel(k_s: int) -> bool:
+    """Whether :func:`lowest_eigenpair` iterates by the C kernel at Schur block size k_s."""
+    return k_s <= KERNEL_MAX_SCHUR and modal_kernel.available()
+
+
+def _rowdot(a: NDArray[np.float64], b: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Row-wise dot products (numpy >= 2.0 has ``np.vecdot``; this works on older numpy too)."""
+    return np.einsum("ij,ij->i", a, b)
+
+
+def _unit_rows(v: NDArray[np.float64]) -> NDArray[np.float64]:
+    """1 / |v| per row, as a column."""
+    return 1.0 / np.sqrt(_rowdot(v, v))[:, None]
+
+
+def lowest_eigenpair(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np.float64],
+                     rtol: float = POWER_RTOL, ceiling: NDArray[np.float64] | None = None,
+                     max_steps: int = POWER_STEPS, kernel_out: NDArray[np.bool_] | None = None
+                     ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64],
+                                NDArray[np.bool_], NDArray[np.bool_]]:
+    """Eigenvalue lambda of K nearest above SHIFT = 0.95 pi^2, its right and left eigenvectors
+    z, w, and whether it converged or was shown to lie above ``ceiling``, for a batch of points.
+
+    Shift-and-invert power iteration on right and left vectors together: the contraction per
+    step is (lambda_1 - SHIFT) / (lambda_2 - SHIFT) (0.01-0.2 on Figure 1's range). The
+    eigenvalue is the two-sided Rayleigh quotient w^T K z / w^T z; its error is estimated to
+    first order by |r| |l| / |w^T z| with the residuals r = K z - lambda z, l = K^T w - lambda w
+    (unit z, w). K z needs no product with K: z = (K - SHIFT)^{-1} z_prev gives
+    K z = SHIFT z + z_prev. A point is done when that estimate is <= rtol lambda and
+    lambda >= SHIFT (converged), or when lambda - 100 estimate is above ``ceiling`` (only
+    needed to be shown higher than another family's eigenvalue: "above", lambda approximate).
+    Points are dropped from the iteration as they finish.
+
+    Where the Schur block is small enough (:func:`uses_kernel`) the iteration is the C kernel's
+    (:mod:`.modal_kernel`: the same algorithm, 32 points side by side, 3-5 times faster at
+    Figure 1's degrees), with this function's numpy iteration (:func:`_iterate`) for any point
+    whose unpivoted factors the kernel rejects; elsewhere, and where the kernel is not
+    installed, the numpy iteration alone.
+
+    The estimate assumes the eigenvalue is isolated: for two of the family's eigenvalues a gap
+    delta apart it is ~delta^2 |mix|^2 while the error is ~delta |mix|^2, so a mixed vector
+    passes once delta^2 < rtol lambda. Seen only in the antisymmetric family near nu = 4 at
+    small twist (Euler loads 4 and nu: 15 of 800 random family loads at n = 80 erred by up to
+    2.0e-8 against the 40-digit family root, all with nu within 2e-7 of 4 and
+    |Omega(L)| < 3e-7; the other 785 agreed to <= 1e-11). There the
+    symmetric family (p* ~ 1) is far lower, so :func:`spectral_rod.critical_load` stops the
+    antisymmetric iteration at "above" and is unaffected; a family on its own
+    (:func:`.collocation.collocation_family_load`) is first checked by :func:`lowest_gap`
+    against :data:`ISOLATION_GAP`.
+
+    In the numpy iteration the right and left solves are separate calls: a stored transpose
+    S^{-T} would double the memory each step reads.
+    """
+    pt = modal_parts(mf, twist, nu)
+    start = _start_vector(mf.lam1.size + mf.lam2.size)
+    first = first_check(rtol, ceiling is not None)
+    by_kernel = uses_kernel(pt.d_s.shape[1])
+    if kernel_out is not None:
+        kernel_out[:] = by_kernel
+    if not by_kernel:
+        return _iterate(_ShiftedModal.from_parts(mf, pt), start, rtol, ceiling, first,
+                        max_steps)
+    res = modal_kernel.modal_lowest(pt.r_e, pt.a, pt.b, pt.d_s, pt.g_es, pt.g_se,
+                                    start[pt.elim], start[pt.kept], ceiling, shift=SHIFT,
+                                    rtol=rtol, first=first, max_steps=max_steps,
+                                    backward_tol=BACKWARD_TOL)
+    size = start.size
+    vec, left = np.empty((twist.size, size)), np.empty((twist.size, size))
+    vec[:, pt.elim], vec[:, pt.kept], left[:, pt.elim], left[:, pt.kept] = \
+        res.x_e, res.x_s, res.y_e, res.y_s
+    lam = res.lam
+    ok, above = res.status == modal_kernel.CONVERGED, res.status == modal_kernel.ABOVE
+    rejected = np.flatnonzero(res.status == modal_kernel.REJECTED)
+    if rejected.size:  # the numpy iteration, with LAPACK's pivoted inverse where needed
+        if kernel_out is not None:
+            kernel_out[rejected] = False
+        sub = _iterate(_ShiftedModal.from_parts(mf, pt.take(rejected)), start, rtol,
+                       None if ceiling is None else ceiling[rejected], first, max_steps)
+        lam[rejected], vec[rejected], left[rejected], ok[rejected], above[rejected] = sub
+    return lam, vec, left, ok, above
+
+
+def _iterate(sk: _ShiftedModal, start: NDArray[np.float64], rtol: float,
+             ceiling: NDArray[np.float64] | None, first: int, max_steps: int
+             ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64],
+                        NDArray[np.bool_], NDArray[np.bool_]]:
+    """The iteration of :func:`lowest_eigenpair` in numpy, from a unit start vector, with the
+    first test at step `first` (then every 2 steps)."""
+    points = sk.r_e.shape[0]
+    x = np.broadcast_to(start, (points, start.size))
+    y = x
+    lam = np.full(points, np.nan)
+    vec = np.zeros((points, start.size))
+    left = np.zeros_like(vec)
+    ok = np.zeros(points, dtype=bool)
+    above = np.zeros(points, dtype=bool)
+    active = np.arange(points)
+    for step in range(1, max_steps + 1):
+        # each step scales by <= ~1/(0.05 pi^2) and >= ~1/lambda_max: normalising at the
+        # checks (every 2 steps) keeps the vectors far from overflow and underflow
+        x_prev, y_prev = x, y
+        x, y = sk.solve(x), sk.solve_transposed(y)
+        if step < first or step % 2:
+            continue
+        sx, sy = _unit_rows(x), _unit_rows(y)
+        x, y = x * sx, y * sy
+        kx, ky = SHIFT * x + x_prev * sx, SHIFT * y + y_prev * sy  # K x, K^T y
+        yx = _rowdot(y, x)
+        rq = _rowdot(y, kx) / yx
+        rx, ry = kx - rq[:, None] * x, ky - rq[:, None] * y
+        bound = np.sqrt(_rowdot(rx, rx) * _rowdot(ry, ry)) / np.abs(yx)
+        conv = (bound <= rtol * np.abs(rq)) & (rq >= SHIFT)
+        high = np.zeros_like(conv) if ceiling is None else \
+            ~conv & (rq - 100.0 * bound > ceiling[active])
+        done = conv | high
+        if step + 2 > max_steps:
+            done[:] = True
+        fin = active[done]
+        lam[fin], ok[fin], above[fin] = rq[done], conv[done], high[done]
+        vec[fin], left[fin] = x[done], y[done]
+        if done.all():
+            break
+        keep = np.flatnonzero(~done)
+        active = active[keep]
+        sk = sk.take(keep)
+        x, y = x[keep], y[keep]
+    return lam, vec, left, ok, above
+
+
+@lru_cache(maxsize=64)
+def _start_vector(k: int) -> NDArray[np.float64]:
+    """A fixed generic unit start vector (no special structure that could be orthogonal to a
+    mode); read-only, as it is cached."""
+    v = np.random.default_rng(20240607).standard_normal(k)
+    v /= np.linalg.norm(v)
+    v.setflags(write=False)
+    return v
+
+
+def pencil_rayleigh_quotient(op: FamilyOperator, twist: NDArray[np.float64],
+                              nu: NDArray[np.float64], left: NDArray[np.float64],
+                              right: NDArray[np.float64]) -> NDArray[np.float64]:
+    """y^T A x / y^T B x per point, with A = sum_i coef_i P_i (:attr:`FamilyOperator.pieces`).
+
+    For |Omega| > LONG_TWIST the Omega^2 terms cancel against the others to ~lambda/Omega^2,
+    and the sums are accumulated in extended precision (``np.longdouble``): this halves the
+    round-off there (measured at Omega in [40, 100]: 0.39 -> 0.19 eps Omega^2).
+    """
+    out = np.empty(twist.size)
+    big = np.abs(twist) > LONG_TWIST
+    for sel, dtype in ((np.flatnonzero(~big), np.float64), (np.flatnonzero(big), np.longdouble)):
+        if sel.size:
+            out[sel] = _rayleigh_sums(op, twist[sel], nu[sel], left[sel], right[sel], dtype)
+    return out
+
+
+#: The terms of INST1 whose blocks are B's (the own field, order 0): y^T B x is their sum.
+_MASS_TERMS = [i for i, t in enumerate(INST1) if t.field == t.equation and t.order == 0]
+
+
+@lru_cache(maxsize=128)
+def _term_blocks(n: int, family: str, dtype: type) -> tuple:
+    """:attr:`FamilyOperator.term_blocks` transposed, in `dtype` (converted once)."""
+    return tuple((e, f, idx, np.ascontiguousarray(blocks.astype(dtype).T))
+                 for e, f, idx, blocks in family_operator(n, family).term_blocks)
+
+
+def _rayleigh_sums(op: FamilyOperator, twist: NDArray[np.float64], nu: NDArray[np.float64],
+                   left: NDArray[np.float64], right: NDArray[np.float64], dtype: type
+                   ) -> NDArray[np.float64]:
+    """y^T A x / y^T B x in `dtype` from the products y_e^T P_i x_f of A's nonzero blocks
+    (:attr:`FamilyOperator.term_blocks`; a quarter of the work of the full pieces).
+
+    In extended precision the products are the C kernel's double-double ones where it is
+    installed (:func:`.modal_kernel.pencil_terms`; this function 0.4-1.6 µs a point at n = 24-56
+    with them against 2.8-14 µs with numpy's ``longdouble`` products,
+    ``tests/bench/kernel_range.py``), summed in ``dtype``."""
+    if dtype is np.longdouble and modal_kernel.available():
+        hi, lo = modal_kernel.pencil_terms(*_term_matrices(op.n, op.family), right, left)
+        terms = hi.astype(dtype) + lo.astype(dtype)
+    else:
+        k1 = op.sizes[0]
+        cols = (slice(0, k1), slice(k1, None))
+        x, y = right.astype(dtype), left.astype(dtype)
+        terms = np.empty((x.shape[0], len(INST1)), dtype=dtype)
+        for e, f, idx, blocks in _term_blocks(op.n, op.family, dtype):
+            px = (x[:, cols[f]] @ blocks).reshape(x.shape[0], len(idx), -1)
+            terms[:, idx] = np.einsum("pj,pij->pi", y[:, cols[e]], px)
+    coef = term_coefficients(twist.astype(dtype), nu.astype(dtype))
+    return ((coef * terms).sum(axis=1) / terms[:, _MASS_TERMS].sum(axis=1)).astype(np.float64)
+
+
+@lru_cache(maxsize=128)
+def _term_matrices(n: int, family: str) -> tuple[NDArray[np.int32], NDArray[np.float64]]:
+    """Each term of INST1 as a block of the pencil, in the layout of
+    :func:`.modal_kernel.pencil_terms`: (row offset, rows, column offset, columns, data
+    offset) per term, in INST1's order, and the blocks' matrices concatenated."""
+    op = family_operator(n, family)
+    offset = (0, op.sizes[0])
+    shape = np.zeros((len(INST1), 5), dtype=np.int32)
+    mats, start = [], 0
+    for e, f, idx, blocks in op.term_blocks:
+        rows = blocks.shape[0] // len(idx)
+        for i, term in enumerate(idx):
+            block = blocks[i * rows:(i + 1) * rows]
+            shape[term] = (offset[e], rows, offset[f], block.shape[1], start)
+            mats.append(block.ravel())
+            start += block.size
+    return shape, np.concatenate(mats)
+
+
+@lru_cache(maxsize=64)
+def kernel_families(n: int) -> tuple[ctypes.Array, tuple]:
+    """Both families at degree n as the C kernel's :class:`.modal_kernel.Family` structs (for
+    :func:`.modal_kernel.modal_points`), and the arrays they point to (kept alive with them)."""
+    fams = (modal_kernel.Family * 2)()
+    keep = []
+    mass = np.zeros(len(INST1), dtype=np.int32)
+    mass[_MASS_TERMS] = 1
+    for q, name in enumerate(FAMILIES):
+        mf = modal_family(n, name)
+        shape, mats = _term_matrices(n, name)
+        arrays = {key: np.ascontiguousarray(value) for key, value in (
+            ("lam1", mf.lam1), ("lam2", mf.lam2), ("g12", mf.g12), ("g21", mf.g21),
+            ("u1", mf.u1), ("u2", mf.u2), ("left1", mf.left1), ("left2", mf.left2),
+            ("start", _start_vector(mf.lam1.size + mf.lam2.size)),
+            ("tail_rows", mf.op.tail_rows),
+            ("term_shape", shape), ("term_mats", mats), ("mass", mass))}
+        f = fams[q]
+        f.k1, f.k2, f.schur = mf.lam1.size, mf.lam2.size, mf.schur
+        for e, (own2, own0, coupling) in enumerate(MODAL_TERMS):
+            f.own2[e], f.own0[e], f.coupling[e] = own2, own0, coupling
+        f.tail_count = mf.op.tail_rows.shape[0]
+        for key, value in arrays.items():
+            setattr(f, key, value.ctypes.data)
+        keep.append(arrays)
+    return fams, tuple(keep)
+
+
+def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np.float64],
+                 *, rtol: float = POWER_RTOL, ceiling: NDArray[np.float64] | None = None,
+                 kernel_out: NDArray[np.bool_] | None = None
+                 ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
+    """Lowest physical lambda = pi^2 p, its mode's coefficient tail, and the eigenvectors
+    (coefficients c of :class:`FamilyOperator`), for arrays of points at degree n.
+
+    All points at once by shift-and-invert iteration in the modal form of the family
+    (:func:`lowest_eigenpair`, relative accuracy `rtol`): the eigenvalue nearest above
+    SHIFT = 0.95 pi^2. Every physical eigenvalue is >= pi^2 (p* >= 1), so that is the lowest
+    physical one unless a spurious eigenvalue is nearer; where the iteration has not converged
+    to a real value >= SHIFT, the full ``eig`` of the inverse pencil A^{-1} B with the rule of
+    the module docstring decides (tests compare both on a grid). Points whose eigenvalue is
+    shown to lie above ``ceiling`` (e.g. the other family's) stop early: their lambda and mode
+    are then only approximate (lambda above ``ceiling``) and their tail is not computed (inf),
+    as no caller uses either. Returns
+    lambda = inf where no eigenvalue passes the rule. ``kernel_out`` (bool, one per point), if
+    given, is set True where the C kernel computed the result, False where numpy did.
+    """
+    if kernel_out is not None:
+        kernel_out[:] = False
+    if twist.size <= SMALL_BATCH and n <= SMALL_DEGREE:  # the full eig is cheaper here
+        return solve_family_eig(n, family, twist, nu)
+    mf = modal_family(n, family)
+    op = mf.op
+    try:
+        lam, z, w, ok, above = lowest_eigenpair(mf, twist, nu, rtol=rtol, ceiling=ceiling,
+                                                kernel_out=kernel_out)
+    except np.linalg.LinAlgError:  # SHIFT an eigenvalue of some point (spurious): the rule
+        if kernel_out is not None:
+            kernel_out[:] = False
+        return solve_family_eig(n, family, twist, nu)
+    vec = mf.right_vectors(z)
+    # the eigenvalue from the O(1) pencil itself: the two-sided Rayleigh quotient (its error is
+    # the product of the vectors' errors; K carries round-off ~ eps n^4 in its diagonal)
+    loose = loose_quotient(rtol, n)
+    good = np.flatnonzero(ok) if not loose else np.zeros(0, dtype=int)
+    lam[good] = pencil_rayleigh_quotient(op, twist[good], nu[good], mf.left_vectors(w[good]),
+                                         vec[good])
+    bad = np.flatnonzero(~(ok | above))
+    tails = np.full(twist.size, np.inf)
+    resolved = np.flatnonzero(~above & np.isfinite(lam) & (ok | above))
+    tails[resolved] = mode_tails(op, vec[resolved])
+    if bad.size:  # the full eig with the rule decides
+        if kernel_out is not None:
+            kernel_out[bad] = False
+        lam[bad], tails[bad], vec[bad] = solve_family_eig(n, family, twist[bad], nu[bad])
+    return lam, tails, vec
+
+
+def solve_family_eig(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np.float64]
+                      ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
+    """:func:`solve_family` by the full ``eig`` of A^{-1} B and the rule (the reference path).
+
+    Unlike the iteration it needs no gap below the family's next eigenvalue (but its round-off
+    is larger: the inverse pencil carries cond(A) ~ n^4)."""
+    op = family_operator(n, family)
+    a, b = op.pencil(twist, nu)
+    # B broadcast to A's stack: numpy < 2.0 would read a (m, m) right-hand side against a
+    # (k, m, m) stack as a stack of m-vectors, not as one right-hand matrix per system
+    theta, vec = physical_eig(np.linalg.solve(a, np.broadcast_to(b, a.shape)))
+    valid = np.isfinite(theta) & (theta > 0)
+    lam = np.where(valid, 1.0 / np.where(valid, theta, 1.0), np.inf)
+    return lam, np.where(valid, mode_tails(op, vec), np.inf), vec
+
+
+#: The family's lowest eigenvalue counts as isolated, so that the iteration's convergence test
+#: holds, if the next physical one is at least this far above it, relatively: the test passes a
+#: mixed vector once the gap is below ~sqrt(rtol / lambda) (2e-8 at POWER_RTOL); a margin of 50.
+ISOLATION_GAP = 1e-6
+
+
+def lowest_gap(n: int, family: str, twist: float, nu: float) -> tuple[float, float]:
+    """(lambda_1, (lambda_2 - lambda_1) / lambda_1) of one point: the family's two lowest
+    physical eigenvalues by the full ``eig`` of A^{-1} B and the rule (inf gap if only one)."""
+    a, b = family_operator(n, family).pencil(np.array([twist]), np.array([nu]))
+    theta = np.linalg.eigvals(np.linalg.solve(a[0], b))
+    ok = (np.abs(theta.imag) <= IMAG_REL * np.abs(theta)) & (theta.real > 0)
+    lam = np.sort(1.0 / theta.real[ok])
+    if not lam.size:
+        return math.inf, math.inf
+    return float(lam[0]), float((lam[1] - lam[0]) / lam[0]) if lam.size > 1 else math.inf

@@ -1,0 +1,212 @@
+r"""Resolution of the collocation solver: the a priori degree, the mode's coefficient tail and
+the error model (Eq. ``inst1``; calibrated against the mpmath characteristic equation).
+
+Resolution is judged as in Chebfun, simplified: a resolved mode has Chebyshev coefficients that
+have decayed to the tolerance by the end of the expansion; the estimate of p*'s error is a
+calibrated function of that tail plus a measured round-off floor (:func:`error_estimate`).
+
+The degree is chosen for the tail's part of the estimate to be at most TRUNCATION_SHARE = 0.1 of
+the requested tol (:func:`initial_degree`, :func:`shortfall`), not tol itself: the estimate is a
+bound with safety factors, but where it lands just below tol the error itself can come close to
+it (on the collocation part of a 200 x 200 map, Omega(L) < 50, nu in [1, 100], against the
+characteristic equation at tol 1e-12: with the degree held to the whole estimate, errors up to
+1.6e-13 and 226 of 20,000 points above 1e-13, all at Omega(L) > 30; with the share at most
+4.6e-14 there, and at most a tenth of tol on 20,000 random points, Omega(L) < 50, nu up to 1e4,
+at every tol from 1e-4 to 1e-12: ``python tests/bench/accuracy_at_tol.py`` prints these;
+``tests/test_accuracy_control.py`` checks a sample). A point is converged where the whole
+estimate is <= tol. TRUNCATION_SHARE lives in :mod:`.tuning` with the other settings ``tol``
+fans out into.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from spectral_rod.rod.collocation.discretisation import FamilyOperator
+from spectral_rod.rod.collocation.tuning import TRUNCATION_SHARE
+
+__all__ = ["ERR_LINEAR", "ERR_QUADRATIC", "N_MAX", "N_MIN", "ROUNDOFF_TWIST", "TRUNCATION_SHARE",
+           "error_estimate", "error_estimate_scalar", "initial_degree", "initial_degree_scalar",
+           "mode_tails", "raised_degree", "roundoff_floor", "shortfall", "shortfall_scalar",
+           "tail_for_tolerance", "tail_from_parts", "tail_parts", "tails_of", "truncation_error",
+           "truncation_error_scalar"]
+
+N_MIN, N_MAX = 8, 512
+EPS = float(np.finfo(float).eps)
+#: Error model of :func:`error_estimate` (calibrated against the mpmath reference).
+ERR_LINEAR, ERR_QUADRATIC, ROUNDOFF_BASE, ROUNDOFF_TWIST = 5.0e-4, 200.0, 32.0, 0.3
+#: The a priori degree's constants c0..c3 (:func:`initial_degree`; fitted, see there).
+DEGREE_FIT = (5.0, 0.4, 0.3, 1.0)
+
+
+def initial_degree(twist_angle: NDArray[np.float64], tol: float) -> NDArray[np.int_]:
+    """A priori Chebyshev degree for relative accuracy `tol`: the fit below at TRUNCATION_SHARE
+    tol (the module docstring says why).
+
+    The critical mode is a sum of cos/sin(beta_k s) with beta_k <= sqrt(X_+) ~ |Omega| + pi
+    (:func:`spectral_rod.critical_wavenumbers`); on x = 2 s - 1 that is frequency k ~ |Omega| / 2,
+    which Chebyshev series resolve from degree ~ k on, with a transition layer ~ k^(1/3) wide,
+    and each further digit costs a few degrees more the wider that layer is. With
+    L = log10(1/t) >= 3.5, t = TRUNCATION_SHARE tol and (c0, c1, c2, c3) = DEGREE_FIT,
+
+        n0 = |Omega|/2 + c0 + c1 L + (c2 L + c3) (1 + |Omega|)^(1/3)   (rounded up to even)
+
+    is fitted to the degree from which the tail's part of the estimate stays <= t
+    (``tests/bench/degree_fit.py``: Omega(L) = 0..49, nu 1.05..100, tol 1e-2..1e-12; the
+    expected cost, ~n0^2 plus a second solve where n0 falls short, at 1.06-1.17 of the ideal
+    and short at none of the 300 points at any tol; the a-posteriori check raises the degree
+    where it is). ``nu`` does not enter: the needed degree varies by at most 2 over nu in
+    [1, 100].
+    """
+    om = np.abs(np.asarray(twist_angle, dtype=float))
+    x = _degree_formula(om, -math.log10(TRUNCATION_SHARE * tol), np.cbrt)
+    return np.clip(2 * np.ceil(x / 2).astype(int), N_MIN, N_MAX)
+
+
+def raised_degree(n, shortfall=np.inf):
+    """The next degree tried where the tail's part of the estimate misses its target by the
+    factor `shortfall` (> 1; :func:`shortfall`): 2 higher per factor 10 of it, at most ~12 %
+    higher, even, <= N_MAX (works on ints and on integer arrays). The 2 per factor 10 is
+    empirical: a step of 2 divided the tail's part by 9.0 at least and 32 in the median
+    (``tests/bench/degree_fit.py``, Omega(L) < 50, parts in [1e-14, 1e-3]); where it falls
+    short the loop raises again."""
+    n = np.asarray(n)
+    tens = np.ceil(np.log10(np.maximum(shortfall, 10.0)))
+    return np.minimum(N_MAX, n + 2 * np.minimum(tens, np.ceil(0.06 * n + 1)).astype(int))
+
+
+def initial_degree_scalar(twist_angle: float, tol: float) -> int:
+    """:func:`initial_degree` for one point, in Python floats (the scalar path's)."""
+    x = _degree_formula(abs(twist_angle), -math.log10(TRUNCATION_SHARE * tol),
+                        lambda v: v ** (1.0 / 3.0))
+    return min(N_MAX, max(N_MIN, 2 * math.ceil(x / 2)))
+
+
+def _degree_formula(om, big_l: float, cbrt):
+    """n0 of :func:`initial_degree` before rounding (om = |Omega|, big_l = log10(1/t)).
+
+    big_l is taken >= 3.5: a fit to tol <= 1e-4 falls short at looser ones, each shortfall a
+    second solve (``tests/bench/degree_fit.py`` prints the shortfalls per tol).
+    """
+    big_l = max(big_l, 3.5)
+    c0, c1, c2, c3 = DEGREE_FIT
+    k = cbrt(1.0 + om)
+    return om / 2 + c0 + c1 * big_l + (c2 * big_l + c3) * k
+
+
+def shortfall(tail_value: ArrayLike, tol: float) -> NDArray[np.float64]:
+    """The tail's part of the estimate over its target TRUNCATION_SHARE tol: the degree loop
+    raises the degree where it is > 1 (while round-off alone does not decide)."""
+    return truncation_error(tail_value) / (TRUNCATION_SHARE * tol)
+
+
+def shortfall_scalar(tail_value: float, tol: float) -> float:
+    """:func:`shortfall` for one point, in Python floats (the scalar path's)."""
+    return truncation_error_scalar(tail_value) / (TRUNCATION_SHARE * tol)
+
+
+def truncation_error_scalar(tail_value: float) -> float:
+    """:func:`truncation_error` for one point, in Python floats (the same operations in the same
+    order: bit-equal)."""
+    t = tail_value
+    return max(ERR_LINEAR * t, ERR_QUADRATIC * (t * t))
+
+
+def truncation_error(tail_value: ArrayLike) -> NDArray[np.float64]:
+    """The tail's part of :func:`error_estimate`: max(ERR_LINEAR tail, ERR_QUADRATIC tail^2)."""
+    t = np.asarray(tail_value, dtype=float)
+    return np.maximum(ERR_LINEAR * t, ERR_QUADRATIC * (t * t))
+
+
+def error_estimate_scalar(tail_value: float, twist_angle: float) -> float:
+    """:func:`error_estimate` for one point, in Python floats (the scalar path's)."""
+    # the same operations in the same order as error_estimate (bit-equal)
+    return truncation_error_scalar(tail_value) + EPS * (
+        ROUNDOFF_BASE + ROUNDOFF_TWIST * (twist_angle * twist_angle))
+
+
+def error_estimate(tail_value: ArrayLike, twist_angle: ArrayLike) -> NDArray[np.float64]:
+    """Estimated relative error of p* from the mode's Chebyshev tail (see module docstring).
+
+        estimate = max(ERR_LINEAR * tail, ERR_QUADRATIC * tail^2) + eps (32 + 0.3 Omega^2)
+
+    Calibrated against the mpmath characteristic equation (:mod:`spectral_rod.rod.characteristic`)
+    for Omega in {0, 0.5, ..., 300}, nu in {1, 1.1, 1.5, 2, 4, 10, 100} and every even degree
+    from 8 until the tail is below 1e-13 (2,120 cases): the discretisation error was at most
+    3.3e-4 tail for tail < 1e-5 and at most 33 tail^2 for 1e-5 <= tail < 1e-2, so the two
+    constants carry safety factors 1.5 and 6. The round-off floor (the Omega^2 terms of the
+    pencil cancel to ~lambda) is measured for this solver (shift-and-invert, final
+    Rayleigh quotient in extended precision above |Omega| = LONG_TWIST) on Omega in [40, 100]:
+    at most 0.19 eps Omega^2 (0.22 with the full ``eig``), hence the 0.3. With tail >= 1e-2 the mode
+    is not resolved and the estimate (>= 2e-2) only says so.
+    """
+    return truncation_error(tail_value) + roundoff_floor(twist_angle)
+
+
+def tail_for_tolerance(tol: float) -> float:
+    """The level a mode's coefficients must have decayed to for `tol`: the tail at which the
+    linear branch of :func:`error_estimate` equals the tail's share of tol, TRUNCATION_SHARE
+    tol / ERR_LINEAR (the degree loop's target, :func:`shortfall`).
+
+    >>> tail_for_tolerance(1e-12)
+    2e-10
+    """
+    from spectral_rod._validation import check_tol
+
+    return TRUNCATION_SHARE * check_tol(tol) / ERR_LINEAR
+
+
+def roundoff_floor(twist_angle: ArrayLike) -> NDArray[np.float64]:
+    """Round-off part of :func:`error_estimate`: eps (32 + 0.3 Omega^2), measured (see there)."""
+    om = np.asarray(twist_angle, dtype=float)
+    return EPS * (ROUNDOFF_BASE + ROUNDOFF_TWIST * (om * om))
+
+
+#: tail_parts' split of the last axis: the four tail coefficients first, then the others.
+_TAIL_SPLIT = np.array([0, 4])
+
+
+def tail_parts(coefficients: NDArray[np.float64]) -> NDArray[np.float64]:
+    """The largest |coefficient| of the four tail ones and of the others (a new last axis of
+    2), from coefficients laid out as ``FamilyOperator.tail_rows`` gives them (last axis): the
+    parts of :func:`tails_of` (the lean solver's one-point path finishes them in floats)."""
+    return np.maximum.reduceat(np.abs(coefficients), _TAIL_SPLIT, axis=-1)
+
+
+def tail_from_parts(parts: NDArray[np.float64]) -> NDArray[np.float64]:
+    """:func:`tails_of` from its :func:`tail_parts`: the tail part over the larger part; inf
+    where the mode is zero."""
+    last, scale = parts[..., 0], np.maximum.reduce(parts, axis=-1)
+    if scale.all():  # no zero mode: skip the guarded division
+        return last / scale
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(scale > 0, last / scale, np.inf)
+
+
+def tails_of(coefficients: NDArray[np.float64]) -> NDArray[np.float64]:
+    """The coefficient tail from coefficients laid out as ``FamilyOperator.tail_rows`` gives
+    them (last axis): the largest of the four tail coefficients relative to the largest of all;
+    inf where the mode is zero."""
+    return tail_from_parts(tail_parts(coefficients))
+
+
+def mode_tails(op: FamilyOperator, vectors: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Coefficient tail of each mode (omega1, omega2): the largest of the last two Chebyshev
+    coefficients of each field's parity, relative to the largest coefficient of both fields.
+
+    A field that vanishes (omega2 at zero twist) has no meaningful tail of its own.
+
+    The same numbers as ``tails_of(vectors @ op.tail_rows.T)``, with the coefficients laid out
+    (rows, points) so that the maxima run along the points (2.5 times faster on Figure 1's
+    1,201 points: a reduction over a short last axis is slow in numpy).
+    """
+    a = np.abs(op.tail_rows @ vectors.T)
+    last, other = a[:_TAIL_SPLIT[1]].max(axis=0), a[_TAIL_SPLIT[1]:].max(axis=0)
+    scale = np.maximum(last, other)
+    if scale.all():  # no zero mode: skip the guarded division
+        return last / scale
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(scale > 0, last / scale, np.inf)

@@ -1,0 +1,329 @@
+"""The public entry point for the straight rod's critical load, Eq. ``inst1`` with hinged ends.
+
+:func:`critical_load` validates its input once, asks the router (:mod:`spectral_rod.rod.router`)
+which
+method answers each point, runs each method on its points, and returns p* with every result
+flagged: a tolerance that is not met gives a :class:`spectral_rod.ConvergenceWarning` and
+``converged=False``, whatever the method and whether or not the degree was forced.
+
+Bounds: the true p* lies in [1, (1 + nu)/2] (:mod:`spectral_rod.rod.families`), so every computed
+value is projected onto that interval and its error estimate capped by the interval's width
+(:func:`apply_bounds`). The projection can only bring a value closer to the truth: round-off
+(1 - 2e-16 at nu = 1) and an unresolved forced degree (p* = 38 at Omega = 30, n = 8, which is also
+flagged and warned about) both end inside the bounds.
+"""
+
+from __future__ import annotations
+
+import importlib
+import warnings
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from spectral_rod._blas_threads import one_blas_thread
+from spectral_rod._validation import (
+    NU_MAX,
+    TOL_RANGE,
+    TWIST_MAX,
+    broadcast_points,
+    check_nu,
+    check_tol,
+    check_twist,
+)
+from spectral_rod.errors import ConvergenceWarning
+from spectral_rod.rod.collocation import collocation_critical_load
+from spectral_rod.rod.collocation.driver import collocation_point
+from spectral_rod.rod.collocation.tuning import CHUNK
+from spectral_rod.rod.families import FAMILIES, FAMILY_DTYPE
+from spectral_rod.rod.results import CriticalLoad, as_output
+from spectral_rod.rod.router import METHOD_DTYPE, ROD_METHODS, check_route, route, route_point
+
+__all__ = ["critical_load"]
+
+_EPS = float(np.finfo(float).eps)
+
+
+class PointResults(NamedTuple):
+    """Flat arrays per point: p*, method, resolution, error estimate, family name, engine
+    (collocation's "kernel" or "numpy", else the method's name)."""
+
+    p_star: NDArray[np.float64]
+    method: NDArray[np.str_]
+    n: NDArray[np.int_]
+    error_estimate: NDArray[np.float64]
+    family: NDArray[np.str_]
+    engine: NDArray[np.str_]
+
+
+#: dtype of the engine names: "kernel", "numpy" or a method of :data:`ROD_METHODS`.
+ENGINE_DTYPE = f"<U{max(map(len, ('kernel', 'numpy', *ROD_METHODS)))}"
+
+
+def _collocation(tw, nv, n, tol):
+    r = collocation_critical_load(tw, nv, n=n, tol=tol)
+    return r.p_star, r.n, r.error_estimate, np.asarray(FAMILIES)[r.family], r.engine
+
+
+def _characteristic(tw, nv, n, tol):
+    from spectral_rod.rod.characteristic import characteristic_double_batch, double_error_estimate
+
+    p, fam = characteristic_double_batch(tw, nv)
+    return p, np.zeros(tw.size, dtype=int), double_error_estimate(tw), np.asarray(FAMILIES)[fam]
+
+
+def _increment(tw, nv, n, tol):
+    from spectral_rod.rod.increment import galerkin_increments, increment_error_estimate
+
+    d, fam, modes = galerkin_increments(tw, nv)
+    return 1.0 + d, modes, increment_error_estimate(d), fam
+
+
+def _ritz(tw, nv, n, tol):
+    from spectral_rod.rod.ritz import ritz_point
+
+    p, deg, err, fam = zip(*(ritz_point(a, b, None, tol, None)
+                             for a, b in zip(tw, nv, strict=True)), strict=True)
+    return np.array(p), np.array(deg), np.array(err), np.array(fam)
+
+
+_SOLVERS = {"collocation": _collocation, "characteristic": _characteristic,
+            "increment": _increment, "ritz": _ritz}
+#: the modules each method imports when first used (before the BLAS threads are limited, so
+#: that the library a module brings, e.g. scipy.linalg's BLAS, is limited too)
+_MODULES = {"collocation": "spectral_rod.rod.collocation",
+            "characteristic": "spectral_rod.rod.characteristic",
+            "increment": "spectral_rod.rod.increment", "ritz": "spectral_rod.rod.ritz"}
+assert set(_SOLVERS) == set(ROD_METHODS) == set(_MODULES)
+
+
+def solve_points(tw: NDArray[np.float64], nv: NDArray[np.float64], methods: NDArray[np.str_],
+                 n: int | None, tol: float) -> PointResults:
+    """Run each method on its points (flat, validated arrays; methods from the router), in
+    chunks of at most :data:`CHUNK` points, with small dense linear algebra on one BLAS thread
+    (:mod:`spectral_rod._blas_threads`)."""
+    if tw.size > CHUNK:
+        parts = [solve_points(tw[i:i + CHUNK], nv[i:i + CHUNK], methods[i:i + CHUNK], n, tol)
+                 for i in range(0, tw.size, CHUNK)]
+        return PointResults(*(np.concatenate(v) for v in zip(*parts, strict=True)))
+    p, deg, err = np.empty(tw.size), np.zeros(tw.size, dtype=int), np.empty(tw.size)
+    fam = np.empty(tw.size, dtype=FAMILY_DTYPE)
+    engine = methods.astype(ENGINE_DTYPE)  # a route other than collocation is its own engine
+    # the methods present (np.unique on strings sorts: 0.17 ms for Figure 1's 1,201 points)
+    names = [name for name in ROD_METHODS if np.any(methods == name)]
+    for name in names:
+        importlib.import_module(_MODULES[name])
+    with one_blas_thread():
+        for name in names:
+            idx = np.flatnonzero(methods == name)
+            out = _SOLVERS[name](tw[idx], nv[idx], n, tol)
+            p[idx], deg[idx], err[idx], fam[idx] = out[:4]
+            if len(out) > 4:
+                engine[idx] = out[4]
+    return PointResults(p, methods, deg, err, fam, engine)
+
+
+def apply_bounds(res: PointResults, nv: NDArray[np.float64]) -> None:
+    """Project p* onto its rigorous bounds [1, (1 + nu)/2] and cap the error estimate by the
+    bounds' width (in place): the truth lies in the bounds, so neither can make p* worse.
+    The width is widened by eps, the rounding of (1 + nu)/2 (at nu = 1 + 2^-52 it rounds to 1,
+    a width of 0, while p* - 1 = 1.1e-16)."""
+    lo, hi = 1.0, (1.0 + nv) / 2.0
+    res.p_star[:] = np.clip(res.p_star, lo, hi)
+    res.error_estimate[:] = np.minimum(res.error_estimate, (hi - lo) / lo + _EPS)
+
+
+def bounded_point(p: float, err: float, nv: float) -> tuple[float, float]:
+    """:func:`apply_bounds` for one point in Python floats (the scalar paths'): p* projected
+    onto [1, (1 + nu)/2], the estimate capped by the width plus eps.
+
+    >>> bounded_point(1.3, 0.5, 1.5)
+    (1.25, 0.2500000000000002)
+    """
+    hi = (1.0 + nv) / 2.0
+    return min(max(p, 1.0), hi), min(err, (hi - 1.0) + _EPS)
+
+
+def warn_unconverged(where: str, converged: NDArray[np.bool_], res: PointResults,
+                     tw: NDArray[np.float64], nv: NDArray[np.float64], tol: float) -> None:
+    """One ConvergenceWarning naming the worst point, if any point missed `tol`."""
+    bad = np.flatnonzero(~converged)
+    if not bad.size:
+        return
+    worst = bad[np.argmax(res.error_estimate[bad])]
+    warnings.warn(
+        f"{where}: tol={tol:g} not met at {bad.size} point(s); worst error estimate "
+        f"{res.error_estimate[worst]:.2e} at twist_angle={tw[worst]:g}, nu={nv[worst]:g} "
+        f"(method {res.method[worst]}, n={res.n[worst]}); flagged converged=False",
+        ConvergenceWarning, stacklevel=3)
+
+
+def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: object,
+               full_output: object):
+    """The scalar fast path: p* (or its CriticalLoad) for one point given as Python or numpy
+    floats on the collocation or the large-twist route, or None wherever the general path must
+    answer (any other input, the increment route, a forced degree, a point the lean solver does
+    not accept or whose estimate misses tol). The computation is the general path's for one
+    point, without its array bookkeeping: collocation by the driver's one-point path
+    (:func:`spectral_rod.rod.collocation.driver.collocation_point`), the large-twist route
+    :func:`_one_characteristic`; ``python -m pytest -m bench`` measures both scalar loops."""
+    if not (isinstance(twist_angle, (float, int)) and isinstance(nu, (float, int))
+            and isinstance(tol, float) and n is None
+            and method in ("auto", "collocation", "characteristic")
+            and isinstance(full_output, (bool, np.bool_))) or isinstance(twist_angle, bool) \
+            or isinstance(nu, bool):
+        return None
+    try:
+        om, nv = abs(float(twist_angle)), float(nu)
+    except OverflowError:  # an int beyond float range: the general path names it
+        return None
+    if not (om <= TWIST_MAX and 1.0 <= nv <= NU_MAX and TOL_RANGE[0] <= tol <= TOL_RANGE[1]):
+        return None  # includes NaN: the general path names the bad argument
+    chosen = route_point(om, nv, None, method)
+    if chosen == "characteristic":
+        return _one_characteristic(om, nv, tol, full_output)
+    if chosen != "collocation":
+        return None
+    point = collocation_point(om, nv, tol)
+    if point is None:
+        return None
+    p, err = bounded_point(point.p_star, point.error_estimate, nv)
+    if not full_output:
+        return p
+    return CriticalLoad(p, "collocation", point.n, err, FAMILIES[point.family], converged=True,
+                        tol=tol, engine=point.engine)
+
+
+def _one_characteristic(om: float, nv: float, tol: float, full_output: bool):
+    """:func:`_one_point` on the large-twist route: the characteristic equation in double
+    precision for one point (its refinement in Python floats; the benchmark row "a loop of
+    scalar calls, Omega(L) in [50, 1000]" measures it), bounds and estimate as
+    :func:`solve_points` and :func:`apply_bounds` give them; None where the estimate misses tol
+    (the general path warns and flags)."""
+    from spectral_rod.rod.characteristic import characteristic_double, double_error_estimate
+
+    _, err = bounded_point(1.0, float(double_error_estimate(om)), nv)  # it does not need p*
+    if err > tol:
+        return None
+    p, family = characteristic_double(om, nv)
+    p, _ = bounded_point(p, err, nv)
+    if not full_output:
+        return p
+    return CriticalLoad(p, "characteristic", 0, err, family, converged=True, tol=tol,
+                        engine="characteristic")
+
+
+def _one_element(twist_angle: object, nu: object, n: object, tol: object, method: object,
+                 full_output: object):
+    """One point given as arrays of one element (e.g. the (1,) vectors that
+    ``scipy.optimize.least_squares`` and ``fsolve`` pass): :func:`_one_point`'s answer, shaped
+    and typed as the general path returns it (``tests/test_speed_paths.py`` compares the two),
+    or None wherever the general path must answer (the benchmark row "a loop of one-point
+    arrays" measures it)."""
+    if not (isinstance(twist_angle, np.ndarray) or isinstance(nu, np.ndarray)):
+        return None
+    point = []
+    for value in (twist_angle, nu):
+        if isinstance(value, np.ndarray):
+            if value.size != 1 or value.dtype.kind not in "fiu":  # no bool, complex, object
+                return None
+            value = value.item()  # a Python float or int (np.longdouble stays, and fails)
+        point.append(value)
+    one = _one_point(*point, n, tol, method, full_output)
+    if one is None:
+        return None
+    shape = (1,) * max(np.ndim(twist_angle), np.ndim(nu))  # the broadcast of two sizes of 1
+    if not full_output:
+        return as_output(np.array([one]), shape)
+    fields = [as_output(np.array([value], dtype=dtype), shape) for value, dtype in (
+        (one.p_star, np.float64), (one.method, METHOD_DTYPE), (one.n, int),
+        (one.error_estimate, np.float64), (one.family, FAMILY_DTYPE), (True, bool),
+        (one.engine, ENGINE_DTYPE))]
+    return CriticalLoad(*fields[:5], converged=fields[5], tol=one.tol, engine=fields[6])
+
+
+def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None,
+                  tol: float = 1e-12, method: str = "auto", full_output: bool = False):
+    """Critical load p* = P_cr / (pi^2 A1 / L^2) of the hinged, spontaneously twisted rod.
+
+    Parameters
+    ----------
+    twist_angle : Omega(L) = omega30 L in radians, |Omega(L)| <= 1e4 (p* is even in it:
+        p*(-Omega) = p*(Omega), the mirror image of the mode).
+    nu : I2/I1 in [1, 1e4] (the paper's convention A1 <= A2; for I2 < I1 swap the axes and
+        pass 1/nu).
+    n : Chebyshev degree (even, 8..512): forces collocation at that degree.
+    tol : requested relative accuracy (1e-14..1e-2).
+    method : "auto" (default; :func:`spectral_rod.choose_method` decides per point) or one of
+        :data:`spectral_rod.ROD_METHODS`.
+    full_output : return a :class:`spectral_rod.CriticalLoad` (method, resolution, error
+        estimate, mode family, converged flag) instead of p* alone.
+
+    Returns
+    -------
+    float, ndarray or CriticalLoad
+        p* as a float for scalar input, otherwise an ndarray of the broadcast shape; with
+        ``full_output=True`` a :class:`spectral_rod.CriticalLoad` of such values whose
+        ``engine`` says what computed each point ("kernel" or "numpy" for collocation, the
+        method's name otherwise).
+
+    Raises
+    ------
+    ValueError, TypeError
+        An argument outside its range or of the wrong type (the message names it).
+
+    Warns
+    -----
+    ConvergenceWarning
+        A point whose error estimate exceeds ``tol``; it is flagged ``converged=False`` and
+        never returned silently.
+    PerformanceWarning
+        Once per process, at the first solve, where the C kernel is not available.
+
+    Notes
+    -----
+    A collocation estimate is the calibrated model of the mode's Chebyshev tail and round-off
+    (:func:`spectral_rod.rod.collocation.resolution.error_estimate`) plus, for tol > 1e-12, what
+    the looser eigenvalue iteration may add, 0.01 tol - 1e-14
+    (:func:`spectral_rod.rod.collocation.tuning.iteration_allowance`; every setting ``tol`` sets is
+    listed by :func:`spectral_rod.rod.collocation.tuning.solver_settings`).
+
+    One driver (:func:`spectral_rod.rod.collocation.driver.collocation_critical_load`) serves
+    every call shape; a scalar call, and a one-point array call (e.g. scipy.optimize's (1,)
+    vectors), take its one-point path and give identical results. A point in a larger call
+    differs from its scalar call by at most the larger of the two error estimates; where both
+    use the same degree, by at most the round-off part eps (32 + 0.3 Omega^2) at the default tol
+    (two computations round the same Rayleigh quotient differently), and at a looser tol by at
+    most that plus the iteration's tolerance ``iteration_rtol(tol)`` = max(0.01 tol, 1e-15).
+    ``tests/test_safety.py`` computes and prints these differences on Figure 1's points and on
+    3,000 random points.
+
+    Examples
+    --------
+    >>> round(critical_load(6.283185307179586, 1.5), 9)
+    1.195993681
+    """
+    one = _one_point(twist_angle, nu, n, tol, method, full_output)
+    if one is None:
+        one = _one_element(twist_angle, nu, n, tol, method, full_output)
+    if one is not None:
+        return one
+    twist, nu_arr = check_twist(twist_angle), check_nu(nu)
+    tol = check_tol(tol)
+    n, method = check_route(n, method)
+    if not isinstance(full_output, (bool, np.bool_)):
+        raise TypeError(f"full_output must be True or False, got {type(full_output).__name__}")
+    shape = broadcast_points(twist_angle=twist, nu=nu_arr)
+    tw = np.abs(np.broadcast_to(twist, shape).ravel())
+    nv = np.broadcast_to(nu_arr, shape).ravel()
+    res = solve_points(tw, nv, route(tw, nv, n, method), n, tol)
+    apply_bounds(res, nv)
+    converged = res.error_estimate <= tol
+    warn_unconverged("critical_load", converged, res, tw, nv, tol)
+    if not full_output:
+        return as_output(res.p_star, shape)
+    return CriticalLoad(*(as_output(v, shape) for v in (res.p_star, res.method, res.n,
+                                                          res.error_estimate, res.family)),
+                        converged=as_output(converged, shape), tol=tol,
+                        engine=as_output(res.engine, shape))
