@@ -186,8 +186,9 @@ FINDING = ("No point of Figure 1 is a DNA segment within the rod model's validit
 
 SCALE = ClaimSpec(
     id="caveat-dna-scale", section="Introduction (the motivation: DNA) and Figure 1",
-    claim="(Physical scale) The paper motivates the twisted rod by DNA; Figure 1's twists "
-          "(Ω(L) ≤ 10) are those of DNA segments within the rod model's validity (L ≫ a).",
+    claim="(Physical scale) The paper motivates the twisted rod by DNA, but Figure 1's twists "
+          "(Ω(L) ≤ 10) are shorter than any DNA segment within the rod model's validity (L ≫ a): "
+          "for DNA, only the approach of p* to its large-twist limit is physical.",
     test="Ω(L) = 2πL/h with B-DNA's helical repeat h = 3.40-3.57 nm (cited in reproduce/dna.py): "
          "the longest segment Figure 1 shows against the shortest the rod model admits "
          f"({VALIDITY_DIAMETERS:g} diameters of {DIAMETER_NM:g} nm); p* by collocation over the "
@@ -195,9 +196,9 @@ SCALE = ClaimSpec(
     methods=(Method("B-DNA literature values (reproduce/dna.py)", "literature values"),
              Method("Chebyshev collocation (spectral_rod.critical_load)", "inst1")),
     rule=tiered_rule([("holds", (Condition(
-        "figure1_over_valid_length", ">=", "the longest segment of Figure 1 over the shortest "
+        "figure1_over_valid_length", "<", "the longest segment of Figure 1 over the shortest "
         "valid one", 1.0),))], "fails",
-        note="fails: no part of Figure 1 is a valid DNA segment"),
+        note="holds: no part of Figure 1 is a valid DNA segment"),
     kind="caveat", related=("rod-limit", "fig1-curves"))
 
 

@@ -44,16 +44,16 @@ def test_the_scale_caveat_row_and_its_threshold():
     from reproduce.ledger import Measured, judge
 
     claim = dna.scale_claim(dna.compute())
-    assert claim.kind == "caveat" and claim.verdict == "fails"
+    assert claim.kind == "caveat" and claim.verdict == "holds"
     # by hand: Figure 1 ends at 10 / (2 pi) turns of at most 3.57 nm; the rod needs 20 nm
     assert claim.numbers["figure1_over_valid_length"] == pytest.approx(
         10 / (2 * math.pi) * 10.5 * 0.34 / 20.0, rel=1e-12)
     assert "No point of Figure 1" in claim.numbers["finding"]
     # a rod model valid from 2 diameters on would reach the end of Figure 1
     reach = Measured({**claim.numbers, "figure1_over_valid_length": 1.01}, claim.evidence)
-    assert judge(dna.SCALE, reach, "dna").verdict == "holds"
+    assert judge(dna.SCALE, reach, "dna").verdict == "fails"
     short = Measured({**claim.numbers, "figure1_over_valid_length": 0.99}, claim.evidence)
-    assert judge(dna.SCALE, short, "dna").verdict == "fails"
+    assert judge(dna.SCALE, short, "dna").verdict == "holds"
 
 
 def test_the_scene_writes_its_row_into_the_ledger(tmp_path):

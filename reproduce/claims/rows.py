@@ -104,7 +104,7 @@ PLANARITY_LIMIT = 1e-6
 DERIVATION_COMPLETE = "all steps checked"
 
 ROOT_IMAGINARY_BETA1 = ("β1 is taken real for every twist, but it is imaginary on a window "
-                        "around Ω(L) = π, 2y/√(ν+3) < Ω(L) < 2π√(ν/(3ν+1)), whose upper end is "
+                        "around Ω(L) = π, Ω_a < Ω(L) < Ω_b = 2π√(ν/(3ν+1)), whose upper end is "
                         "the maximum of β2 − β1 near π")
 ROOT_UNIQUENESS = ("Sec. 1 says Eqs. Munder with constit 'uniquely determine' F_t, ω1, ω2, ω3; "
                    "buckling, the paper's own criterion, is the loss of that uniqueness")
