@@ -85,8 +85,8 @@ _PTR, _INT, _DBL = ctypes.c_void_p, ctypes.c_int, ctypes.c_double
 class ModalControl(ctypes.Structure):
     """The iteration's settings (``ModalControl`` in ``_modal_kernel.h``)."""
 
-    _fields_ = [("shift", _DBL), ("rtol", _DBL), ("backward_tol", _DBL), ("close_rel", _DBL),
-                ("first", _INT), ("max_steps", _INT), ("loose", _INT)]
+    _fields_ = (("shift", _DBL), ("rtol", _DBL), ("backward_tol", _DBL), ("close_rel", _DBL),
+                ("first", _INT), ("max_steps", _INT), ("loose", _INT))
 
 
 class ModalBatch(ctypes.Structure):
@@ -100,7 +100,7 @@ class ModalBatch(ctypes.Structure):
 class ModalEigenpairs(ctypes.Structure):
     """modal_lowest's outputs (``ModalEigenpairs`` in ``_modal_kernel.h``)."""
 
-    _fields_ = [(name, _PTR) for name in ("lam", "x_e", "x_s", "y_e", "y_s", "status")]
+    _fields_ = tuple((name, _PTR) for name in ("lam", "x_e", "x_s", "y_e", "y_s", "status"))
 
 
 class Family(ctypes.Structure):
@@ -119,13 +119,13 @@ class Family(ctypes.Structure):
 class ModalPoints(ctypes.Structure):
     """Points given by their INST1 coefficients (``ModalPoints`` in ``_modal_kernel.h``)."""
 
-    _fields_ = [("P", _INT), ("terms", _INT), ("coef", _PTR), ("coef_lo", _PTR)]
+    _fields_ = (("P", _INT), ("terms", _INT), ("coef", _PTR), ("coef_lo", _PTR))
 
 
 class ModalPointResults(ctypes.Structure):
     """modal_points' outputs (``ModalPointResults`` in ``_modal_kernel.h``)."""
 
-    _fields_ = [("lam", _PTR), ("tail", _PTR), ("status", _PTR)]
+    _fields_ = (("lam", _PTR), ("tail", _PTR), ("status", _PTR))
 
 
 class PencilForms(ctypes.Structure):
