@@ -134,6 +134,13 @@ def figure1_picture(path: str | Path | None = None) -> str:
     garbled, edited or unreadable file raises :class:`ReferenceDataError`
     (``FileNotFoundError`` if it is missing) naming the file and the problem.
 
+    Returns
+    -------
+    str
+        The LaTeX text of the ``picture`` environment.
+
+    Examples
+    --------
     >>> figure1_picture().count(r"\\circle*")
     1201
     """
@@ -282,6 +289,13 @@ def load_figure1(path: str | Path | None = None) -> pd.DataFrame:
     schema; errors (:class:`ReferenceDataError`, ``FileNotFoundError``) name the file and the
     problem.
 
+    Returns
+    -------
+    pandas.DataFrame
+        One row per digitised point (the schema's columns, among them twist, nu and p_star).
+
+    Examples
+    --------
     >>> df = load_figure1()
     >>> len(df), sorted(df["nu"].unique().tolist())
     (1201, [1.1, 1.3, 1.5])

@@ -43,6 +43,13 @@ def check_family(family: object, name: str = "family") -> str:
 def p_star_bounds(nu: float) -> tuple[float, float]:
     """The rigorous bounds (1, (1 + nu)/2) of p* for nu = I2/I1 >= 1.
 
+    Returns
+    -------
+    tuple of two float
+        (lower, upper) bound of p*.
+
+    Examples
+    --------
     >>> p_star_bounds(1.5)
     (1.0, 1.25)
     """
