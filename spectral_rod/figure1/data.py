@@ -26,6 +26,7 @@ import pandas as pd
 
 from spectral_rod.errors import ReferenceDataError
 
+#: nu = I2/I1 (dimensionless) of Figure 1's curves 1, 2, 3, in source order.
 FIGURE1_NU = (1.1, 1.3, 1.5)
 COLUMNS = ("curve", "nu", "picture_x", "picture_y", "twist_angle", "p_star")
 #: Picture x units per radian of Omega(L), and picture y units per unit of p*: Omega(L) = x/10,

@@ -50,7 +50,7 @@ __all__ = ["INCREMENT_MAX_TWIST", "METHOD_DTYPE", "NEAR_DEGENERATE", "ROD_METHOD
 ROD_METHODS = ("collocation", "characteristic", "increment", "ritz")
 #: The numpy string dtype of arrays of method names (:func:`route`'s).
 METHOD_DTYPE = f"<U{max(map(len, ROD_METHODS))}"
-#: |Omega(L)| from which the characteristic equation (double precision) is used.
+#: |Omega(L)| (radians) from which the characteristic equation (double precision) is used.
 TWIST_ROUTE = 50.0
 #: nu - 1 up to which p* comes from the characteristic equation in the family bounds'
 #: brackets (|Omega(L)| < TWIST_ROUTE), and up to which method="increment" is accepted.
