@@ -26,6 +26,7 @@ import pandas as pd
 
 from spectral_rod.errors import ReferenceDataError
 
+#: nu = I2/I1 (dimensionless) of Figure 1's curves 1, 2, 3, in source order.
 FIGURE1_NU = (1.1, 1.3, 1.5)
 COLUMNS = ("curve", "nu", "picture_x", "picture_y", "twist_angle", "p_star")
 #: Picture x units per radian of Omega(L), and picture y units per unit of p*: Omega(L) = x/10,
@@ -134,6 +135,13 @@ def figure1_picture(path: str | Path | None = None) -> str:
     garbled, edited or unreadable file raises :class:`ReferenceDataError`
     (``FileNotFoundError`` if it is missing) naming the file and the problem.
 
+    Returns
+    -------
+    str
+        The LaTeX text of the ``picture`` environment.
+
+    Examples
+    --------
     >>> figure1_picture().count(r"\\circle*")
     1201
     """
@@ -282,6 +290,13 @@ def load_figure1(path: str | Path | None = None) -> pd.DataFrame:
     schema; errors (:class:`ReferenceDataError`, ``FileNotFoundError``) name the file and the
     problem.
 
+    Returns
+    -------
+    pandas.DataFrame
+        One row per digitised point (the schema's columns, among them twist, nu and p_star).
+
+    Examples
+    --------
     >>> df = load_figure1()
     >>> len(df), sorted(df["nu"].unique().tolist())
     (1201, [1.1, 1.3, 1.5])

@@ -68,7 +68,18 @@ def _wavenumber(n: object) -> int:
 
 def in_plane_mode_load(n: int, A: float, load: str = "hydrostatic") -> float:
     """Load of the untwisted ring's in-plane mode of wavenumber n >= 2 (table in the module
-    docstring): A (n^2 - 1) hydrostatic, A (n^2 - 1)^2/(n^2 - 2) axis and centre, A n^2 dead."""
+    docstring): A (n^2 - 1) hydrostatic, A (n^2 - 1)^2/(n^2 - 2) axis and centre, A n^2 dead.
+
+    Returns
+    -------
+    float
+        q R^3/(E1 I1) of that mode.
+
+    Examples
+    --------
+    >>> in_plane_mode_load(2, 1.0), in_plane_mode_load(3, 1.0, "dead")
+    (3.0, 9.0)
+    """
     m = float(_wavenumber(n)) ** 2
     A = _stiffness(A, "A")
     ld = check_load(load)
@@ -81,7 +92,20 @@ def in_plane_mode_load(n: int, A: float, load: str = "hydrostatic") -> float:
 
 def out_of_plane_mode_load(n: int, A: float, A3: float, load: str = "hydrostatic") -> float:
     """Load of the untwisted ring's out-of-plane mode of wavenumber n >= 2 (module docstring):
-    A (n^2 - 1)^2/(n^2 + A/A3), or A n^2 (n^2 - 1)/(n^2 + A/A3) for the centre load."""
+    A (n^2 - 1)^2/(n^2 + A/A3), or A n^2 (n^2 - 1)/(n^2 + A/A3) for the centre load.
+
+    Returns
+    -------
+    float
+        q R^3/(E1 I1) of that mode.
+
+    Examples
+    --------
+    >>> out_of_plane_mode_load(2, 1.0, 2.0)   # 9/(4 + 1/2)
+    2.0
+    >>> round(out_of_plane_mode_load(2, 1.0, 1e12), 9) == out_of_plane_supremum(1.0)   # A3 -> inf
+    True
+    """
     m = float(_wavenumber(n)) ** 2
     A, A3 = _stiffness(A, "A"), _stiffness(A3, "A3")
     work = m - 1.0 if check_load(load) == "centre" else (m - 1.0) ** 2 / m
@@ -90,14 +114,36 @@ def out_of_plane_mode_load(n: int, A: float, A3: float, load: str = "hydrostatic
 
 def in_plane_untwisted(A: float, load: str) -> float:
     """Untwisted ring, in plane: the n = 2 load of :func:`in_plane_mode_load` (the smallest),
-    3 A (hydrostatic), 4.5 A (axis, centre), 4 A (dead)."""
+    3 A (hydrostatic), 4.5 A (axis, centre), 4 A (dead).
+
+    Returns
+    -------
+    float
+        The untwisted ring's in-plane critical load q R^3/(E1 I1).
+
+    Examples
+    --------
+    >>> in_plane_untwisted(1.0, "hydrostatic"), in_plane_untwisted(1.0, "axis")
+    (3.0, 4.5)
+    """
     A = _stiffness(A, "A")
     return {"hydrostatic": 3.0, "axis": 4.5, "centre": 4.5, "dead": 4.0}[check_load(load)] * A
 
 
 def out_of_plane_untwisted(A: float, A3: float, load: str = "hydrostatic") -> float:
     """Timoshenko & Gere: the n = 2 load of :func:`out_of_plane_mode_load` (the smallest),
-    9 A/(4 + A/A3) (hydrostatic, axis, dead) or 12 A/(4 + A/A3) (centre)."""
+    9 A/(4 + A/A3) (hydrostatic, axis, dead) or 12 A/(4 + A/A3) (centre).
+
+    Returns
+    -------
+    float
+        The untwisted ring's out-of-plane critical load q R^3/(E1 I1).
+
+    Examples
+    --------
+    >>> out_of_plane_untwisted(1.0, 2.0)   # circular section, e = 1: A3 = 2 A
+    2.0
+    """
     A, A3 = _stiffness(A, "A"), _stiffness(A3, "A3")
     top = 12.0 if check_load(load) == "centre" else 9.0
     return top * A * A3 / (4.0 * A3 + A)  # = top A/(4 + A/A3) without overflow of A/A3
@@ -105,7 +151,18 @@ def out_of_plane_untwisted(A: float, A3: float, load: str = "hydrostatic") -> fl
 
 def out_of_plane_supremum(A: float, load: str = "hydrostatic") -> float:
     """sup over A3 of the out-of-plane load (A3 -> infinity), the n = 2 value: 9A/4, or 3A for
-    the centre load."""
+    the centre load.
+
+    Returns
+    -------
+    float
+        The supremum, q R^3/(E1 I1).
+
+    Examples
+    --------
+    >>> out_of_plane_supremum(1.0), out_of_plane_supremum(1.0, "centre")
+    (2.25, 3.0)
+    """
     return (3.0 if check_load(load) == "centre" else 2.25) * _stiffness(A, "A")
 
 
@@ -114,6 +171,13 @@ def untwisted_critical_load(nu: float, e_ratio: float, load: str) -> float:
     in-plane load (bending about e_z, A1 = 1) and the out-of-plane load (bending about e_r,
     A2 = nu; torsion A3 = e (1 + nu)).
 
+    Returns
+    -------
+    float
+        q_cr R^3/(E1 I1) of the untwisted ring.
+
+    Examples
+    --------
     >>> untwisted_critical_load(1.0, 1.0, "hydrostatic"), untwisted_critical_load(4.0, 1.0, "dead")
     (2.0, 4.0)
     """
@@ -125,7 +189,21 @@ def untwisted_critical_load(nu: float, e_ratio: float, load: str) -> float:
 def homogenised_limit(nu: float, e_ratio: float, load: str) -> float:
     """N -> infinity: the rotating bending stiffness homogenises to the isotropic harmonic mean
     2 A1 A2/(A1 + A2) (1-D homogenisation of the curvature energy), A3 = e (1 + nu) unchanged;
-    the load is the smaller of the in-plane and out-of-plane loads of that ring."""
+    the load is the smaller of the in-plane and out-of-plane loads of that ring.
+
+    Returns
+    -------
+    float
+        The limit of q_cr R^3/(E1 I1) as N -> infinity.
+
+    Examples
+    --------
+    >>> homogenised_limit(1.0, 1.0, "hydrostatic")   # circular: 9 A / (4 + A/A3), A3 = 2 A
+    2.0
+    >>> import spectral_rod as sr   # a circular section does not feel the twist
+    >>> round(sr.ring_critical_load(8, 1.0), 12)
+    2.0
+    """
     nu, e_ratio = scalar_nu(nu), check_e_ratio(e_ratio)
     a_h = 2.0 * nu / (1.0 + nu)
     return min(in_plane_untwisted(a_h, load),

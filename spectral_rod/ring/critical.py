@@ -47,6 +47,13 @@ def ring_critical_load(N: object, nu: object, *, e_ratio: object = 1.0,
     :data:`spectral_rod.ring.munder.TOL_RANGE` for "munder" (outside it a ValueError names it).
     Use :func:`ring_buckling` for the mode, its kind and the convergence record.
 
+    Returns
+    -------
+    float
+        The converged q_cr R^3/(E1 I1).
+
+    Examples
+    --------
     >>> round(ring_critical_load(0, 1.0), 12)   # untwisted circular ring: out of plane, 2
     2.0
     """
@@ -108,6 +115,13 @@ def twist_raises_load(q_twisted: ArrayLike, q_untwisted: object) -> bool | NDArr
     ``q_twisted``: q_cr(N) R^3/(E1 I1), a real number or an array (then an array of bools);
     ``q_untwisted``: q_cr(0), a positive real number (the reference of the relative margin).
 
+    Returns
+    -------
+    bool or ndarray of bool
+        True where twist does not lower the load.
+
+    Examples
+    --------
     >>> twist_raises_load(3.0 * (1 - 1e-12), 3.0), twist_raises_load(2.9, 3.0)
     (True, False)
     >>> twist_raises_load([2.9, 3.1], 3.0).tolist()
@@ -163,6 +177,13 @@ def destabilisation_threshold(e_ratio: object, load: object, nus: object, *,
     ``method``: one of :data:`RING_METHODS` (the formulation of every solve). e = E2/E1 and the
     load model as in :func:`ring_critical_load`.
 
+    Returns
+    -------
+    float
+        nu* (to ``xtol``), or ``math.nan`` if no such interval lies on the grid.
+
+    Examples
+    --------
     >>> nu_star = destabilisation_threshold(1.0, "hydrostatic", [2.0, 4.0], twists=(0, 1))
     >>> 2.0 < nu_star < 4.0
     True

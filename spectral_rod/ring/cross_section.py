@@ -34,6 +34,13 @@ _ODD = range(1, 22, 2)
 def rectangle_torsion_ratio(nu: float) -> float:
     """J/(I1 + I2) of a solid rectangle with I2/I1 = nu >= 1 (module docstring).
 
+    Returns
+    -------
+    float
+        J/(I1 + I2).
+
+    Examples
+    --------
     >>> round(rectangle_torsion_ratio(4.0) * 5 / 12, 4)   # h/b = 2: beta = 0.229 (Timoshenko)
     0.2287
     """

@@ -84,6 +84,13 @@ def crit2(N: ArrayLike, nu: object, e_ratio: object = 1.0):
     """Eq. ``crit2``, q_cr R^3/(E1 I1), as a function of a *real* N in [0, MAX_TWIST] (an array
     for smooth curves; the ring closes only for integer N, see :func:`ring_formula_load`).
 
+    Returns
+    -------
+    ndarray of float
+        q_cr R^3/(E1 I1) of Eq. ``crit2`` at each N (the broadcast shape of the inputs).
+
+    Examples
+    --------
     >>> crit2([0.0, 1.5], 1.5).tolist()
     [3.5, 2.9375]
     """
@@ -112,6 +119,13 @@ def ring_formula_load(N: object, nu: object, *, e_ratio: object = 1.0) -> float:
     float
         q_cr R^3/(E1 I1) = e/2 * [3 (1 + nu) - (nu - 1)(N^2 + 1)].  It is negative beyond the
         threshold twist (:func:`threshold_twist`); the value is returned as the formula gives it.
+
+    Examples
+    --------
+    >>> ring_formula_load(0, 1.0)   # e/2 * 3 (1 + nu) at e = nu = 1
+    3.0
+    >>> ring_formula_load(2, 1.5) == float(crit2(2.0, 1.5))   # the integer N of the curve
+    True
     """
     n = check_twist_count(N)
     return float(_crit2(float(n), check_scalar_nu(nu), check_e_ratio(e_ratio)))
@@ -124,6 +138,12 @@ class ThresholdTwist(NamedTuple):
                  = (2 nu + 4)/(nu - 1); ``math.inf`` for nu = 1 (crit2 = 3 e > 0 for every N).
     integer    : the smallest integer N with crit2(N) <= 0 (the paper's "N^2 >= ..."), i.e.
                  ceil(N*); ``math.inf`` for nu = 1.
+
+    Examples
+    --------
+    >>> import spectral_rod as sr
+    >>> sr.threshold_twist(1.0)   # circular section: never unstable without load
+    ThresholdTwist(continuous=inf, integer=inf)
     """
 
     continuous: float
@@ -135,6 +155,19 @@ def threshold_twist(nu: object) -> ThresholdTwist:
 
     N^2 >= 3 (I1 + I2)/(I2 - I1) - 1 = (2 nu + 4)/(nu - 1).  For nu = 1 (circular section) the
     formula never reaches zero and both fields are ``math.inf``.
+
+    Returns
+    -------
+    ThresholdTwist
+        The real root N* of Eq. ``crit2`` and the smallest integer N at or beyond it.
+
+    Examples
+    --------
+    >>> t = threshold_twist(1.5)
+    >>> round(t.continuous ** 2, 12), t.integer   # N^2 = (2 nu + 4)/(nu - 1) = 14 at nu = 1.5
+    (14.0, 4)
+    >>> ring_formula_load(4, 1.5) < 0 < ring_formula_load(3, 1.5)
+    True
     """
     v = check_scalar_nu(nu)
     if v == 1.0:

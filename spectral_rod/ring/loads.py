@@ -60,7 +60,18 @@ def rigid_motion_vectors() -> tuple[np.ndarray, np.ndarray, np.ndarray, list]:
 
 def rigid_motion_stiffness() -> float:
     """max over the rigid motions of |x.K x| / max(diag K): zero to round-off if the vectors of
-    :data:`RIGID_MOTIONS` are rigid (no bending or torsion)."""
+    :data:`RIGID_MOTIONS` are rigid (no bending or torsion).
+
+    Returns
+    -------
+    float
+        The largest relative strain energy of a rigid motion (round-off level).
+
+    Examples
+    --------
+    >>> rigid_motion_stiffness() < 1e-12
+    True
+    """
     X, K, _, _ = rigid_motion_vectors()
     return float(np.max(np.abs(np.einsum("ij,ik,kj->j", X, K, X))) / np.max(np.diag(K)))
 
@@ -68,7 +79,19 @@ def rigid_motion_stiffness() -> float:
 def rigid_motion_load_work(load: str) -> dict[str, float]:
     """x.G x / (2 pi) per rigid motion under `load` (one of
     :data:`spectral_rod.ring.second_variation.RING_LOADS`): > 0 the load destabilises the motion for
-    every q > 0, 0 neutral, < 0 restoring (module docstring)."""
+    every q > 0, 0 neutral, < 0 restoring (module docstring).
+
+    Returns
+    -------
+    dict of str to float
+        The load work per rigid motion, keyed by the motion's name.
+
+    Examples
+    --------
+    >>> work = rigid_motion_load_work("hydrostatic")
+    >>> sorted(work) == sorted(RIGID_MOTIONS)
+    True
+    """
     ld = check_load(load)
     X, _, _ = rigid_motion_vectors()[:3]
     _, G, _ = assemble(0, 1.0, 1.0, ld, _RIGID_FREQUENCIES)
@@ -78,6 +101,17 @@ def rigid_motion_load_work(load: str) -> dict[str, float]:
 
 def constraint_rank_on_rigid_motions() -> int:
     """Rank of the solvers' constraints restricted to the rigid motions, C X (6: every rigid
-    motion is restrained, none is left to drift)."""
+    motion is restrained, none is left to drift).
+
+    Returns
+    -------
+    int
+        The rank (6 when every rigid motion is restrained).
+
+    Examples
+    --------
+    >>> constraint_rank_on_rigid_motions()
+    6
+    """
     X, _, C, _ = rigid_motion_vectors()
     return int(np.linalg.matrix_rank(C @ X))

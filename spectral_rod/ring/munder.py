@@ -344,7 +344,21 @@ def reference_torsions(N: object, M: int = 8) -> tuple[NDArray[np.float64], ...]
     """(s, w10, w20, w30) of the stress-free twisted ring (R = 1, Omega = N s): Eq. ``frenet``
     applied to the paper's frame t0 = e_phi, u0 = -cos Omega e_r + sin Omega e_z, v0 = sin Omega
     e_r + cos Omega e_z by spectral differentiation on this formulation's grid (truncation M),
-    to be compared with the paper's w10 = cos Omega/R, w20 = -sin Omega/R, w30 = N/R."""
+    to be compared with the paper's w10 = cos Omega/R, w20 = -sin Omega/R, w30 = N/R.
+
+    Returns
+    -------
+    tuple of four ndarray of float
+        The grid s and the torsions w10, w20, w30 on it.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> s, w10, w20, w30 = reference_torsions(2)
+    >>> bool(np.allclose(w10, np.cos(2 * s)) and np.allclose(w20, -np.sin(2 * s))
+    ...      and np.allclose(w30, 2.0))
+    True
+    """
     n_turns = check_twist_count(N, maximum=MAX_TWIST)
     grid = _grid(check_int(M, "M", 4, 200), n_turns)
     geo = _geometry(grid, n_turns)
@@ -476,6 +490,13 @@ def base_residual(N: int, nu: float, *, e_ratio: float = 1.0, load: str = "hydro
     """Largest |residual| at zero perturbation: 0 (to round-off) iff the loaded circle with the
     hoop force F_t = -q R and no moments is an equilibrium of the chosen equations.
 
+    Returns
+    -------
+    float
+        The largest absolute residual of the base state.
+
+    Examples
+    --------
     >>> base_residual(2, 3.0) < 1e-12
     True
     """
@@ -720,6 +741,14 @@ def munder_buckling(N: object, nu: object, *, e_ratio: object = 1.0,
     to ``tol`` relatively; otherwise :class:`spectral_rod.RingConvergenceError` is raised (or,
     with ``raise_on_failure=False``, the result is returned with ``converged=False``).
 
+    Returns
+    -------
+    MunderBuckling
+        The critical load q_cr R^3/(E1 I1), the mode's kind, the final truncation and the
+        convergence record (``converged``, ``rel_change``).
+
+    Examples
+    --------
     >>> round(munder_buckling(0, 4.0).load, 9)
     3.0
     """
@@ -823,11 +852,20 @@ def ring_formulation_agreement(cases: Iterable[Mapping[str, object] | tuple] = A
                                *, tol: float = 1.0e-10) -> list[dict[str, object]]:
     """Both formulations on each case (N, nu[, e_ratio[, load]]) (tuples or dicts).
 
-    Returns one dict per case: N, nu, e_ratio, load, q_galerkin (the energy formulation,
-    :func:`spectral_rod.ring_critical_load`), q_munder (this module), rel_diff, the critical
-    mode's kind by each (kind_galerkin, kind_munder), max_frequency
-    and n_unknowns (this module's final resolution), galerkin_max_frequency, t_galerkin and
-    t_munder (wall-clock seconds).
+    Returns
+    -------
+    list of dict
+        One dict per case: N, nu, e_ratio, load, q_galerkin (the energy formulation,
+        :func:`spectral_rod.ring_critical_load`), q_munder (this module), rel_diff, the
+        critical mode's kind by each (kind_galerkin, kind_munder), max_frequency and
+        n_unknowns (this module's final resolution), galerkin_max_frequency, t_galerkin and
+        t_munder (wall-clock seconds).
+
+    Examples
+    --------
+    >>> rows = ring_formulation_agreement([(0, 1.0), (2, 2.0)])
+    >>> all(r["rel_diff"] < 1e-10 for r in rows), [r["kind_munder"] for r in rows]
+    (True, ['out-of-plane', 'coupled'])
     """
     from spectral_rod.ring.second_variation import ring_buckling
 
@@ -854,7 +892,20 @@ def ring_formulation_agreement(cases: Iterable[Mapping[str, object] | tuple] = A
 
 def formulation_row(ref: RingBuckling, mb: MunderBuckling) -> dict[str, object]:
     """One case of :func:`ring_formulation_agreement` (without its timings) from the two
-    formulations' results of one ring."""
+    formulations' results of one ring.
+
+    Returns
+    -------
+    dict of str to object
+        The case's row, keys as in :func:`ring_formulation_agreement` but the timings.
+
+    Examples
+    --------
+    >>> import spectral_rod as sr
+    >>> row = formulation_row(sr.ring_buckling(0, 1.0), munder_buckling(0, 1.0))
+    >>> row["rel_diff"] < 1e-10, row["kind_galerkin"] == row["kind_munder"]
+    (True, True)
+    """
     if not isinstance(ref, RingBuckling):
         raise TypeError(f"ring_formulation_row: ref must be a RingBuckling (ring_buckling's "
                         f"result), got {type(ref).__name__}")

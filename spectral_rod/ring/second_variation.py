@@ -404,6 +404,13 @@ def one_harmonic_load(N: object, nu: object, e_ratio: object = 1.0,
     so an upper bound of the converged q_cr, exact at N = 0 where frequencies decouple); the
     smallest over n = 2 .. 2N + ONE_HARMONIC_EXTRA, and that n.
 
+    Returns
+    -------
+    tuple (float, int)
+        The smallest one-harmonic load q R^3/(E1 I1) and its frequency n.
+
+    Examples
+    --------
     >>> q, n = one_harmonic_load(0, 4.0)   # N = 0: the exact in-plane load 3 at n = 2
     >>> round(q, 12), n
     (3.0, 2)
@@ -420,7 +427,20 @@ def coupling_strengths(N: object, nu: object, e_ratio: object = 1.0) -> dict[str
     """How strongly the stiffness K of the second variation couples the perturbation equations
     (frequencies 0..4N+4, relative to K's largest entry): ``fields``, the largest entry linking
     y_phi with (y_z, alpha); ``variable_coefficients``, the largest linking frequency f with
-    f + 2N (a coefficient varying like cos 2 Omega).  Both vanish for N = 0 or nu = 1."""
+    f + 2N (a coefficient varying like cos 2 Omega).  Both vanish for N = 0 or nu = 1.
+
+    Returns
+    -------
+    dict of str to float
+        ``fields`` and ``variable_coefficients``, each relative to K's largest entry.
+
+    Examples
+    --------
+    >>> coupling_strengths(0, 2.0)   # untwisted: nothing couples
+    {'fields': 0.0, 'variable_coefficients': 0.0}
+    >>> min(coupling_strengths(2, 2.0).values()) > 1e-3
+    True
+    """
     n_turns = check_twist_count(N, maximum=MAX_SOLVER_TWIST)
     v, e = check_scalar_nu(nu), check_e_ratio(e_ratio)
     K, _, basis = assemble(n_turns, v, e, "hydrostatic", list(range(4 * max(n_turns, 1) + 5)))
@@ -451,6 +471,13 @@ class RingBuckling:
     converged          rel_change <= tol and :func:`roundoff_floor` (e_ratio, nu, N) <= tol
     history            [(max_frequency, q)] of the truncations tried
     min_load_over_q    smallest 1/q over every family (>= 0: no eigenvalue at q <= 0)
+
+    Examples
+    --------
+    >>> import spectral_rod as sr
+    >>> b = sr.ring_buckling(0, 4.0)   # untwisted, in plane: 3 A (hydrostatic)
+    >>> round(b.load, 12), b.kind
+    (3.0, 'in-plane')
     """
 
     N: int
@@ -503,6 +530,13 @@ def roundoff_floor(e_ratio: object, nu: object = 1.0, N: object = 0) -> float:
     COUPLED_ROUNDOFF eps e (1 + nu)/2 (stiff torsion coupled by the twist).  The range of
     ``tol`` a ring solve accepts is [roundoff_floor(e, nu, N), TOL_RANGE[1] = 1e-2].
 
+    Returns
+    -------
+    float
+        The smallest relative tol a ring solve can meet.
+
+    Examples
+    --------
     >>> f"{roundoff_floor(1e6):.1e}", f"{roundoff_floor(1e6, 1e4, 60):.1e}"
     ('1.8e-09', '5.6e-07')
     """
@@ -580,6 +614,18 @@ def ring_buckling(N: object, nu: object, *, e_ratio: object = 1.0, load: object 
     are upper bounds (Rayleigh-Ritz on a subspace).
     Raises :class:`RingConvergenceError` if the refinement did not converge and
     ``raise_on_failure`` (a fixed ``max_frequency`` warns instead: nothing was refined).
+
+    Returns
+    -------
+    RingBuckling
+        The critical load, its mode's kind and family, the mode's coefficients and the
+        convergence record.
+
+    Examples
+    --------
+    >>> b = ring_buckling(0, 1.0)   # untwisted circular ring: 9 A/(4 + A/A3), A3 = 2 A
+    >>> round(b.load, 12), b.kind, b.converged
+    (2.0, 'out-of-plane', True)
     """
     n_turns = check_twist_count(N, maximum=MAX_SOLVER_TWIST)
     v = check_scalar_nu(nu)

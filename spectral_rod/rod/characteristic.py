@@ -267,7 +267,15 @@ def _determinants(p: ArrayLike, twist_angle: ArrayLike, nu: ArrayLike, dtype: ty
 
 @dataclass(frozen=True)
 class CharacteristicRoot:
-    """p* from the characteristic equation, the family of the mode, and beta_k^2 L^2 there."""
+    """p* from the characteristic equation, the family of the mode, and beta_k^2 L^2 there.
+
+    Examples
+    --------
+    >>> import spectral_rod as sr
+    >>> r = sr.characteristic_critical_load(0.0, 1.5)
+    >>> float(r.p_star), r.family
+    (1.0, 'symmetric')
+    """
 
     p_star: mp.mpf
     family: str
@@ -353,6 +361,13 @@ def characteristic_critical_load(twist_angle: float, nu: float, *, dps: int = 40
     p = 1 - 1e-9 to p_max (default (1 + nu)/2, the Rayleigh upper bound, plus a margin) and the
     lowest sign change of either family is refined. Raises RootNotFoundError if none is found.
 
+    Returns
+    -------
+    CharacteristicRoot
+        p* (an ``mpmath.mpf``), the critical family and beta_k^2 L^2 there.
+
+    Examples
+    --------
     >>> float(characteristic_critical_load(0.0, 1.5).p_star)
     1.0
     """
@@ -376,6 +391,18 @@ def family_critical_load(family: str, twist_angle: float, nu: float, *, dps: int
     runs to p_max (default nu plus a margin). At Omega = 0 or nu = 1 the roots are the Euler
     loads, returned in closed form (symmetric 1, antisymmetric min(4, nu) for nu > 1 at zero
     twist; both 1 for nu = 1). p* is the smaller of the two families' roots.
+
+    Returns
+    -------
+    CharacteristicRoot
+        The family's lowest root p (an ``mpmath.mpf``), the family and beta_k^2 L^2 there.
+
+    Examples
+    --------
+    >>> import spectral_rod as sr
+    >>> r = family_critical_load("symmetric", 5.0, 1.5)   # the critical family at Omega = 5
+    >>> abs(float(r.p_star) / sr.critical_load(5.0, 1.5) - 1) < 1e-12
+    True
     """
     check_family(family)
     om_f, nu_f, dps, scan_step, p_max = _reference_args(twist_angle, nu, dps, scan_step, p_max,
@@ -813,6 +840,13 @@ def characteristic_determinant(family: str, p_star: float, twist_angle: float, n
                                dps: int = 30) -> float:
     """D_sym or D_anti at the load p* (lambda = pi^2 p*), evaluated at ``dps`` digits.
 
+    Returns
+    -------
+    float
+        The determinant's value (its zeros in p* are the family's buckling loads).
+
+    Examples
+    --------
     >>> abs(characteristic_determinant("symmetric", 1.0, 0.0, 1.5)) < 1e-25  # Euler's load
     True
     """

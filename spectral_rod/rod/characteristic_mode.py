@@ -67,6 +67,14 @@ class CharacteristicMode:
 
     s: grid on [0, 1]; xi, eta: body-frame displacements along (u0, v0); x1, x2: the centreline
     displacement in the fixed frame, x = R(Omega s) (xi, eta); all scaled to max |x| = 1.
+
+    Examples
+    --------
+    >>> import spectral_rod as sr
+    >>> root = sr.characteristic_critical_load(3.0, 1.5)
+    >>> mode = sr.characteristic_mode(root, 3.0, 1.5, points=5)
+    >>> mode.s.tolist(), bool(abs(mode.x2[[0, -1]]).max() < 1e-12)   # hinged ends
+    ([0.0, 0.25, 0.5, 0.75, 1.0], True)
     """
 
     s: NDArray[np.float64]
@@ -206,7 +214,22 @@ def characteristic_mode(root: CharacteristicRoot, twist_angle: float, nu: float,
     the fixed-frame centreline x = R(Omega s)(xi, eta), scaled to max |x| = 1 (the maximum taken
     on a fixed fine grid too, so that a coarse output grid -- even just the two hinges, where
     x = 0 -- is scaled like any other). A mode that comes out non-finite or zero raises
-    :class:`spectral_rod.ConvergenceError` (no such case is known)."""
+    :class:`spectral_rod.ConvergenceError` (no such case is known).
+
+    Returns
+    -------
+    CharacteristicMode
+        The grid s, the body-frame displacements (xi, eta) and the fixed-frame centreline
+        (x1, x2), scaled to max |x| = 1.
+
+    Examples
+    --------
+    >>> import spectral_rod as sr
+    >>> root = sr.characteristic_critical_load(1000.0, 1.5)
+    >>> mode = characteristic_mode(root, 1000.0, 1.5, points=5)
+    >>> bool(abs(mode.x1[[0, -1]]).max() < 1e-12)   # hinged ends
+    True
+    """
     npts = check_int(points, "points", 2, 100_000)
     s = np.concatenate([np.linspace(0.0, 1.0, npts), np.linspace(0.0, 1.0, SCALE_POINTS)])
     xi, eta = mode_fields(root, twist_angle, nu, s, dps)

@@ -170,14 +170,35 @@ __all__ = [
 
 
 def large_twist_limit(nu: float) -> float:
-    """lim_{Omega -> inf} p* = 2 nu / (1 + nu): the harmonic mean of A1 and A2 over A1."""
+    """lim_{Omega -> inf} p* = 2 nu / (1 + nu): the harmonic mean of A1 and A2 over A1.
+
+    Returns
+    -------
+    float
+        2 nu/(1 + nu).
+
+    Examples
+    --------
+    >>> large_twist_limit(3.0)
+    1.5
+    >>> import spectral_rod as sr
+    >>> abs(sr.critical_load(1000.0, 3.0) - 1.5) < 1e-5   # Omega(L) = 1000: close to the limit
+    True
+    """
     nu = _nu(nu)
     return 2.0 * nu / (1.0 + nu)
 
 
 @dataclass(frozen=True)
 class LargeTwistCoefficients:
-    """p_family = p_inf + a2/Omega^2 + sigma b3 sin(Omega)/Omega^3 + a4/Omega^4 + O(Omega^-5)."""
+    """p_family = p_inf + a2/Omega^2 + sigma b3 sin(Omega)/Omega^3 + a4/Omega^4 + O(Omega^-5).
+
+    Examples
+    --------
+    >>> import spectral_rod as sr
+    >>> sr.large_twist_coefficients(1.0).p_inf   # nu = 1: p* = 1 at every twist
+    1.0
+    """
 
     p_inf: float
     a2: float
@@ -186,7 +207,20 @@ class LargeTwistCoefficients:
 
 
 def large_twist_coefficients(nu: float) -> LargeTwistCoefficients:
-    """The coefficients of the large-twist expansion (module docstring)."""
+    """The coefficients of the large-twist expansion (module docstring).
+
+    Returns
+    -------
+    LargeTwistCoefficients
+        p_inf, a2, b3 and a4 of the expansion.
+
+    Examples
+    --------
+    >>> import math
+    >>> c = large_twist_coefficients(1.5)
+    >>> c.p_inf, math.isclose(c.a2, -c.p_inf * math.pi**2 * 0.5**2 / (4 * 2.5**2))
+    (1.2, True)
+    """
     return LargeTwistCoefficients(*_coefficients(_nu(nu)))
 
 
@@ -230,6 +264,17 @@ def large_twist_expansion(twist_angle: float, nu: float, *, order: int = 4,
     'symmetric' (+b3 sin Omega) or 'antisymmetric' (-b3 sin Omega). Error O(Omega^-(order+1))
     for order >= 2 (O(Omega^-2) for order 0). Meant for |Omega| >~ 10; refused below
     |Omega| = 2 pi (:data:`EXPANSION_MIN_TWIST`), where the series stops making sense.
+
+    Returns
+    -------
+    float
+        The expansion's p* (or the family's load).
+
+    Examples
+    --------
+    >>> import spectral_rod as sr   # against the converged p*
+    >>> abs(large_twist_expansion(200.0, 1.5) / sr.critical_load(200.0, 1.5) - 1) < 1e-9
+    True
     """
     if isinstance(order, bool) or not isinstance(order, (int, np.integer)):
         raise TypeError(f"order must be an integer (0, 2, 3 or 4), got {type(order).__name__}")
@@ -255,7 +300,14 @@ def large_twist_expansion(twist_angle: float, nu: float, *, order: int = 4,
 
 @dataclass(frozen=True)
 class BetaWindow:
-    """beta_1 is imaginary for omega_a < Omega(L) < omega_b; p* at the ends is p_a, p_b."""
+    """beta_1 is imaginary for omega_a < Omega(L) < omega_b; p* at the ends is p_a, p_b.
+
+    Examples
+    --------
+    >>> w = imaginary_beta1_window(1.0)   # nu = 1: y = pi
+    >>> round(w.y, 12) == round(math.pi, 12)
+    True
+    """
 
     omega_a: float
     omega_b: float
@@ -271,6 +323,22 @@ def imaginary_beta1_window(nu: float) -> BetaWindow:
     p_a = 4 nu y^2/(pi^2 (nu + 3)), y in (pi/2, pi] the root of (nu - 1) y cos y + 4 sin y = 0
     (y = pi at nu = 1). Valid while the symmetric family is critical at both ends (Omega < 2 pi),
     which the claims tests check for nu in [1, 10].
+
+    Returns
+    -------
+    BetaWindow
+        The window's ends omega_a < omega_b, p* there (p_a, p_b) and the root y.
+
+    Examples
+    --------
+    >>> import math
+    >>> w = imaginary_beta1_window(1.5)
+    >>> w.omega_a < math.pi < w.omega_b
+    True
+    >>> import spectral_rod as sr   # beta_1^2 = X_- changes sign at omega_b
+    >>> p = sr.critical_load(w.omega_b, 1.5)
+    >>> abs(sr.critical_wavenumbers(p, w.omega_b, 1.5)[0]) < 1e-5
+    True
     """
     nu = _nu(nu)
     if nu == 1.0:
@@ -294,7 +362,20 @@ def imaginary_beta1_window(nu: float) -> BetaWindow:
 
 
 def large_twist_wavenumbers(twist_angle: float, nu: float) -> tuple[float, float]:
-    """(beta_1 L, beta_2 L) on the critical curve to O(Omega^-3) (error O(Omega^-4))."""
+    """(beta_1 L, beta_2 L) on the critical curve to O(Omega^-3) (error O(Omega^-4)).
+
+    Returns
+    -------
+    tuple of two float
+        (beta_1 L, beta_2 L).
+
+    Examples
+    --------
+    >>> import math
+    >>> b1, b2 = large_twist_wavenumbers(1000.0, 1.5)
+    >>> abs(b1 - (1000.0 - math.pi)) < 1e-4, abs(b2 - (1000.0 + math.pi)) < 1e-4   # Omega -+ pi
+    (True, True)
+    """
     om = _large_twist(twist_angle)
     nu = _nu(nu)
     b = math.pi**2 * large_twist_limit(nu) * 0.5 * (1.0 - 1.0 / nu)
@@ -306,7 +387,15 @@ def large_twist_wavenumbers(twist_angle: float, nu: float) -> tuple[float, float
 @dataclass(frozen=True)
 class CrossingClosedForm:
     """The family crossing near n pi (a corner maximum of p*): beta_1 L = (n-1) pi and
-    beta_2 L = (n+1) pi exactly there."""
+    beta_2 L = (n+1) pi exactly there.
+
+    Examples
+    --------
+    >>> import math, spectral_rod as sr
+    >>> c = sr.crossing_closed_form(3, 1.5)
+    >>> round(c.beta1 / math.pi, 12), round(c.beta2 / math.pi, 12)   # (n -+ 1) pi
+    (2.0, 4.0)
+    """
 
     n: int
     twist: float
@@ -319,6 +408,13 @@ def crossing_closed_form(n: int, nu: float) -> CrossingClosedForm:
     """Omega_n and p*_n of the crossing near n pi (2 <= n <= 1e4; module docstring for the
     proof and for the form of p*_n without the cancellation in N - w_n).
 
+    Returns
+    -------
+    CrossingClosedForm
+        n, the crossing twist Omega_n, p*_n and the wavenumbers (n - 1) pi, (n + 1) pi.
+
+    Examples
+    --------
     >>> c = crossing_closed_form(2, 1.5)
     >>> round(c.twist, 12), round(c.p_star, 12)
     (6.285782609677, 1.196030793888)
@@ -337,7 +433,22 @@ def crossing_closed_form(n: int, nu: float) -> CrossingClosedForm:
 
 
 def crossing_twist_asymptotic(n: int, nu: float) -> float:
-    """Omega_n ~ n pi + pi ((nu - 1)/(nu + 1))^2 / (8 n^3), error O(n^-5) (module docstring)."""
+    """Omega_n ~ n pi + pi ((nu - 1)/(nu + 1))^2 / (8 n^3), error O(n^-5) (module docstring).
+
+    Returns
+    -------
+    float
+        The asymptotic crossing twist Omega_n (radians).
+
+    Examples
+    --------
+    >>> import math
+    >>> round(crossing_twist_asymptotic(2, 1.5) / math.pi, 9)   # 2 + (0.5/2.5)^2 / 64
+    2.000625
+    >>> exact = crossing_closed_form(6, 1.5).twist   # the closed form, error O(n^-5)
+    >>> abs(crossing_twist_asymptotic(6, 1.5) - exact) < 1e-5
+    True
+    """
     n = check_int(n, "n", 2, CROSSING_MAX_N)
     nu = _nu(nu)
     q = (nu - 1.0) / (nu + 1.0)

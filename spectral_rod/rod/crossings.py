@@ -52,6 +52,13 @@ class FamilyCrossing:
     above the crossing; kind: 'corner maximum' when p* rises into the crossing and falls out of it
     (p* = min of two smooth branches has a concave corner there, not a smooth maximum), else
     'corner' (a kink on a monotone stretch); nu: the nu it was computed at.
+
+    Examples
+    --------
+    >>> import math, spectral_rod as sr
+    >>> c = sr.family_crossing(2 * math.pi, 1.5)
+    >>> c.left, c.right   # symmetric below, antisymmetric above the crossing
+    ('symmetric', 'antisymmetric')
     """
 
     twist: mp.mpf
@@ -84,6 +91,22 @@ def family_crossing(twist_guess: float, nu: float, *, p_guess: float | None = No
     ``p_guess`` is given. The result is verified independently: the sign scan of each family
     must return the crossing load as that family's *lowest* root, so the crossing lies on the
     critical curve p*(Omega). Raises RuntimeError otherwise.
+
+    Returns
+    -------
+    FamilyCrossing
+        The crossing twist and load, the slopes of both branches, the families critical on
+        either side, its kind and nu.
+
+    Examples
+    --------
+    >>> import math
+    >>> c = family_crossing(2 * math.pi, 1.5)
+    >>> c.kind
+    'corner maximum'
+    >>> import spectral_rod as sr   # the closed form
+    >>> abs(float(c.twist) - sr.crossing_closed_form(2, 1.5).twist) < 1e-12
+    True
     """
     twist_guess = check_real(twist_guess, "twist_guess", 0.0, 1.0e3, lo_open=True)
     nu, dps = scalar_nu(nu), check_int(dps, "dps", *DPS_RANGE)
@@ -118,7 +141,15 @@ def family_crossing(twist_guess: float, nu: float, *, p_guess: float | None = No
 @dataclass(frozen=True)
 class CollocationCrossing:
     """A family crossing located by collocation: twist, p* there, slopes per family, degree,
-    and the estimated absolute errors of twist and p_star (:func:`collocation_crossing`)."""
+    and the estimated absolute errors of twist and p_star (:func:`collocation_crossing`).
+
+    Examples
+    --------
+    >>> import math, spectral_rod as sr
+    >>> c = sr.collocation_crossing(2 * math.pi, 1.5)
+    >>> abs(c.twist - sr.crossing_closed_form(2, 1.5).twist) <= max(c.twist_error, 1e-9)
+    True
+    """
 
     twist: float
     p_star: float
@@ -147,6 +178,14 @@ def collocation_crossing(twist_guess: float, nu: float, half_width: float = 0.15
     estimate (at most 0.18 of twist_error and 0.25 of p_error; median ~1e-4 and 0.05: the
     round-off floor is a worst case).
 
+    Returns
+    -------
+    CollocationCrossing
+        The crossing twist, p* there, each family's slope, the degree and the estimated
+        absolute errors ``twist_error`` and ``p_error``.
+
+    Examples
+    --------
     >>> c = collocation_crossing(2 * math.pi, 1.5)
     >>> abs(c.twist - 6.285782609677) < max(c.twist_error, 1e-12)
     True
@@ -210,6 +249,13 @@ class CrossingWavenumbers:
     (n -+ 1) pi| with n the nearest integer to (beta1 + beta2)/(2 pi) (0 up to the precision
     when the crossing theorem of :mod:`spectral_rod.rod.closed_form` holds); slopes: d(beta2 -
     beta1)/dOmega along each family's root curve.
+
+    Examples
+    --------
+    >>> import math, spectral_rod as sr
+    >>> w = sr.crossing_wavenumbers(sr.family_crossing(2 * math.pi, 1.5), 1.5)
+    >>> float(w.resonance_gap) < 1e-12
+    True
     """
 
     beta1: float
@@ -229,7 +275,22 @@ def crossing_wavenumbers(crossing: FamilyCrossing, nu: float, dps: int = 30
                          ) -> CrossingWavenumbers:
     """beta_1 L, beta_2 L and beta_2 - beta_1 at a crossing, with the slopes of beta_2 - beta_1
     along both branches (chain rule with :attr:`FamilyCrossing.slopes`). ``nu`` must be the
-    crossing's own (ValueError otherwise)."""
+    crossing's own (ValueError otherwise).
+
+    Returns
+    -------
+    CrossingWavenumbers
+        beta_1 L, beta_2 L, Re(beta_2 - beta_1) L, the gap to (n -+ 1) pi and the slopes of
+        beta_2 - beta_1 along each branch.
+
+    Examples
+    --------
+    >>> import math
+    >>> c = family_crossing(2 * math.pi, 1.5)
+    >>> w = crossing_wavenumbers(c, 1.5)
+    >>> round(float(w.beta1) / math.pi, 9), round(float(w.beta2) / math.pi, 9)   # (n -+ 1) pi
+    (1.0, 3.0)
+    """
     if not isinstance(crossing, FamilyCrossing):
         raise TypeError(f"crossing must be a FamilyCrossing, got {type(crossing).__name__}")
     nu, dps = scalar_nu(nu), check_int(dps, "dps", *DPS_RANGE)

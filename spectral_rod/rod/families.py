@@ -21,6 +21,8 @@ from spectral_rod._validation import check_choice, scalar_nu
 __all__ = ["CLOSE_REL", "FAMILIES", "FAMILY_DTYPE", "SHIFT", "TIE_REL", "check_family",
            "euler_loads", "p_star_bounds"]
 
+#: The mode families' labels (dimensionless), by the parity of (omega1, omega2) about
+#: mid-span: "symmetric" (omega1 even, omega2 odd; Euler's mode) and "antisymmetric".
 FAMILIES = ("symmetric", "antisymmetric")
 #: The numpy string dtype of arrays of family names (every entry point returns it).
 FAMILY_DTYPE = f"<U{max(map(len, FAMILIES))}"
@@ -43,6 +45,13 @@ def check_family(family: object, name: str = "family") -> str:
 def p_star_bounds(nu: float) -> tuple[float, float]:
     """The rigorous bounds (1, (1 + nu)/2) of p* for nu = I2/I1 >= 1.
 
+    Returns
+    -------
+    tuple of two float
+        (lower, upper) bound of p*.
+
+    Examples
+    --------
     >>> p_star_bounds(1.5)
     (1.0, 1.25)
     """

@@ -38,7 +38,22 @@ def _curve(name_a: str, a: ArrayLike, name_b: str, b: ArrayLike, minimum: int = 
 def non_planarity(x1: ArrayLike, x2: ArrayLike) -> float:
     """sigma_min/sigma_max of the samples (x1, x2) of a centreline's lateral displacement: 0 iff
     the centreline lies in one plane through the rod's axis (a plane containing both hinged ends
-    must contain the axis), up to 1 for a circular helix-like spread."""
+    must contain the axis), up to 1 for a circular helix-like spread.
+
+    Returns
+    -------
+    float
+        sigma_min/sigma_max in [0, 1].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> s = np.linspace(0, 1, 101)
+    >>> round(non_planarity(np.sin(np.pi * s), 2 * np.sin(np.pi * s)), 12)   # one plane
+    0.0
+    >>> round(non_planarity(np.sin(np.pi * s), np.sin(2 * np.pi * s)), 6)   # orthogonal shapes
+    1.0
+    """
     a, b = _curve("x1", x1, "x2", x2)
     m = max(np.abs(a).max(), np.abs(b).max())
     if m == 0.0:
@@ -50,21 +65,56 @@ def non_planarity(x1: ArrayLike, x2: ArrayLike) -> float:
 
 def local_maxima(grid: ArrayLike, values: ArrayLike) -> NDArray[np.float64]:
     """Grid points of the interior local maxima of `values` (strictly above the left neighbour,
-    not below the right one)."""
+    not below the right one).
+
+    Returns
+    -------
+    ndarray of float
+        The grid points of the maxima, in grid order.
+
+    Examples
+    --------
+    >>> local_maxima([0, 1, 2, 3, 4], [0.0, 2.0, 1.0, 3.0, 0.0]).tolist()
+    [1.0, 3.0]
+    """
     g, v = _curve("grid", grid, "values", values, 1)
     idx = np.flatnonzero((v[1:-1] > v[:-2]) & (v[1:-1] >= v[2:])) + 1
     return g[idx]
 
 
 def family_switches(grid: ArrayLike, family: ArrayLike) -> NDArray[np.float64]:
-    """Midpoints of the grid intervals across which the labels `family` change."""
+    """Midpoints of the grid intervals across which the labels `family` change.
+
+    Returns
+    -------
+    ndarray of float
+        The midpoints, in grid order (empty if the label never changes).
+
+    Examples
+    --------
+    >>> family_switches([0.0, 1.0, 2.0, 3.0], ["symmetric", "symmetric", "antisymmetric",
+    ...                                          "antisymmetric"]).tolist()
+    [1.5]
+    """
     g, f = _curve("grid", grid, "family", family, 1)
     idx = np.flatnonzero(f[1:] != f[:-1])
     return 0.5 * (g[idx] + g[idx + 1])
 
 
 def increasing_up_to(grid: ArrayLike, values: ArrayLike, end: float) -> bool:
-    """Whether `values` increase strictly on the grid points <= `end`."""
+    """Whether `values` increase strictly on the grid points <= `end`.
+
+    Returns
+    -------
+    bool
+        True iff every step of `values` up to `end` is an increase.
+
+    Examples
+    --------
+    >>> grid, values = [0, 1, 2, 3], [1.0, 2.0, 3.0, 2.5]
+    >>> increasing_up_to(grid, values, 2.0), increasing_up_to(grid, values, 3.0)
+    (True, False)
+    """
     g, v = _curve("grid", grid, "values", values, 1)
     end = check_real(end, "end")
     return bool(np.all(np.diff(v[g <= end]) > 0))
@@ -72,7 +122,20 @@ def increasing_up_to(grid: ArrayLike, values: ArrayLike, end: float) -> bool:
 
 def settling_point(grid: ArrayLike, gap: ArrayLike, level: float) -> float | None:
     """Smallest grid point beyond which |gap| < level everywhere on the grid (the first point if
-    it holds throughout; None if it does not hold at the end of the grid)."""
+    it holds throughout; None if it does not hold at the end of the grid).
+
+    Returns
+    -------
+    float or None
+        That grid point, or None.
+
+    Examples
+    --------
+    >>> settling_point([1, 2, 3, 4], [0.5, 0.05, 0.2, 0.01], 0.1)
+    4.0
+    >>> settling_point([1, 2], [0.5, 0.2], 0.1) is None
+    True
+    """
     g, d = _curve("grid", grid, "gap", gap, 1)
     d, level = np.abs(d), check_real(level, "level", 0.0, lo_open=True)
     bad = np.flatnonzero(d >= level)
@@ -92,6 +155,13 @@ def observed_order(x: ArrayLike, err: ArrayLike) -> float:
     >= 2. The slope is a fit, not a limit: it measures the order only over a range where one
     power dominates.
 
+    Returns
+    -------
+    float
+        The fitted exponent p.
+
+    Examples
+    --------
     >>> x = np.array([10.0, 20.0, 40.0])
     >>> round(observed_order(x, 3.0 / x**2), 12)
     -2.0

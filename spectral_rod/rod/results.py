@@ -48,6 +48,13 @@ class CriticalLoad(_ShortRepr):
     'antisymmetric'; converged: error_estimate <= tol; tol: the requested tolerance; engine:
     what computed it, "kernel" (the C kernel) or "numpy" (its numpy reference) for collocation,
     the method's name for the other methods (None where a caller did not record it).
+
+    Examples
+    --------
+    >>> import spectral_rod as sr
+    >>> r = sr.critical_load(0.0, 1.5, full_output=True)
+    >>> round(float(r.p_star), 12), r.family, r.converged
+    (1.0, 'symmetric', True)
     """
 
     p_star: Any
@@ -74,6 +81,13 @@ class BucklingMode(_ShortRepr):
     computed by the method that computed p*, see :func:`spectral_rod.buckling_mode`); beta1,
     beta2: the critical wavenumbers times L (beta1 complex when imaginary); family: 'symmetric'
     or 'antisymmetric' about s = L/2.
+
+    Examples
+    --------
+    >>> import spectral_rod as sr
+    >>> m = sr.buckling_mode(5.0, 1.5, points=11)
+    >>> m.s.shape, m.family, m.converged
+    ((11,), 'symmetric', True)
     """
 
     s: NDArray[np.float64]

@@ -50,7 +50,7 @@ __all__ = ["INCREMENT_MAX_TWIST", "METHOD_DTYPE", "NEAR_DEGENERATE", "ROD_METHOD
 ROD_METHODS = ("collocation", "characteristic", "increment", "ritz")
 #: The numpy string dtype of arrays of method names (:func:`route`'s).
 METHOD_DTYPE = f"<U{max(map(len, ROD_METHODS))}"
-#: |Omega(L)| from which the characteristic equation (double precision) is used.
+#: |Omega(L)| (radians) from which the characteristic equation (double precision) is used.
 TWIST_ROUTE = 50.0
 #: nu - 1 up to which p* comes from the characteristic equation in the family bounds'
 #: brackets (|Omega(L)| < TWIST_ROUTE), and up to which method="increment" is accepted.
@@ -123,7 +123,20 @@ def route_point(twist: float, nu: float, n: int | None = None, method: str = "au
 def choose_method(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None,
                   method: str = "auto"):
     """The method :func:`spectral_rod.critical_load` uses at each point (a str for scalars, an
-    array of str otherwise); arguments as there."""
+    array of str otherwise); arguments as there.
+
+    Returns
+    -------
+    str or ndarray of str
+        One of :data:`spectral_rod.ROD_METHODS` per point (the broadcast shape of the inputs).
+
+    Examples
+    --------
+    >>> choose_method(5.0, 1.5)
+    'collocation'
+    >>> choose_method([10.0, 100.0], 1.5).tolist()
+    ['collocation', 'characteristic']
+    """
     twist, nu_arr = check_twist(twist_angle), check_nu(nu)
     n, method = check_route(n, method)
     shape = broadcast_points(twist_angle=twist, nu=nu_arr)

@@ -85,6 +85,13 @@ def critical_wavenumbers(p_star: ArrayLike, twist_angle: ArrayLike, nu: ArrayLik
     X_- < 0 and is then returned as i sqrt(-X_-) (``numpy.emath.sqrt`` convention: a complex
     result wherever one value is imaginary).
 
+    Returns
+    -------
+    tuple (beta1, beta2)
+        beta_1 L (float, or complex where imaginary) and beta_2 L (float); arrays for array input.
+
+    Examples
+    --------
     >>> b1, b2 = critical_wavenumbers(1.0, 0.0, 2.0)   # untwisted: beta = pi and pi/sqrt(2)
     >>> round(float(b2 / b1) ** 2, 12)
     2.0
@@ -102,6 +109,17 @@ def beta_difference(p_star: ArrayLike, twist_angle: ArrayLike, nu: ArrayLike):
 
     The paper's "difference between the critical wavenumbers" (section "Stability of a
     rectilinear rod"); scalars give a float, arrays an ndarray.
+
+    Returns
+    -------
+    float or ndarray
+        Re(beta_2 - beta_1) L (radians per rod length).
+
+    Examples
+    --------
+    >>> import math   # untwisted, nu = 2: beta_1 L = pi/sqrt(2), beta_2 L = pi
+    >>> math.isclose(float(beta_difference(1.0, 0.0, 2.0)), math.pi * (1 - 1 / math.sqrt(2)))
+    True
     """
     lam, mu, om = _loads(p_star, twist_angle, nu)
     x_minus, x_plus = characteristic_roots(lam, mu, om)

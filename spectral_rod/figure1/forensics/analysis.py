@@ -139,6 +139,11 @@ class Forensics:
     sites: one row per data point (in_data) and per missing grid point, with the truth, the
     physics (:func:`site_physics`), the covering run, the best model's y and ok, and cluster
     (index into clusters, -1 if none).
+
+    Examples
+    --------
+    >>> sorted(Forensics.__dataclass_fields__)[:3]   # :func:`analyse_figure1` returns one
+    ['best', 'clusters', 'crossings']
     """
 
     sites: pd.DataFrame
@@ -395,6 +400,20 @@ def analyse_figure1(points: pd.DataFrame, lines: pd.DataFrame | None = None, *,
     Raises TypeError if `points` is not such a DataFrame, ValueError naming the column if one
     of its numeric columns holds NaN, inf or a non-number (e.g. a NaN ``p_star``), and
     ValueError if `p_true` is not one finite value per point.
+
+    Returns
+    -------
+    Forensics
+        Every explained point, the fitted plotting hypotheses, the runs, clusters and
+        missing grid points (fields of :class:`Forensics`).
+
+    Examples
+    --------
+    >>> import spectral_rod as sr
+    >>> points = sr.load_figure1()
+    >>> f = analyse_figure1(points[points["nu"] == 1.5].head(40))   # one curve's first points
+    >>> len(f.sites), bool(f.sites["ok"].all())   # each reproduced by the best hypothesis
+    (40, True)
     """
     need = {"curve", "nu", "picture_x", "picture_y", "twist_angle", "p_star"}
     if not isinstance(points, pd.DataFrame) or not need <= set(points.columns):

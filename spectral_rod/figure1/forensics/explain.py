@@ -38,12 +38,14 @@ _FLAT_SLOPE = 1e-9
 #: LaTeX lines was inserted separately, else 'unexplained'.
 CLUSTER_KINDS = ("imaginary-beta1 window", "double root in one scan step", "no sign change",
                  "edited lines", "unexplained")
+#: The entries of CLUSTER_KINDS by name (labels), in the same order.
 CLUSTER_WINDOW, CLUSTER_DOUBLE_ROOT, CLUSTER_NO_SIGN_CHANGE, CLUSTER_EDITED, CLUSTER_UNEXPLAINED = (
     CLUSTER_KINDS)
 #: The computed causes of a point's failure (:func:`point_causes`' keys, the missing points'
 #: 'causes'), in report order. The last, 'edited line', is LaTeX evidence, not a failure of the
 #: procedure: a cluster's physics and a missing point's causes leave it out.
 POINT_CAUSES = ("imaginary beta_1", "double root in one step", "no sign change", "edited line")
+#: The entries of POINT_CAUSES by name (labels), in the same order.
 CAUSE_IMAGINARY_BETA1, CAUSE_DOUBLE_ROOT, CAUSE_NO_SIGN_CHANGE, CAUSE_EDITED = POINT_CAUSES
 
 

@@ -32,6 +32,13 @@ def picture_lines(tex: str) -> pd.DataFrame:
     after_blank_line (the previous line is empty: a block boundary), fixed_format (the line,
     without trailing blanks, is exactly :data:`PUT_FORMAT`).
 
+    Returns
+    -------
+    pandas.DataFrame
+        One row per ``\\put`` line with the columns above.
+
+    Examples
+    --------
     >>> put = PUT_FORMAT
     >>> tex = "\n".join(["\\begin{picture}(100,100)", put % (0.25, 0.1) + " ", "",
     ...                   put % (0.5, 0.2), put % (0.25, 5.0) + " ", put % (0.5, 5.1) + " ",

@@ -151,6 +151,13 @@ def tail_for_tolerance(tol: float) -> float:
     linear branch of :func:`error_estimate` equals the tail's share of tol, TRUNCATION_SHARE
     tol / ERR_LINEAR (the degree loop's target, :func:`shortfall`).
 
+    Returns
+    -------
+    float
+        The coefficient level (relative to the mode's largest).
+
+    Examples
+    --------
     >>> tail_for_tolerance(1e-12)
     2e-10
     """
