@@ -363,8 +363,8 @@ def roundoff_floor(nu: float, twist_angle: float = 0.0) -> float:
     ~ eps sqrt(nu) (the QR's backward error relative to the mode's energy); the model has a
     safety factor 2. Example: ``roundoff_floor(1e4)`` is 4.6e-14. The |Omega|/40 term: at large
     twist the round-off grows with it: on 1,589 random values (Omega(L) in [400, 1000], nu - 1
-    in [1e-7, 1e-5], either family, against 50-digit family roots;
-    tests/bench/measure_error_floors.py recomputes it) the error reached 29 eps, 2.9 times the floor without
+    in [1e-7, 1e-5], either family, against 50-digit family roots; recomputed by
+    tests/bench/measure_error_floors.py) the error reached 29 eps, 2.9 times the floor without
     the term; with it the error is <= 0.84 of the estimate and a value below the reference is
     short by <= 0.57 of the floor.
     """
