@@ -88,7 +88,7 @@ def best_time(fn: Callable[[], object], min_total: float = 0.02, max_repeats: in
     """Smallest wall time of `fn` over repeats (until ~min_total seconds), and its result.
 
     One untimed call first: operators are assembled once per degree and cached (a one-time
-    cost per session, not part of the per-point cost compared here).
+    cost per process, not part of the per-point cost compared here).
     """
     return interleaved_best_times([fn], min_total, max_repeats)[0]
 

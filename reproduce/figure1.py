@@ -171,7 +171,7 @@ CHECK = {
                               "details.summary.*": {"rel": 1e-9, "abs": 2e-12}, "*": "exact"},
 }
 TOL = 1e-12
-#: Acceptance thresholds of the reproduction (issue 2): per-curve rms and max |deviation|.
+#: Acceptance thresholds of the reproduction: per-curve rms and max |deviation|.
 RMS_LIMIT, MAX_LIMIT = 1.5e-4, 6e-4
 COLORS = dict(zip(FIGURE1_NU, ("tab:blue", "tab:orange", "tab:green"), strict=True))
 #: Guide lines of the main panel at Omega(L) = k pi (the family crossings lie near k pi, k >= 2).
@@ -241,7 +241,7 @@ def draw(table: pd.DataFrame, curves: dict[float, tuple[np.ndarray, np.ndarray]]
 
 
 # ------------------------------------------------------------------------------------------
-# Figure 1 point by point (issue 12): verdict rule, ledger row, figure, report section
+# Figure 1 point by point: verdict rule, ledger row, figure, report section
 # ------------------------------------------------------------------------------------------
 
 CLAIM_ID = "fig1-curves"

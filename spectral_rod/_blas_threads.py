@@ -3,7 +3,7 @@
 The package's matrices are small (tens to a few hundred rows). Handed to a multithreaded BLAS,
 each call wakes worker threads whose start-up and spinning cost more than the work; on a
 machine whose cores are busy with other jobs that varies wildly (measured on a shared 2-core
-machine: the near-degenerate increment, when it was solved point by point, took 2.7 ms a
+machine: the near-degenerate increment solved point by point takes 2.7 ms a
 point on one thread and 24 ms on two). The
 public entry points therefore run their solvers inside :func:`one_blas_thread`, which sets the
 BLAS libraries loaded in the process (numpy's, and scipy's once scipy.linalg is imported) to

@@ -1,7 +1,7 @@
 """Ring stability, second formulation: the paper's equilibrium equations linearised numerically.
 
-Why this formulation (option (A) of issue 11, item 3)
------------------------------------------------------
+Why this formulation
+--------------------
 :mod:`spectral_rod.ring.second_variation` rests on one hand (sympy) derivation: the *second
 variation*
 of energy plus load *potential* in the reduced unknowns y_phi, y_z, alpha.  This module shares
@@ -171,8 +171,8 @@ def _fft_size(n: int) -> int:
     """The smallest odd integer >= n with no prime factor above 7.
 
     Any odd P >= 2 M + 8 N + 21 is exact (:func:`_grid`); pocketfft is much slower on lengths
-    with a large prime factor (measured 2026-12-03, real FFTs of (181, P, 3) arrays along P, as
-    in the Jacobian: 1.35 ms at the prime P = 61, 0.51 ms at P = 63). Not
+    with a large prime factor (measured on real FFTs of (181, P, 3) arrays along P, as in the
+    Jacobian: 1.35 ms at the prime P = 61, 0.51 ms at P = 63). Not
     ``scipy.fft.next_fast_len``: it may return an even length, and P must be odd.
 
     >>> _fft_size(37), _fft_size(61), _fft_size(69)
@@ -596,7 +596,7 @@ def _mode_support(J0: NDArray, J1: NDArray, q: float) -> NDArray[np.bool_]:
     mode may leave at round-off, and an unsplit pencil shows no structure at all). The
     threshold is applied to the physical amplitudes: in the equilibrated
     ones (column factors spanning frequency^3) the kinds disagreed with the second variation's
-    load-work share near nu = 1 (19 of 150 random rings of 2026-12-04, nu - 1 < 0.016, each
+    load-work share near nu = 1 (19 of 150 random rings with nu - 1 < 0.016, each
     called coupled here with an in-plane share of 5e-16..5e-9 there). On the physical
     amplitudes 3 of the 150 disagree, the other way round, all with a share of 1.1e-8..4.2e-8:
     within a factor 5 of KIND_TOL, where an amplitude ratio and a share of the load work (two
@@ -612,7 +612,7 @@ def _mode_support(J0: NDArray, J1: NDArray, q: float) -> NDArray[np.bool_]:
     if not (np.all(np.isfinite(x)) and np.abs(x).max() > 0):
         # an exactly zero pivot: the offset q 1e-13 is below the round-off of the O(1) entries
         # (at N = 0, nu 1..1e4, e 1e-6..3e4: 22 of 96 grid rings, whose modes were then called
-        # in-plane with no frequencies, 2026-12-04); the smallest right singular vector instead
+        # in-plane with no frequencies); the smallest right singular vector instead
         x = scipy.linalg.svd(a, check_finite=False)[2][-1]
     x = np.abs(x * _scales(J0, J1)[1])  # the physical unknowns: J0 (c y) = (J0 c) y
     return x > MODE_SUPPORT_TOL * x.max()

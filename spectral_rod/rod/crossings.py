@@ -173,7 +173,7 @@ def collocation_crossing(twist_guess: float, nu: float, half_width: float = 0.15
     where that is not resolved); ``p_error`` is e p plus the symmetric slope times
     ``twist_error``. Measured
     against the closed form (:func:`spectral_rod.crossing_closed_form`) on 400 random crossings
-    (n pi, n = 2..59, nu = 1 + 1e-6 .. 1e3; 2026-12-04): twist_error inf for 76, all with
+    (n pi, n = 2..59, nu = 1 + 1e-6 .. 1e3): twist_error inf for 76, all with
     nu - 1 < 7e-4 (their twist errors up to 3.0e-7 relative); elsewhere every error below its
     estimate (at most 0.18 of twist_error and 0.25 of p_error; median ~1e-4 and 0.05: the
     round-off floor is a worst case).

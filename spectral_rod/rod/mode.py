@@ -149,7 +149,7 @@ def buckling_mode(twist_angle: float, nu: float, *, n: int | None = None, tol: f
     both = np.concatenate([fields[0][npts:], fields[1][npts:]])
     scale = both[np.argmax(np.abs(both))]  # max |omega| = 1 on the fine grid, there positive
     if scale == 0.0 or not all(np.isfinite(f).all() for f in fields):
-        # never a nan mode flagged converged (as at twist 5e-324 before the closed form's fix)
+        # never a nan mode flagged converged (e.g. a closed form that underflows at twist 5e-324)
         raise ConvergenceError(f"buckling_mode: no finite nonzero mode at twist_angle={twist!r}, "
                                f"nu={nu_f!r} (method {how}, p*={p!r})")
     beta1, beta2 = critical_wavenumbers(p, twist, nu_f)

@@ -178,8 +178,8 @@ __all__ = [
     "ritz_critical_load",
 ]
 
-#: Degree range of y_tt (even): n + 1 unknowns per family. A forced n costs ~n^3: measured
-#: 2026-12-04 (one point, a shared 2-core machine) 0.14 s at n = 320, 0.7 s at 640, 5.5 s at 1280.
+#: Degree range of y_tt (even): n + 1 unknowns per family. A forced n costs ~n^3: measured at
+#: one point on a shared 2-core machine, 0.14 s at n = 320, 0.7 s at 640, 5.5 s at 1280.
 N_MIN, N_MAX = 4, 1280
 #: |Omega(L)| limit, by cost: n ~ |Omega| + 66 at tol 1e-12, ~0.5 s per point at 1000.
 RITZ_MAX_TWIST = 1000.0
@@ -363,7 +363,7 @@ def roundoff_floor(nu: float, twist_angle: float = 0.0) -> float:
     ~ eps sqrt(nu) (the QR's backward error relative to the mode's energy); the model has a
     safety factor 2. Example: ``roundoff_floor(1e4)`` is 4.6e-14. The |Omega|/40 term: at large
     twist the round-off grows with it: on 1,589 random values (Omega(L) in [400, 1000], nu - 1
-    in [1e-7, 1e-5], either family, against 50-digit family roots; 2026-12-04,
+    in [1e-7, 1e-5], either family, against 50-digit family roots; recomputed by
     tests/bench/measure_error_floors.py) the error reached 29 eps, 2.9 times the floor without
     the term; with it the error is <= 0.84 of the estimate and a value below the reference is
     short by <= 0.57 of the floor.

@@ -71,7 +71,7 @@ def determinant_product(p: NDArray[np.float64], twist: float, nu: float, *,
     >>> np.sign(determinant_product(np.array([1.002, 1.003]), 0.5, 1.5)).tolist()
     [-1.0, 1.0]
     """
-    # defensive, as before the kernel was shared: cosh overflows in single precision only for
+    # defensive: cosh overflows in single precision only for
     # -X_- > ~3e4, far outside the scans' range, and an infinite value closes no bracket
     with np.errstate(over="ignore"):
         d_sym, d_anti = determinants(p, twist, nu, dtype=dtype,
