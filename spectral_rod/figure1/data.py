@@ -20,9 +20,11 @@ import re
 from functools import cache
 from importlib import resources
 from pathlib import Path
+from typing import overload
 
 import numpy as np
 import pandas as pd
+from numpy.typing import NDArray
 
 from spectral_rod.errors import ReferenceDataError
 
@@ -51,6 +53,10 @@ def twist_from_picture(x: float | np.ndarray) -> float | np.ndarray:
     return x / FIGURE1_X_PER_TWIST
 
 
+@overload
+def p_star_from_picture(y: np.ndarray) -> NDArray[np.float64]: ...
+@overload
+def p_star_from_picture(y: float) -> float: ...
 def p_star_from_picture(y: float | np.ndarray) -> float | np.ndarray:
     """p* from the picture's y coordinate (the axis runs 0..100 for 1.00..1.25).
 
@@ -60,6 +66,10 @@ def p_star_from_picture(y: float | np.ndarray) -> float | np.ndarray:
     return 1.0 + y / FIGURE1_Y_PER_P
 
 
+@overload
+def picture_y_from_p_star(p: np.ndarray) -> NDArray[np.float64]: ...
+@overload
+def picture_y_from_p_star(p: float) -> float: ...
 def picture_y_from_p_star(p: float | np.ndarray) -> float | np.ndarray:
     """The picture's y coordinate of the load p* (the inverse of :func:`p_star_from_picture`).
 

@@ -18,7 +18,7 @@ one or two entries would be most of the time).
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 from numpy.typing import NDArray
@@ -77,7 +77,8 @@ def lowest_roots(values: Callable[[NDArray[np.int_], NDArray[Any]], Any],
             xs, vals = np.concatenate([prev_x, xs], axis=1), np.concatenate([prev, vals], axis=2)
         sign = _signs(vals)
         change = sign[:, :, :-1] * sign[:, :, 1:] <= 0  # (points, components, brackets)
-        any_change = change.any(axis=1)
+        # change is 3-d, so any over one axis is an array (the stubs also allow a scalar)
+        any_change = cast(NDArray[np.bool_], change.any(axis=1))
         hit = np.flatnonzero(any_change.any(axis=1))
         if hit.size:
             first = np.argmax(any_change[hit], axis=1)

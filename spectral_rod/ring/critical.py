@@ -79,7 +79,7 @@ def _check_twists(twists: object, maximum: int = MAX_SOLVER_TWIST) -> tuple[int,
         raise TypeError(f"twists must be a sequence of integers N >= 0 including 0, got "
                         f"{type(twists).__name__}")
     out = tuple(check_twist_count(N, "twists", maximum)
-                for N in twists)  # type: ignore[attr-defined]
+                for N in twists)
     if 0 not in out or len(set(out)) < 2 or len(set(out)) != len(out):
         raise ValueError(f"twists must hold 0 and at least one N > 0, each once, got {out}")
     return out

@@ -88,8 +88,9 @@ from __future__ import annotations
 import math
 import time
 import warnings
-from collections.abc import Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
+from typing import cast
 
 import numpy as np
 import scipy.linalg
@@ -198,7 +199,7 @@ def _grid(M: int, N: int) -> _Grid:
     (45, 9)
     """
     P = _fft_size(2 * M + 8 * N + 21)
-    s = np.arange(P) * (2.0 * np.pi / P)
+    s = np.arange(P, dtype=np.float64) * (2.0 * np.pi / P)
     return _Grid(M, s, np.array([0] + [f for f in range(1, M + 1) for _ in (0, 1)]))
 
 
@@ -207,7 +208,7 @@ def _grid(M: int, N: int) -> _Grid:
 # imaginary part and destroy the complex step.  They use pocketfft only (no BLAS: a threaded
 # BLAS on these small matrices is ~10x slower on a busy 2-core machine, measured).
 
-def _by_parts(fn, a: NDArray) -> NDArray:  # type: ignore[no-untyped-def]
+def _by_parts(fn: Callable[[NDArray[np.float64]], NDArray[np.float64]], a: NDArray) -> NDArray:
     """fn applied to the real and imaginary parts of a separately."""
     if not np.iscomplexobj(a):
         return fn(a)
@@ -603,7 +604,7 @@ def _mode_support(J0: NDArray, J1: NDArray, q: float) -> NDArray[np.bool_]:
     different measures) can fall on either side of one threshold."""
     A0, A1 = _equilibrate(J0, J1)
     a = A0 + q * (1.0 + 1e-13) * A1  # beside q
-    x = np.random.default_rng(7).standard_normal(A0.shape[0])
+    x = cast(NDArray[np.float64], np.random.default_rng(7).standard_normal(A0.shape[0]))
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", scipy.linalg.LinAlgWarning)  # singular: handled below
         lu = scipy.linalg.lu_factor(a, check_finite=False)

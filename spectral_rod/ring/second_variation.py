@@ -200,7 +200,7 @@ def _quadrature(max_frequency: int, N: int) -> tuple[NDArray[np.float64], float]
     """Equispaced points on [0, 2 pi) exact for every product in K and G (frequencies up to
     2 max_frequency + 2N); the trapezoidal weight is 2 pi / P."""
     P = 2 * max_frequency + 2 * N + 8
-    return np.arange(P) * (2.0 * np.pi / P), 2.0 * np.pi / P
+    return np.arange(P, dtype=np.float64) * (2.0 * np.pi / P), 2.0 * np.pi / P
 
 
 def _gram(B: NDArray[np.float64], weight: float = 1.0) -> NDArray[np.float64]:
@@ -244,7 +244,7 @@ def rigid_body_constraints(basis: _Basis) -> NDArray[np.float64]:
         return np.zeros((6, basis.size))
     # P points integrate frequencies < P exactly; the integrands reach max frequency + 1
     P = 2 * max(f for _, f, _ in basis.labels) + 4
-    s = np.arange(P) * (2.0 * np.pi / P)
+    s = np.arange(P, dtype=np.float64) * (2.0 * np.pi / P)
     w = 2.0 * np.pi / P
     Q = _quantities(basis, s)
     er = np.stack([np.cos(s), np.sin(s), np.zeros_like(s)], axis=1)

@@ -153,7 +153,9 @@ def entire_cs(x: Any, t: Any = None, lib: Any = None) -> tuple[Any, Any]:
     ((1.0, 0.5), True)
     """
     if lib is None:
-        import mpmath as lib
+        import mpmath
+
+        lib = mpmath
     if t is None:
         t = 0.5 if lib is math else lib.mpf(1) / 2
     if x > 0:
@@ -189,7 +191,7 @@ def entire_cs_double(x: ArrayLike, t: ArrayLike = 0.5
 
 
 def combine_determinant(family: str, lam: Any, mu: Any, om2: Any, roots: tuple[Any, Any],
-             cs: tuple[tuple[Any, Any], tuple[Any, Any]]) -> Any:
+             cs: tuple[tuple[Any, Any], ...]) -> Any:
     """D_sym or D_anti from the roots (X_-, X_+) and their (C, S) (module docstring)."""
     (xm, xp), ((cm, sm), (cp, sp)) = roots, cs
     if family == "symmetric":
@@ -206,7 +208,9 @@ def determinant(family: str, lam: Any, om: Any, nu: Any, lib: Any = None) -> Any
     True
     """
     if lib is None:
-        import mpmath as lib
+        import mpmath
+
+        lib = mpmath
     check_family(family)
     mu = lam / nu
     roots = characteristic_roots(lam, mu, om, sqrt=lib.sqrt)
@@ -251,17 +255,18 @@ def _determinants(p: ArrayLike, twist_angle: ArrayLike, nu: ArrayLike, dtype: ty
     """:func:`determinants` without its argument checks (the double-precision root finders call
     it once per refinement step)."""
     lam = dtype(np.pi**2) * np.asarray(p, dtype=dtype)
-    om = np.asarray(twist_angle, dtype=dtype)
+    om: NDArray[np.floating] = np.asarray(twist_angle, dtype=dtype)
     mu = lam / np.asarray(nu, dtype=dtype)
     om2 = om * om
     roots = characteristic_roots(lam, mu, om)
-    cs = (entire_cs_double(roots[0]), entire_cs_double(roots[1]))
+    cs: tuple[tuple[NDArray[np.floating], NDArray[np.floating]], ...] = (
+        entire_cs_double(roots[0]), entire_cs_double(roots[1]))
     if real_wavenumbers:
         # rounding level of X: X_- = 0 exactly where a scan of lambda - nu Omega^2 starts
         zero = 64 * np.finfo(dtype).eps * (lam + om2)
         cs = tuple((np.where(x < -zero, np.nan, c), np.where(x < -zero, np.nan, s))
                    for x, (c, s) in zip(roots, cs, strict=True))
-    return tuple(combine_determinant(f, lam, mu, om2, roots, cs)  # type: ignore[return-value]
+    return tuple(combine_determinant(f, lam, mu, om2, roots, cs)
                  for f in FAMILIES)
 
 

@@ -68,6 +68,6 @@ def euler_loads(family: str, nu: float, top: float) -> list[float]:
     [4.0, 4.0]
     """
     first = 1 if family == "symmetric" else 2  # omega1's half-waves: odd / even
-    loads = [j * j for j in range(first, math.isqrt(int(top)) + 2, 2)]
+    loads: list[float] = [j * j for j in range(first, math.isqrt(int(top)) + 2, 2)]
     loads += [nu * j * j for j in range(3 - first, math.isqrt(int(top / nu)) + 2, 2)]
     return sorted(float(p) for p in loads if p <= top)

@@ -88,6 +88,7 @@ import math
 from dataclasses import dataclass
 from fractions import Fraction
 from functools import lru_cache
+from typing import SupportsIndex
 
 import numpy as np
 from numpy.lib.stride_tricks import sliding_window_view
@@ -155,7 +156,7 @@ def _second_derivatives(s: NDArray[np.float64], n: int
     Returns (critical mode (q,), sines k = 2..n (q, n - 1), sin(k pi s) for k = 1..n (q, n), the
     tails' input); every column has int phi'^2 = 1.
     """
-    k = np.arange(1, n + 1)
+    k = np.arange(1, n + 1, dtype=np.float64)
     kp = np.pi * k
     sin_ks = np.sin(np.outer(s, kp))
     # phi_k = sqrt(2)/(k pi) sin(k pi s): int phi_k'^2 = 1, phi_k''/pi = -sqrt(2) k sin(k pi s)
@@ -361,12 +362,14 @@ class _Moments:
         """The first k points (views)."""
         if self.dense is not None:
             return _Moments(self.g11[:k], self.g21[:k], dense=self.dense[:k])
+        assert self.h0 is not None and self.hc is not None and self.hs is not None  # pieces
         return _Moments(self.g11[:k], self.g21[:k], self.h0, self.hc[:k], self.hs[:k])
 
     def g22_times(self, y: NDArray[np.float64]) -> NDArray[np.float64]:
         """G22 y for y (P, 2m, c)."""
         if self.dense is not None:
             return self.dense @ y
+        assert self.h0 is not None and self.hc is not None and self.hs is not None  # pieces
         m, c = self.h0.shape[0], y.shape[2]
         both = np.concatenate([y[:, :m], y[:, m:]], axis=2)  # (P, m, 2c): x1 then x2 columns
         # H0 is diag(j^2) on the sines (exactly) plus the two tails' rows and columns
@@ -378,10 +381,11 @@ class _Moments:
         return 0.5 * np.concatenate([h0y[..., :c] - hcy[..., :c] - hsy[..., c:],
                                      h0y[..., c:] + hcy[..., c:] - hsy[..., :c]], axis=1)
 
-    def g22(self, i: int) -> NDArray[np.float64]:
+    def g22(self, i: SupportsIndex) -> NDArray[np.float64]:
         """G22 of point i as a dense matrix."""
         if self.dense is not None:
             return self.dense[i]
+        assert self.h0 is not None and self.hc is not None and self.hs is not None  # pieces
         h0, hc, hs = self.h0, self.hc[i], self.hs[i]
         return 0.5 * np.block([[h0 - hc, -hs], [-hs, h0 + hc]])
 

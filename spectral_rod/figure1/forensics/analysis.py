@@ -7,6 +7,7 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import cached_property
+from typing import cast
 
 import numpy as np
 import pandas as pd
@@ -115,7 +116,7 @@ def _run_scans(sites: pd.DataFrame, runs: dict[str, Hypothesis]) -> pd.DataFrame
             raise ValueError(f"runs[{r!r}] must be a scan hypothesis of the data points")
         sc = h.scan.extended(t[data.sum():], nu[data.sum():])
         for col, values in (("scan_found", np.isfinite(sc.upper)),
-                            ("scan_y", scan_model(sc, h.scan_rule, t, nu)),
+                            ("scan_y", scan_model(sc, cast(str, h.scan_rule), t, nu)),
                             ("undefined", sc.undefined)):
             full = np.empty(len(sites), dtype=values.dtype)
             full[order] = values
@@ -202,8 +203,8 @@ class Forensics:
         low, high = np.full(len(s), np.nan), np.full(len(s), np.nan)
         for r, h in self.runs.items():
             sel = (run == r) & found
-            low[sel], high[sel] = report_band(h.variable, h.step, h.scan_rule, p[sel], t[sel],
-                                              nu[sel])
+            low[sel], high[sel] = report_band(h.variable, cast(float, h.step),
+                                              cast(str, h.scan_rule), p[sel], t[sel], nu[sel])
         return pd.DataFrame({"band_low": low, "band_high": high}, index=s.index)
 
     def reproduced_deviation(self) -> dict:
@@ -345,7 +346,7 @@ def _prediction(sites: pd.DataFrame) -> dict[float, dict]:
 def _cluster_all(sites: pd.DataFrame, runs: dict[str, Hypothesis], grids: dict[int, dict]
                  ) -> list[dict]:
     """Find and explain the clusters of every curve; sets sites['cluster'] in place."""
-    clusters = []
+    clusters: list[dict] = []
     sites["cluster"] = -1
     with_blank = (int((~sites.loc[sites["in_data"], "edited"].astype(bool)).sum())
                   if "edited" in sites else None)
@@ -446,7 +447,8 @@ def analyse_figure1(points: pd.DataFrame, lines: pd.DataFrame | None = None, *,
     p = pts["p_true"].to_numpy()
     quant = quantisation_hypotheses(p, t, nu, y)
     # the scans step their variable on the lattice the ceil quantisation of p* fits best
-    ceil_steps = {v: next(h.step for h in quant if h.variable == v and h.rounding == "ceil")
+    ceil_steps = {v: next(cast(float, h.step) for h in quant
+                          if h.variable == v and h.rounding == "ceil")
                   for v, _ in SCAN_VARIABLES}
     scan_h = scan_hypotheses(t, nu, y, ceil_steps)
     upper = sorted((h for h in scan_h if h.scan_rule == "upper"), key=lambda h: -int(h.ok.sum()))

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import cast
 
 import numpy as np
 import pandas as pd
@@ -80,7 +81,7 @@ def site_physics(sites: pd.DataFrame, runs: dict[str, Hypothesis]) -> pd.DataFra
                          f"sites (max {np.nanmax(gap):.1e})")
     for r, h in runs.items():
         out[f"{r}_double_root"] = _same_step(out["p_sym"].to_numpy(), out["p_anti"].to_numpy(),
-                                             t, nu, h.variable, h.step)
+                                             t, nu, h.variable, cast(float, h.step))
         out[f"{r}_root_below_start"] = VARIABLES[h.variable].forward(p, t, nu) < 0
     return out
 
@@ -92,8 +93,8 @@ def _lower_end_rule(rows: pd.DataFrame, runs: dict[str, Hypothesis]) -> NDArray[
     out = np.zeros(len(rows), dtype=bool)
     for r, h in runs.items():
         sel = (rows["run"] == r).to_numpy() & rows[f"{r}_double_root"].to_numpy()
-        var = VARIABLES[h.variable]
-        below = quantise(var.forward(lo, t, nu), h.step, "ceil") - h.step
+        var, step = VARIABLES[h.variable], cast(float, h.step)  # a run: one scan step
+        below = quantise(var.forward(lo, t, nu), step, "ceil") - step
         out |= sel & reproduced(picture_y_from_p_star(var.inverse(below, t, nu)), y)
     return out
 
@@ -248,6 +249,7 @@ def _value_sentences(rows: pd.DataFrame, rules: dict[str, NDArray[np.bool_]],
     x, y = rows["picture_x"].to_numpy(), rows["picture_y"].to_numpy()
     on_line = fit is not None and fit.on_line.sum() > n / 2
     if on_line:
+        assert fit is not None and left is not None and right is not None  # a fit: two flanks
         shape = ("a horizontal line" if abs(fit.b) < _FLAT_SLOPE else
                  f"a straight line (slope {fit.b * FIGURE1_X_PER_TWIST:.3f} per rad)")
         s = (f"{shape} through the flanking computed points (x, y) = "

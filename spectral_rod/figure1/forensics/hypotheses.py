@@ -5,6 +5,7 @@ the best two-run combination per curve.
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import cast
 
 import numpy as np
 from numpy.typing import NDArray
@@ -76,15 +77,16 @@ def variant_hypotheses(bases: list[Hypothesis], best_q: Hypothesis, p_true: NDAr
     """
     out = []
     for base in bases:
-        sc0 = base.scan
+        sc0 = cast(ScanResult, base.scan)  # bases are scan hypotheses
         for label, kw, note in (
                 (" single", {"dtype": np.float32}, " (single precision)"),
                 (" continued", {"real_wavenumbers": False},
                  " (determinant continued to X_- < 0 by cosh/sinh: imaginary beta_1 handled)")):
             sc = scan_sign_change(twist, nu, sc0.variable, sc0.step, **sc0.settings(**kw))
-            out.append(_scan_hypothesis(sc, base.scan_rule, twist, nu, picture_y, label, note))
-    var = VARIABLES[best_q.variable]
-    p_q = var.inverse(quantise(var.forward(p_true, twist, nu), best_q.step, best_q.rounding),
+            out.append(_scan_hypothesis(sc, cast(str, base.scan_rule), twist, nu, picture_y,
+                                        label, note))
+    var, step = VARIABLES[best_q.variable], cast(float, best_q.step)  # a quantisation: one step
+    p_q = var.inverse(quantise(var.forward(p_true, twist, nu), step, best_q.rounding),
                       twist, nu)
     lam = VARIABLES["lambda"].forward(p_q, twist, nu)
     for pa in PI_APPROXIMATIONS:
@@ -94,7 +96,7 @@ def variant_hypotheses(bases: list[Hypothesis], best_q: Hypothesis, p_true: NDAr
                               f"{best_q.description}, converted to p* with pi = {pa}"))
     for dx in X_SHIFTS:
         tw = twist + twist_from_picture(dx)
-        y = quantisation_model(p_star_fn(tw, nu), tw, nu, best_q.variable, best_q.step,
+        y = quantisation_model(p_star_fn(tw, nu), tw, nu, best_q.variable, step,
                                best_q.rounding)
         at = f"(x {dx:+g})/{FIGURE1_X_PER_TWIST:g}"
         out.append(Hypothesis(f"{best_q.name} at Omega = {at}", best_q.variable,
@@ -113,7 +115,7 @@ def best_two_runs(hyps: list[Hypothesis], twist: NDArray, curve: NDArray, label:
     yields no value where the line was inserted separately (:meth:`Hypothesis.credit`). Returns
     (composite, low, high, {curve: (s_first, s_last)}).
     """
-    best = None
+    best: tuple[int, Hypothesis, Hypothesis, dict[int, tuple[int, int, int]]] | None = None
     credit = {id(h): h.credit(edited) for h in hyps}
     for lo in hyps:
         for hi in hyps:
@@ -125,14 +127,16 @@ def best_two_runs(hyps: list[Hypothesis], twist: NDArray, curve: NDArray, label:
             total = sum(f[2] for f in fits.values())
             if best is None or total > best[0]:
                 best = (total, lo, hi, fits)
+    assert best is not None  # fewer than two hypotheses: no pair to try
     _, lo, hi, fits = best
+    steps = [cast(float, lo.step), cast(float, hi.step)]  # single-model hypotheses: one step
     y, ok = np.empty_like(lo.y_model), np.empty_like(lo.ok)
     for c, (s, _, _) in fits.items():
         idx = np.flatnonzero(curve == c)
         y[idx] = np.concatenate([lo.y_model[idx[:s]], hi.y_model[idx[s:]]])
         ok[idx] = np.concatenate([lo.ok[idx[:s]], hi.ok[idx[s:]]])
     comp = Hypothesis(f"two runs{label}: {lo.name} below the switch, {hi.name} above",
-                      f"{lo.variable} | {hi.variable}", [lo.step, hi.step],
+                      f"{lo.variable} | {hi.variable}", steps,
                       f"{lo.rounding} | {hi.rounding}", y, ok,
                       f"low twist: {lo.description}; high twist: {hi.description}; switch "
                       f"fitted per curve")

@@ -68,8 +68,9 @@ def quantise(v: NDArray[np.float64], step: float, rounding: str) -> NDArray[np.f
     [0.004, 0.002, 0.004, 0.002]
     """
     u = np.asarray(v, dtype=float) / step
-    rules = {"nearest": lambda a: np.floor(a + 0.5), "floor": np.floor, "ceil": np.ceil,
-             "truncate": np.trunc}
+    rules: dict[str, Callable[[NDArray[np.float64]], NDArray[np.float64]]] = {
+        "nearest": lambda a: np.floor(a + 0.5), "floor": np.floor, "ceil": np.ceil,
+        "truncate": np.trunc}
     if rounding not in rules:
         raise ValueError(f"rounding must be one of {ROUNDINGS}, got {rounding!r}")
     return rules[rounding](u) * step
@@ -168,12 +169,13 @@ def fit_quantisation(p_true: NDArray[np.float64], twist: NDArray[np.float64],
     Ties go to the coarser step (fewer distinct values: the stronger statement).
     """
     var = VARIABLES[variable]
-    best = None
+    best: tuple[float, NDArray[np.float64], NDArray[np.bool_]] | None = None
     for h in (steps or var.steps):
         y = quantisation_model(p_true, twist, nu, variable, h, rounding)
         ok = reproduced(y, picture_y)
         if best is None or ok.sum() >= best[2].sum():
             best = (h, y, ok)
+    assert best is not None  # the grid of steps is never empty
     h, y, ok = best
     return Hypothesis(f"{rounding}({variable}, {h:g})", variable, h, rounding, y, ok,
                       f"{var.description} rounded ({rounding}) to multiples of {h:g}")

@@ -115,9 +115,10 @@ class ScanResult:
     def extended(self, twist: NDArray[np.float64], nu: NDArray[np.float64]) -> ScanResult:
         """This scan's points followed by the same scan at the points (twist, nu)."""
         more = scan_sign_change(twist, nu, self.variable, self.step, **self.settings())
-        return ScanResult(self.variable, self.step,
-                          *(np.concatenate([getattr(self, f), getattr(more, f)]) for f in
-                            ("lower", "upper", "d_lower", "d_upper", "undefined")),
+        lower, upper, d_lower, d_upper, undefined = (
+            np.concatenate([getattr(self, f), getattr(more, f)]) for f in
+            ("lower", "upper", "d_lower", "d_upper", "undefined"))
+        return ScanResult(self.variable, self.step, lower, upper, d_lower, d_upper, undefined,
                           **self.settings())
 
 
@@ -168,7 +169,8 @@ def scan_sign_change(twist: NDArray[np.float64], nu: NDArray[np.float64], variab
     res = np.array([_scan_one(t, n, top[n], var, step, v_min, real_wavenumbers, dtype)
                     for t, n in zip(tw.ravel().tolist(), nv.ravel().tolist(), strict=True)]
                    ).reshape(-1, 5)
-    return ScanResult(variable, step, *(res[:, k].reshape(tw.shape) for k in range(5)),
+    lower, upper, d_lower, d_upper, undefined = (res[:, k].reshape(tw.shape) for k in range(5))
+    return ScanResult(variable, step, lower, upper, d_lower, d_upper, undefined,
                       start_at_zero=start_at_zero, real_wavenumbers=real_wavenumbers,
                       dtype=dtype)
 
