@@ -52,7 +52,10 @@ def test_one_router_for_load_and_mode():
         res = spectral_rod.critical_load(twist, nu, full_output=True)
         mode = spectral_rod.buckling_mode(twist, nu)
         assert mode.method == res.method == spectral_rod.choose_method(twist, nu)
-        assert mode.p_star == res.p_star and mode.converged
+        # the same route and point; at large twist the mode's array path and the load's scalar
+        # path may differ by an ulp (numpy's sin/cos against libm's, depending on numpy's build)
+        assert abs(mode.p_star - res.p_star) <= 4 * np.finfo(float).eps * res.p_star
+        assert mode.converged
         assert 1.0 <= mode.p_star <= (1 + nu) / 2
 
 

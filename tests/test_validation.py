@@ -85,7 +85,11 @@ def test_twist_ranges_are_stated():
 def test_negative_twist_is_accepted_and_even():
     assert critical_load(-3.0, 1.4) == critical_load(3.0, 1.4)
     assert critical_load_increment(-3.0, 1.4) == critical_load_increment(3.0, 1.4)
-    assert np.all(critical_load(np.array([-200.0, 200.0]), 2.0) == critical_load(200.0, 2.0))
+    # the large-twist route's array path (numpy's sin/cos) and scalar path (libm's) may differ
+    # by an ulp, depending on numpy's build (measured at the dependency floors): 4 eps relative
+    both = critical_load(np.array([-200.0, 200.0]), 2.0)
+    assert both[0] == both[1]
+    assert np.allclose(both, critical_load(200.0, 2.0), rtol=4 * np.finfo(float).eps, atol=0)
 
 
 def test_missing_reference_data_names_the_file(tmp_path):
