@@ -173,29 +173,37 @@ def _solve_points(twist: NDArray[np.float64], nu: NDArray[np.float64], n: NDArra
 
 
 class PointResult(NamedTuple):
-    """One point's :class:`CollocationResult` in Python scalars."""
+    """One point's :class:`CollocationResult` in Python scalars, and whether its estimate is
+    <= tol."""
 
     p_star: float
     n: int
     error_estimate: float
     family: int
     engine: str
+    converged: bool
 
 
-def collocation_point(twist: float, nu: float, tol: float) -> PointResult | None:
+def collocation_point(twist: float, nu: float, tol: float, n: int | None = None
+                      ) -> PointResult | None:
     """The driver's lean path: :func:`collocation_critical_load` for one point given as Python
-    floats (validated; |Omega|) by the same degree loop and rules in Python floats, without a
-    batch's array bookkeeping (a scalar call's cost is mostly numpy's per-call overhead);
-    ``tests/test_speed_paths.py`` checks that both answer alike.
+    floats (validated; |Omega|; ``n`` None or a validated degree) by the same degree loop and
+    rules in Python floats, without a batch's array bookkeeping (a scalar call's cost is mostly
+    numpy's per-call overhead); ``tests/test_speed_paths.py`` checks that both answer alike.
 
-    None wherever the array path must answer: tol below the round-off floor, a degree above
-    :data:`.tuning.LEAN_MAX_DEGREE`, a point the lean solver does not accept, or an estimate
-    that misses tol (the array path then flags and warns).
+    A forced degree is solved once; where the round-off floor alone exceeds tol the a priori
+    degree is kept, as in the array path; either may end with an estimate above tol, returned
+    with ``converged`` False (the caller warns and flags). None wherever the array path must
+    answer: a degree above :data:`.tuning.LEAN_MAX_DEGREE` or a point the lean solver does not
+    accept.
     """
-    deg = initial_degree_scalar(twist, tol)
-    if error_estimate_scalar(0.0, twist) >= tol:
-        return None  # tol below the round-off floor: unconverged, the array path flags it
     rtol, allowance = iteration_rtol(tol), iteration_allowance(tol)
+    if n is None:
+        deg = initial_degree_scalar(twist, tol)
+        # no raise where round-off alone decides (the array path's rule)
+        raise_degree = error_estimate_scalar(0.0, twist) < tol
+    else:
+        deg, raise_degree = n, False
     while True:  # the degree loop of _collocation_critical_load, for one point
         if deg > LEAN_MAX_DEGREE:
             return None
@@ -205,16 +213,15 @@ def collocation_point(twist: float, nu: float, tol: float) -> PointResult | None
         if not ok:
             return None
         best, tail = pick_family_scalar(lam, tails)
-        short = shortfall_scalar(tail, tol)
-        if short <= 1.0:
+        if not raise_degree:
             break
-        if deg >= N_MAX:
-            return None  # unconverged: the array path warns and flags it
+        short = shortfall_scalar(tail, tol)
+        if short <= 1.0 or deg >= N_MAX:
+            break
         deg = int(raised_degree(deg, short))
     err = error_estimate_scalar(tail, twist) + allowance
-    if err > tol:
-        return None  # unconverged (round-off with the allowance): the array path flags it
-    return PointResult(lam[best] / math.pi**2, deg, err, best, modal_kernel.engine_name())
+    return PointResult(lam[best] / math.pi**2, deg, err, best, modal_kernel.engine_name(),
+                       err <= tol)
 
 
 def pick_family(lam: NDArray[np.float64], tails: NDArray[np.float64]
