@@ -219,7 +219,7 @@ def collocation_point(twist: float, nu: float, tol: float, n: int | None = None
         if short <= 1.0 or deg >= N_MAX:
             break
         deg = int(raised_degree(deg, short))
-    err = error_estimate_scalar(tail, twist) + allowance
+    err = error_estimate_scalar(tail, twist, deg) + allowance
     return PointResult(lam[best] / math.pi**2, deg, err, best, modal_kernel.engine_name(),
                        err <= tol)
 
@@ -274,7 +274,7 @@ def _collocation_critical_load(tw: NDArray[np.float64], nu: NDArray[np.float64],
     if n is not None:
         deg = np.full(tw.size, int(n))
         p, fam, tails = _solve_points(tw, nu, deg, tol, by_kernel)
-        return CollocationResult(p, deg, error_estimate(tails, tw) + allowance, fam,
+        return CollocationResult(p, deg, error_estimate(tails, tw, deg) + allowance, fam,
                                  _engine_names(by_kernel))
     deg = solve_degrees(initial_degree(tw, tol))
     p, fam, tails = _solve_points(tw, nu, deg, tol, by_kernel)
@@ -290,7 +290,7 @@ def _collocation_critical_load(tw: NDArray[np.float64], nu: NDArray[np.float64],
         by_kernel[todo] = used
         short[todo] = shortfall(tails[todo], tol)
         todo = todo[(short[todo] > 1.0) & (deg[todo] < N_MAX)]
-    return CollocationResult(p, deg, error_estimate(tails, tw) + allowance, fam,
+    return CollocationResult(p, deg, error_estimate(tails, tw, deg) + allowance, fam,
                              _engine_names(by_kernel))
 
 
