@@ -26,9 +26,9 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from hunt_routes import HUNT_TOL, HuntResult, reference  # noqa: E402
+from hunt_routes import HUNT_TOL, HuntResult, reference
 
-from spectral_rod import ConvergenceWarning, critical_load  # noqa: E402
+from spectral_rod import ConvergenceWarning, critical_load
 
 #: The explicit degrees drawn: even, in [DEGREES[0], DEGREES[1]].
 DEGREES = (16, 512)

@@ -28,7 +28,8 @@ from numpy.typing import ArrayLike, NDArray
 from spectral_rod.rod.collocation.discretisation import FamilyOperator
 from spectral_rod.rod.collocation.tuning import TRUNCATION_SHARE
 
-__all__ = ["ERR_LINEAR", "ERR_QUADRATIC", "N_MAX", "N_MIN", "ROUNDOFF_DEGREE", "ROUNDOFF_TWIST", "TRUNCATION_SHARE",
+__all__ = ["ERR_LINEAR", "ERR_QUADRATIC", "N_MAX", "N_MIN", "ROUNDOFF_DEGREE", "ROUNDOFF_TWIST",
+           "TRUNCATION_SHARE",
            "error_estimate", "error_estimate_scalar", "initial_degree", "initial_degree_scalar",
            "mode_tails", "raised_degree", "roundoff_floor", "shortfall", "shortfall_scalar",
            "tail_for_tolerance", "tail_from_parts", "tail_parts", "tails_of", "truncation_error",
