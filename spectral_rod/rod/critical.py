@@ -188,7 +188,7 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
         return _one_characteristic(om, nv, tol, full_output)
     if chosen != "collocation":
         return None
-    point = collocation_point(om, nv, tol, n)
+    point = collocation_point(om, nv, tol, n if isinstance(n, int) else None)
     if point is None:
         return None
     p, err = bounded_point(point.p_star, point.error_estimate, nv)
