@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import importlib
 import warnings
-from typing import NamedTuple
+from typing import Any, NamedTuple, cast
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -185,7 +185,7 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
         return None  # includes NaN: the general path names the bad argument
     chosen = route_point(om, nv, None, method)
     if chosen == "characteristic":
-        return _one_characteristic(om, nv, tol, full_output)
+        return _one_characteristic(om, nv, tol, bool(full_output))
     if chosen != "collocation":
         return None
     point = collocation_point(om, nv, tol, n if isinstance(n, int) else None)
@@ -251,17 +251,19 @@ def _one_element(twist_angle: object, nu: object, n: object, tol: object, method
                 return None
             value = value.item()  # a Python float or int (np.longdouble stays, and fails)
         point.append(value)
-    one = _one_point(*point, n, tol, method, full_output)
+    one = _one_point(point[0], point[1], n, tol, method, full_output)
     if one is None:
         return None
-    shape = (1,) * max(np.ndim(twist_angle), np.ndim(nu))  # the broadcast of two sizes of 1
+    # the broadcast of two sizes of 1
+    shape = (1,) * max(np.ndim(cast(Any, twist_angle)), np.ndim(cast(Any, nu)))
     if not full_output:
         return as_output(np.array([one]), shape)
     fields = [as_output(np.array([value], dtype=dtype), shape) for value, dtype in (
         (one.p_star, np.float64), (one.method, METHOD_DTYPE), (one.n, int),
         (one.error_estimate, np.float64), (one.family, FAMILY_DTYPE), (one.converged, bool),
         (one.engine, ENGINE_DTYPE))]
-    return CriticalLoad(*fields[:5], converged=fields[5], tol=one.tol, engine=fields[6])
+    return CriticalLoad(fields[0], fields[1], fields[2], fields[3], fields[4],
+                        converged=fields[5], tol=one.tol, engine=fields[6])
 
 
 def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None,
@@ -344,7 +346,8 @@ def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None
     warn_unconverged("critical_load", converged, res, tw, nv, tol)
     if not full_output:
         return as_output(res.p_star, shape)
-    return CriticalLoad(*(as_output(v, shape) for v in (res.p_star, res.method, res.n,
-                                                          res.error_estimate, res.family)),
-                        converged=as_output(converged, shape), tol=tol,
+    return CriticalLoad(as_output(res.p_star, shape), as_output(res.method, shape),
+                        as_output(res.n, shape), as_output(res.error_estimate, shape),
+                        as_output(res.family, shape), converged=as_output(converged, shape),
+                        tol=tol,
                         engine=as_output(res.engine, shape))
