@@ -16,7 +16,7 @@ converged where the whole estimate is <= tol. Inputs are validated by the caller
 from __future__ import annotations
 
 import math
-from typing import NamedTuple
+from typing import NamedTuple, cast
 
 import numpy as np
 from numpy.typing import NDArray
@@ -340,7 +340,7 @@ def collocation_mode_coefficients(twist_angle: float, nu: float, n: int, family:
     om, nu = abs(scalar_twist(twist_angle)), scalar_nu(nu)
     op = family_operator(check_resolution(n, minimum=N_MIN, maximum=N_MAX), check_family(family))
     a, b = op.pencil(om, nu)
-    theta, vec = physical_eig(np.linalg.solve(a, b)[None])
+    theta, vec = physical_eig(cast(NDArray[np.float64], np.linalg.solve(a, b)[None]))
     c = vec[0]
     k1 = op.sizes[0]
     part = (slice(0, k1), slice(k1, None))
@@ -350,4 +350,4 @@ def collocation_mode_coefficients(twist_angle: float, nu: float, n: int, family:
         c = c.copy()
         c[small] = -np.linalg.solve(a[small, small] - b[small, small] / theta[0],
                                     a[small, big] @ c[big])
-    return op.split(c)
+    return cast(tuple[NDArray[np.float64], NDArray[np.float64]], op.split(c))
