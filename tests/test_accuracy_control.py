@@ -190,3 +190,30 @@ def test_fast_path_picks_the_rule_eigenvalue(n):
         rule = 1.0 / theta
         # both are computed in double precision; the full eig loses ~eps Omega^2 at large twist
         assert np.all(np.abs(lam / rule - 1) <= 1e-13 + 1e-15 * twist**2), (nu, family)
+
+
+def _forced_high_degree_misses(reference, n: int) -> tuple[int, float]:
+    """Silent misses and the largest error / estimate of forced collocation at degree n, tol
+    1e-14, on 60 random points (Omega(L) log-uniform in [1e-3, 10], nu in [1, 1e4])."""
+    rng = np.random.default_rng(512)
+    tw, nv = 10.0 ** rng.uniform(-3.0, 1.0, 60), 10.0 ** rng.uniform(0.0, 4.0, 60)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ConvergenceWarning)
+        res = collocation_load(tw, nv, n=n, tol=1e-14, full_output=True)
+    ref = np.array([reference(float(a), float(b)) for a, b in zip(tw, nv, strict=True)])
+    err = np.abs(res.p_star / ref - 1)
+    return int(np.sum((err > 1e-14) & res.converged)), float(np.max(err / res.error_estimate))
+
+
+def test_forced_degree_512_at_tol_1e_14_does_not_miss_silently(reference, monkeypatch):
+    # issue 37 item 5: an explicit n = 512 at tol 1e-14 erred by up to 5.6x tol at 12 of 150
+    # random points while reported converged; the degree's part of the round-off floor
+    # (resolution.ROUNDOFF_DEGREE; tests/bench/hunt_forced_degree.py hunts 1,000 points) flags
+    # them. Without that part the same points miss (the evidence the test can fail on).
+    from spectral_rod.rod.collocation import resolution
+
+    silent, ratio = _forced_high_degree_misses(reference, 512)
+    assert silent == 0 and ratio <= 1.0, (silent, ratio)
+    monkeypatch.setattr(resolution, "ROUNDOFF_DEGREE", np.inf)  # the part removed
+    silent, ratio = _forced_high_degree_misses(reference, 512)
+    assert silent > 0 and ratio > 1.0, (silent, ratio)

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import warnings
 
 import numpy as np
 import pytest
@@ -93,8 +94,8 @@ def test_one_element_arrays_take_the_scalar_path_with_the_general_output(
 
 
 def test_one_element_arrays_outside_the_scalar_path_take_the_general_path():
-    # a forced degree, nu - 1 near zero, a bool array: the general path answers (or rejects),
-    # as for arrays of any size
+    # nu - 1 near zero, a bool array: the general path answers (or rejects), as for arrays of
+    # any size; a forced degree gives the same answer by either path
     assert critical_load(np.array([3.0]), 1.5, n=30, full_output=True).n.tolist() == [30]
     assert critical_load(np.array([3.0]), np.array([1.0 + 1e-6]), method="increment",
                          full_output=True
@@ -105,22 +106,29 @@ def test_one_element_arrays_outside_the_scalar_path_take_the_general_path():
         critical_load(np.array([3.0]), np.array([0.5]))
 
 
-def test_scalar_path_does_not_solve_below_the_round_off_floor(monkeypatch, reference):
-    # tol under the floor eps (32 + 0.3 Omega^2) cannot be met: the scalar path must hand the
-    # point to the general path before solving (it solved twice), which warns and flags it
-    import spectral_rod.rod.collocation.driver as collocation
+@pytest.mark.parametrize("kwargs", [{"tol": 1e-14}, {"n": 30}, {"n": 52, "tol": 1e-4}])
+def test_scalar_path_answers_below_the_floor_and_at_a_forced_degree(monkeypatch, reference,
+                                                                   kwargs):
+    # issue 37 item 4: tol under the round-off floor eps (32 + 0.3 Omega^2), or an explicit n,
+    # stays on the scalar path (the array path cost 3.5-12x an automatic call there), with the
+    # array path's answer, estimate, flag and warning
+    import spectral_rod.rod.critical as critical
 
-    with pytest.warns(ConvergenceWarning):
-        array = critical_load(np.array([45.0]), 1.5, tol=1e-14, full_output=True)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ConvergenceWarning)
+        array = critical_load(np.array([45.0]), 1.5, full_output=True, **kwargs)
 
-    def _must_not_run(*args, **kwargs):
-        raise AssertionError("the scalar path solved a point whose tol is below the floor")
+    def _must_not_run(*args, **kw):
+        raise AssertionError("the scalar call went to the array path")
 
-    monkeypatch.setattr(collocation, "solve_one", _must_not_run)
-    with pytest.warns(ConvergenceWarning, match="tol=1e-14 not met"):
-        res = critical_load(45.0, 1.5, tol=1e-14, full_output=True)
-    assert not res.converged and res.error_estimate > 1e-14
-    assert res.p_star == float(array.p_star[0]) and res.n == int(array.n[0])  # the array path
+    monkeypatch.setattr(critical, "solve_points", _must_not_run)
+    missed = not bool(array.converged[0])
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        res = critical_load(45.0, 1.5, full_output=True, **kwargs)
+    assert [issubclass(w.category, ConvergenceWarning) for w in caught] == [True] * missed
+    assert res.converged == (not missed) and res.error_estimate == float(array.error_estimate[0])
+    assert res.p_star == float(array.p_star[0]) and res.n == int(array.n[0])
     assert abs(res.p_star / reference(45.0, 1.5) - 1) <= res.error_estimate
 
 

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import importlib
 import warnings
-from typing import NamedTuple
+from typing import Any, NamedTuple, cast
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -35,6 +35,7 @@ from spectral_rod._validation import (
 from spectral_rod.errors import ConvergenceWarning
 from spectral_rod.rod.collocation import collocation_critical_load
 from spectral_rod.rod.collocation.driver import collocation_point
+from spectral_rod.rod.collocation.resolution import N_MAX, N_MIN
 from spectral_rod.rod.collocation.tuning import CHUNK
 from spectral_rod.rod.families import FAMILIES, FAMILY_DTYPE
 from spectral_rod.rod.results import CriticalLoad, as_output
@@ -163,13 +164,15 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
                full_output: object):
     """The scalar fast path: p* (or its CriticalLoad) for one point given as Python or numpy
     floats on the collocation or the large-twist route, or None wherever the general path must
-    answer (any other input, the increment route, a forced degree, a point the lean solver does
-    not accept or whose estimate misses tol). The computation is the general path's for one
+    answer (any other input, the increment route, a degree above the lean solver's, a point it
+    does not accept). A forced degree, or an estimate that misses tol (tol below the round-off
+    floor), stays here: warned and flagged as the general path does (one call must not cost
+    the array path's several times for it). The computation is the general path's for one
     point, without its array bookkeeping: collocation by the driver's one-point path
     (:func:`spectral_rod.rod.collocation.driver.collocation_point`), the large-twist route
     :func:`_one_characteristic`; ``python -m pytest -m bench`` measures both scalar loops."""
     if not (isinstance(twist_angle, (float, int)) and isinstance(nu, (float, int))
-            and isinstance(tol, float) and n is None
+            and isinstance(tol, float) and _lean_degree(n)
             and method in ("auto", "collocation", "characteristic")
             and isinstance(full_output, (bool, np.bool_))) or isinstance(twist_angle, bool) \
             or isinstance(nu, bool):
@@ -182,17 +185,35 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
         return None  # includes NaN: the general path names the bad argument
     chosen = route_point(om, nv, None, method)
     if chosen == "characteristic":
-        return _one_characteristic(om, nv, tol, full_output)
+        return _one_characteristic(om, nv, tol, bool(full_output))
     if chosen != "collocation":
         return None
-    point = collocation_point(om, nv, tol)
+    point = collocation_point(om, nv, tol, n if isinstance(n, int) else None)
     if point is None:
         return None
     p, err = bounded_point(point.p_star, point.error_estimate, nv)
+    converged = err <= tol  # after the bounds, as the general path judges it
+    if not converged:
+        _warn_point(err, om, nv, "collocation", point.n, tol)
     if not full_output:
         return p
-    return CriticalLoad(p, "collocation", point.n, err, FAMILIES[point.family], converged=True,
-                        tol=tol, engine=point.engine)
+    return CriticalLoad(p, "collocation", point.n, err, FAMILIES[point.family],
+                        converged=converged, tol=tol, engine=point.engine)
+
+
+def _lean_degree(n: object) -> bool:
+    """Whether the scalar path takes degree `n`: None, or a valid degree (an even int in
+    [N_MIN, N_MAX]; the general path names a bad one)."""
+    return n is None or (type(n) is int and N_MIN <= n <= N_MAX and n % 2 == 0)
+
+
+def _warn_point(err: float, om: float, nv: float, method: str, n: int, tol: float) -> None:
+    """:func:`warn_unconverged`'s warning for one point that missed `tol` (the same text),
+    from :func:`critical_load` (hence its stacklevel)."""
+    warnings.warn(
+        f"critical_load: tol={tol:g} not met at 1 point(s); worst error estimate {err:.2e} at "
+        f"twist_angle={om:g}, nu={nv:g} (method {method}, n={n}); flagged converged=False",
+        ConvergenceWarning, stacklevel=4)
 
 
 def _one_characteristic(om: float, nv: float, tol: float, full_output: bool):
@@ -230,17 +251,19 @@ def _one_element(twist_angle: object, nu: object, n: object, tol: object, method
                 return None
             value = value.item()  # a Python float or int (np.longdouble stays, and fails)
         point.append(value)
-    one = _one_point(*point, n, tol, method, full_output)
+    one = _one_point(point[0], point[1], n, tol, method, full_output)
     if one is None:
         return None
-    shape = (1,) * max(np.ndim(twist_angle), np.ndim(nu))  # the broadcast of two sizes of 1
+    # the broadcast of two sizes of 1
+    shape = (1,) * max(np.ndim(cast(Any, twist_angle)), np.ndim(cast(Any, nu)))
     if not full_output:
         return as_output(np.array([one]), shape)
     fields = [as_output(np.array([value], dtype=dtype), shape) for value, dtype in (
         (one.p_star, np.float64), (one.method, METHOD_DTYPE), (one.n, int),
-        (one.error_estimate, np.float64), (one.family, FAMILY_DTYPE), (True, bool),
+        (one.error_estimate, np.float64), (one.family, FAMILY_DTYPE), (one.converged, bool),
         (one.engine, ENGINE_DTYPE))]
-    return CriticalLoad(*fields[:5], converged=fields[5], tol=one.tol, engine=fields[6])
+    return CriticalLoad(fields[0], fields[1], fields[2], fields[3], fields[4],
+                        converged=fields[5], tol=one.tol, engine=fields[6])
 
 
 def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None,
@@ -323,7 +346,8 @@ def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None
     warn_unconverged("critical_load", converged, res, tw, nv, tol)
     if not full_output:
         return as_output(res.p_star, shape)
-    return CriticalLoad(*(as_output(v, shape) for v in (res.p_star, res.method, res.n,
-                                                          res.error_estimate, res.family)),
-                        converged=as_output(converged, shape), tol=tol,
+    return CriticalLoad(as_output(res.p_star, shape), as_output(res.method, shape),
+                        as_output(res.n, shape), as_output(res.error_estimate, shape),
+                        as_output(res.family, shape), converged=as_output(converged, shape),
+                        tol=tol,
                         engine=as_output(res.engine, shape))

@@ -7,7 +7,7 @@ Scalar input gives Python scalars in the fields, array input arrays of the broad
 from __future__ import annotations
 
 from dataclasses import dataclass, fields
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 from numpy.typing import NDArray
@@ -31,7 +31,8 @@ def _short(value: Any) -> str:
 
 class _ShortRepr:
     def __repr__(self) -> str:
-        body = ", ".join(f"{f.name}={_short(getattr(self, f.name))}" for f in fields(self))
+        body = ", ".join(f"{f.name}={_short(getattr(self, f.name))}"
+                         for f in fields(cast(Any, self)))
         return f"{type(self).__name__}({body})"
 
 

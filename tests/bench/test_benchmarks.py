@@ -647,6 +647,53 @@ def test_tol_trade(benchmark, fig1, reference, bench_registry):
                                 max_rel_error_sampled=err, page_faults_1e12=faults[1e-12],
                                 page_faults_1e4=faults[1e-4])
     benchmark.pedantic(lambda: critical_load(tw, nv, tol=1e-4), rounds=5, iterations=1)
+    # issue 37 item 3's target, recorded: not met by the degree alone (at tol 1e-2 every point
+    # is at n = 16 and costs 0.37 of tol 1e-12; a lower degree needs a tighter error model,
+    # whose estimate is >= 343x the error at tol 1e-4 on Figure 1)
+    benchmark.extra_info.update(target_1e4=TOL_TRADE_MAX, meets_target=t4 / t12 <= TOL_TRADE_MAX)
+
+
+#: Issue 37: the Figure 1 batch at tol 1e-4 costs at most this share of tol 1e-12, and a scalar
+#: call at tol 1e-14 or with an explicit n at most SCALAR_KNOB_MAX times an automatic one.
+TOL_TRADE_MAX, SCALAR_KNOB_MAX = 0.3, 2.0
+
+
+@pytest.mark.benchmark(group="scalar knobs")
+def test_scalar_knobs(benchmark, fig1, reference, bench_registry):
+    """Scalar calls along Figure 1 at tol 1e-14 and with n forced to the automatic degree,
+    against automatic tol 1e-12 calls and the baseline, all interleaved in this run (issue 37
+    item 4: no cliff, both <= SCALAR_KNOB_MAX times the automatic call)."""
+    import warnings
+
+    from spectral_rod import ConvergenceWarning
+
+    tw, nv = _scalar_points(fig1)
+    auto = [critical_load(a, b, tol=TOL, full_output=True) for a, b in zip(tw, nv, strict=True)]
+    degrees = [int(r.n) for r in auto]
+    forced = [critical_load(a, b, n=d, full_output=True)
+              for a, b, d in zip(tw, nv, degrees, strict=True)]
+    assert all(r.p_star == f.p_star and f.converged for r, f in zip(auto, forced, strict=True))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ConvergenceWarning)  # tol 1e-14 is below some floors
+        tight = np.array([critical_load(a, b, tol=1e-14) for a, b in zip(tw, nv, strict=True)])
+        err = _max_error(tight, np.array(tw), np.array(nv), reference)
+        t_auto, t_tight, t_n, t_base = _interleaved_min([
+            lambda: [critical_load(a, b, tol=TOL) for a, b in zip(tw, nv, strict=True)],
+            lambda: [critical_load(a, b, tol=1e-14) for a, b in zip(tw, nv, strict=True)],
+            lambda: [critical_load(a, b, n=d) for a, b, d in zip(tw, nv, degrees, strict=True)],
+            lambda: [baseline_critical_load(a, b) for a, b in zip(tw, nv, strict=True)]],
+            rounds=5, repeats=1)
+    entry = {"tol 1e-14 / auto": t_tight / t_auto, "explicit n / auto": t_n / t_auto,
+             "baseline / auto": t_base / t_auto, "baseline / tol 1e-14": t_base / t_tight,
+             "baseline / explicit n": t_base / t_n, "max_rel_error_sampled_1e14": err}
+    bench_registry["scalar knobs"] = entry
+    print("scalar knobs (interleaved minima):", {k: f"{v:.3g}" for k, v in entry.items()})
+    benchmark.extra_info.update(entry)
+    benchmark.pedantic(lambda: [critical_load(a, b, tol=1e-14) for a, b in zip(tw, nv,
+                                                                               strict=True)],
+                       rounds=3, iterations=1)
+    assert err <= 1e-13
+    assert t_tight / t_auto <= SCALAR_KNOB_MAX and t_n / t_auto <= SCALAR_KNOB_MAX, entry
 
 
 @pytest.mark.benchmark(group="pooling cost model")

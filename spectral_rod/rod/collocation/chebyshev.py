@@ -64,7 +64,7 @@ class ParityBasis:
 
     def chebyshev_coefficients(self, c: NDArray[np.generic]) -> NDArray[np.generic]:
         """Chebyshev coefficients of the field sum_k c_k w_k."""
-        return self.coefficients @ c
+        return np.matmul(self.coefficients, c)
 
 
 @lru_cache(maxsize=16)
@@ -75,7 +75,7 @@ def integration_coefficients(n: int, parity: int) -> NDArray[np.float64]:
     unit[js, np.arange(js.size)] = 1.0
     w = C.chebint(unit, 2, lbnd=0.0, axis=0)  # (n + 1, basis): degree j + 2 <= n
     w[parity, :] -= C.chebval(1.0, w)  # T_0(1) = T_1(1) = 1; parity makes w(-1) = 0 too
-    return w
+    return np.asarray(w, dtype=float)
 
 
 @lru_cache(maxsize=64)

@@ -16,7 +16,7 @@ converged where the whole estimate is <= tol. Inputs are validated by the caller
 from __future__ import annotations
 
 import math
-from typing import NamedTuple
+from typing import NamedTuple, cast
 
 import numpy as np
 from numpy.typing import NDArray
@@ -173,29 +173,37 @@ def _solve_points(twist: NDArray[np.float64], nu: NDArray[np.float64], n: NDArra
 
 
 class PointResult(NamedTuple):
-    """One point's :class:`CollocationResult` in Python scalars."""
+    """One point's :class:`CollocationResult` in Python scalars, and whether its estimate is
+    <= tol."""
 
     p_star: float
     n: int
     error_estimate: float
     family: int
     engine: str
+    converged: bool
 
 
-def collocation_point(twist: float, nu: float, tol: float) -> PointResult | None:
+def collocation_point(twist: float, nu: float, tol: float, n: int | None = None
+                      ) -> PointResult | None:
     """The driver's lean path: :func:`collocation_critical_load` for one point given as Python
-    floats (validated; |Omega|) by the same degree loop and rules in Python floats, without a
-    batch's array bookkeeping (a scalar call's cost is mostly numpy's per-call overhead);
-    ``tests/test_speed_paths.py`` checks that both answer alike.
+    floats (validated; |Omega|; ``n`` None or a validated degree) by the same degree loop and
+    rules in Python floats, without a batch's array bookkeeping (a scalar call's cost is mostly
+    numpy's per-call overhead); ``tests/test_speed_paths.py`` checks that both answer alike.
 
-    None wherever the array path must answer: tol below the round-off floor, a degree above
-    :data:`.tuning.LEAN_MAX_DEGREE`, a point the lean solver does not accept, or an estimate
-    that misses tol (the array path then flags and warns).
+    A forced degree is solved once; where the round-off floor alone exceeds tol the a priori
+    degree is kept, as in the array path; either may end with an estimate above tol, returned
+    with ``converged`` False (the caller warns and flags). None wherever the array path must
+    answer: a degree above :data:`.tuning.LEAN_MAX_DEGREE` or a point the lean solver does not
+    accept.
     """
-    deg = initial_degree_scalar(twist, tol)
-    if error_estimate_scalar(0.0, twist) >= tol:
-        return None  # tol below the round-off floor: unconverged, the array path flags it
     rtol, allowance = iteration_rtol(tol), iteration_allowance(tol)
+    if n is None:
+        deg = initial_degree_scalar(twist, tol)
+        # no raise where round-off alone decides (the array path's rule)
+        raise_degree = error_estimate_scalar(0.0, twist) < tol
+    else:
+        deg, raise_degree = n, False
     while True:  # the degree loop of _collocation_critical_load, for one point
         if deg > LEAN_MAX_DEGREE:
             return None
@@ -205,16 +213,15 @@ def collocation_point(twist: float, nu: float, tol: float) -> PointResult | None
         if not ok:
             return None
         best, tail = pick_family_scalar(lam, tails)
-        short = shortfall_scalar(tail, tol)
-        if short <= 1.0:
+        if not raise_degree:
             break
-        if deg >= N_MAX:
-            return None  # unconverged: the array path warns and flags it
+        short = shortfall_scalar(tail, tol)
+        if short <= 1.0 or deg >= N_MAX:
+            break
         deg = int(raised_degree(deg, short))
-    err = error_estimate_scalar(tail, twist) + allowance
-    if err > tol:
-        return None  # unconverged (round-off with the allowance): the array path flags it
-    return PointResult(lam[best] / math.pi**2, deg, err, best, modal_kernel.engine_name())
+    err = error_estimate_scalar(tail, twist, deg) + allowance
+    return PointResult(lam[best] / math.pi**2, deg, err, best, modal_kernel.engine_name(),
+                       err <= tol)
 
 
 def pick_family(lam: NDArray[np.float64], tails: NDArray[np.float64]
@@ -267,7 +274,7 @@ def _collocation_critical_load(tw: NDArray[np.float64], nu: NDArray[np.float64],
     if n is not None:
         deg = np.full(tw.size, int(n))
         p, fam, tails = _solve_points(tw, nu, deg, tol, by_kernel)
-        return CollocationResult(p, deg, error_estimate(tails, tw) + allowance, fam,
+        return CollocationResult(p, deg, error_estimate(tails, tw, deg) + allowance, fam,
                                  _engine_names(by_kernel))
     deg = solve_degrees(initial_degree(tw, tol))
     p, fam, tails = _solve_points(tw, nu, deg, tol, by_kernel)
@@ -283,7 +290,7 @@ def _collocation_critical_load(tw: NDArray[np.float64], nu: NDArray[np.float64],
         by_kernel[todo] = used
         short[todo] = shortfall(tails[todo], tol)
         todo = todo[(short[todo] > 1.0) & (deg[todo] < N_MAX)]
-    return CollocationResult(p, deg, error_estimate(tails, tw) + allowance, fam,
+    return CollocationResult(p, deg, error_estimate(tails, tw, deg) + allowance, fam,
                              _engine_names(by_kernel))
 
 
@@ -344,7 +351,7 @@ def collocation_mode_coefficients(twist_angle: float, nu: float, n: int, family:
     om, nu = abs(scalar_twist(twist_angle)), scalar_nu(nu)
     op = family_operator(check_resolution(n, minimum=N_MIN, maximum=N_MAX), check_family(family))
     a, b = op.pencil(om, nu)
-    theta, vec = physical_eig(np.linalg.solve(a, b)[None])
+    theta, vec = physical_eig(cast(NDArray[np.float64], np.linalg.solve(a, b)[None]))
     c = vec[0]
     k1 = op.sizes[0]
     part = (slice(0, k1), slice(k1, None))
@@ -354,4 +361,4 @@ def collocation_mode_coefficients(twist_angle: float, nu: float, n: int, family:
         c = c.copy()
         c[small] = -np.linalg.solve(a[small, small] - b[small, small] / theta[0],
                                     a[small, big] @ c[big])
-    return op.split(c)
+    return cast(tuple[NDArray[np.float64], NDArray[np.float64]], op.split(c))

@@ -31,7 +31,7 @@ import ctypes
 import math
 from dataclasses import dataclass
 from functools import lru_cache
-from typing import NamedTuple
+from typing import NamedTuple, cast
 
 import numpy as np
 from numpy.typing import NDArray
@@ -154,8 +154,8 @@ def modal_family(n: int, family: str) -> ModalFamily:
     """Diagonalise the uncoupled operators of (n, family) once (see :class:`ModalFamily`)."""
     op = family_operator(n, family)
     b1, b2 = op.bases[0][0], op.bases[1][1]
-    lam1, u1 = _real_eig(-4.0 * np.linalg.solve(b1.value, b1.d2))
-    lam2, u2 = _real_eig(-4.0 * np.linalg.solve(b2.value, b2.d2))
+    lam1, u1 = _real_eig(cast(NDArray[np.float64], -4.0 * np.linalg.solve(b1.value, b1.d2)))
+    lam2, u2 = _real_eig(cast(NDArray[np.float64], -4.0 * np.linalg.solve(b2.value, b2.d2)))
     left1 = np.linalg.solve(u1, np.linalg.inv(b1.value))
     left2 = np.linalg.solve(u2, np.linalg.inv(b2.value))
     g12 = left1 @ op.bases[0][1].d1 @ u2
@@ -461,7 +461,8 @@ def _rayleigh_sums(op: FamilyOperator, twist: NDArray[np.float64], nu: NDArray[n
     else:
         k1 = op.sizes[0]
         cols = (slice(0, k1), slice(k1, None))
-        x, y = right.astype(dtype), left.astype(dtype)
+        x: NDArray[np.floating] = right.astype(dtype)
+        y: NDArray[np.floating] = left.astype(dtype)
         terms = np.empty((x.shape[0], len(INST1)), dtype=dtype)
         for e, f, idx, blocks in _term_blocks(op.n, op.family, dtype):
             px = (x[:, cols[f]] @ blocks).reshape(x.shape[0], len(idx), -1)
@@ -577,7 +578,8 @@ def solve_family_eig(n: int, family: str, twist: NDArray[np.float64], nu: NDArra
     a, b = op.pencil(twist, nu)
     # B broadcast to A's stack: numpy < 2.0 would read a (m, m) right-hand side against a
     # (k, m, m) stack as a stack of m-vectors, not as one right-hand matrix per system
-    theta, vec = physical_eig(np.linalg.solve(a, np.broadcast_to(b, a.shape)))
+    theta, vec = physical_eig(cast(NDArray[np.float64],
+                                   np.linalg.solve(a, np.broadcast_to(b, a.shape))))
     valid = np.isfinite(theta) & (theta > 0)
     lam = np.where(valid, 1.0 / np.where(valid, theta, 1.0), np.inf)
     return lam, np.where(valid, mode_tails(op, vec), np.inf), vec

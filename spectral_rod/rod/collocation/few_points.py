@@ -367,4 +367,4 @@ def _few_dense(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol
     if it is None:
         return np.full((2, pts), np.nan), np.full((2, pts), np.inf), np.zeros(pts, bool)
     lam, tails, ok = _judge(it, rtol)
-    return lam.T, tails.T, ok.all(axis=1)
+    return lam.T, tails.T, np.asarray(ok.all(axis=1))

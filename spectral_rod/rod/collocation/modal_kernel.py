@@ -47,7 +47,7 @@ import importlib.util
 import os
 import warnings
 from functools import lru_cache
-from typing import Any, NamedTuple
+from typing import Any, ClassVar, NamedTuple
 
 import numpy as np
 from numpy.typing import NDArray
@@ -108,7 +108,7 @@ class Family(ctypes.Structure):
     :func:`.eigensolver.kernel_families` fills it). The arrays it points to must outlive it:
     the builder keeps them."""
 
-    _fields_ = [("k1", _INT), ("k2", _INT), ("schur", _INT),
+    _fields_: ClassVar[Any] = [("k1", _INT), ("k2", _INT), ("schur", _INT),
                 ("own2", _INT * 2), ("own0", _INT * 2), ("coupling", _INT * 2)] + [
         (name, _PTR) for name in ("lam1", "lam2", "g12", "g21", "u1", "u2", "left1", "left2",
                                   "start")] + [
@@ -252,7 +252,7 @@ def _call(name: str, *args: Any) -> None:
         raise MemoryError("the kernel could not allocate its workspace")
 
 
-def _ptr(a: NDArray | None) -> int | None:
+def _ptr(a: Any) -> int | None:
     """The address of a C-contiguous array (None for a null pointer)."""
     if a is None:
         return None

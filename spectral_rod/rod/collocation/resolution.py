@@ -28,7 +28,8 @@ from numpy.typing import ArrayLike, NDArray
 from spectral_rod.rod.collocation.discretisation import FamilyOperator
 from spectral_rod.rod.collocation.tuning import TRUNCATION_SHARE
 
-__all__ = ["ERR_LINEAR", "ERR_QUADRATIC", "N_MAX", "N_MIN", "ROUNDOFF_TWIST", "TRUNCATION_SHARE",
+__all__ = ["ERR_LINEAR", "ERR_QUADRATIC", "N_MAX", "N_MIN", "ROUNDOFF_DEGREE", "ROUNDOFF_TWIST",
+           "TRUNCATION_SHARE",
            "error_estimate", "error_estimate_scalar", "initial_degree", "initial_degree_scalar",
            "mode_tails", "raised_degree", "roundoff_floor", "shortfall", "shortfall_scalar",
            "tail_for_tolerance", "tail_from_parts", "tail_parts", "tails_of", "truncation_error",
@@ -38,6 +39,8 @@ N_MIN, N_MAX = 8, 512
 EPS = float(np.finfo(float).eps)
 #: Error model of :func:`error_estimate` (calibrated against the mpmath reference).
 ERR_LINEAR, ERR_QUADRATIC, ROUNDOFF_BASE, ROUNDOFF_TWIST = 5.0e-4, 200.0, 32.0, 0.3
+#: The degree's part of the round-off floor, eps (n / ROUNDOFF_DEGREE)^4 (:func:`roundoff_floor`).
+ROUNDOFF_DEGREE = 64.0
 #: The a priori degree's constants c0..c3 (:func:`initial_degree`; fitted, see there).
 DEGREE_FIT = (5.0, 0.4, 0.3, 1.0)
 
@@ -121,17 +124,21 @@ def truncation_error(tail_value: ArrayLike) -> NDArray[np.float64]:
     return np.maximum(ERR_LINEAR * t, ERR_QUADRATIC * (t * t))
 
 
-def error_estimate_scalar(tail_value: float, twist_angle: float) -> float:
+def error_estimate_scalar(tail_value: float, twist_angle: float, n: int = 0) -> float:
     """:func:`error_estimate` for one point, in Python floats (the scalar path's)."""
     # the same operations in the same order as error_estimate (bit-equal)
+    q = n / ROUNDOFF_DEGREE
     return truncation_error_scalar(tail_value) + EPS * (
-        ROUNDOFF_BASE + ROUNDOFF_TWIST * (twist_angle * twist_angle))
+        ROUNDOFF_BASE + ROUNDOFF_TWIST * (twist_angle * twist_angle) + (q * q) * (q * q))
 
 
-def error_estimate(tail_value: ArrayLike, twist_angle: ArrayLike) -> NDArray[np.float64]:
-    """Estimated relative error of p* from the mode's Chebyshev tail (see module docstring).
+def error_estimate(tail_value: ArrayLike, twist_angle: ArrayLike, n: ArrayLike = 0
+                   ) -> NDArray[np.float64]:
+    """Estimated relative error of p* from the mode's Chebyshev tail at degree `n` (see module
+    docstring).
 
-        estimate = max(ERR_LINEAR * tail, ERR_QUADRATIC * tail^2) + eps (32 + 0.3 Omega^2)
+        estimate = max(ERR_LINEAR * tail, ERR_QUADRATIC * tail^2)
+                   + eps (32 + 0.3 Omega^2 + (n / ROUNDOFF_DEGREE)^4)
 
     Calibrated against the mpmath characteristic equation (:mod:`spectral_rod.rod.characteristic`)
     for Omega in {0, 0.5, ..., 300}, nu in {1, 1.1, 1.5, 2, 4, 10, 100} and every even degree
@@ -140,10 +147,18 @@ def error_estimate(tail_value: ArrayLike, twist_angle: ArrayLike) -> NDArray[np.
     constants carry safety factors 1.5 and 6. The round-off floor (the Omega^2 terms of the
     pencil cancel to ~lambda) is measured for this solver (shift-and-invert, final
     Rayleigh quotient in extended precision above |Omega| = LONG_TWIST) on Omega in [40, 100]:
-    at most 0.19 eps Omega^2 (0.22 with the full ``eig``), hence the 0.3. With tail >= 1e-2 the mode
-    is not resolved and the estimate (>= 2e-2) only says so.
+    at most 0.19 eps Omega^2 (0.22 with the full ``eig``), hence the 0.3. The degree's part
+    eps (n/64)^4 covers a forced degree far above the one the tail needs: the operator's
+    round-off grows with n, beyond the model's first two terms from n ~ 440 on (on 300 random
+    points, Omega(L) in [1e-3, 50] log-uniform, nu in [1, 1e4]: error less those terms at most
+    77, 293 and 690 eps at n = 448, 496, 512, none above 0 at n = 16..384); without it an
+    explicit n = 512 at tol 1e-14 erred by up to 14x the estimate (1.7e-13) while reported
+    converged. ``python tests/bench/hunt_forced_degree.py`` recomputes the error over the
+    estimate at 1,000 random points and degrees. At the automatic degrees (n <= ~70 for
+    |Omega| < 50) it adds at most 1.5 eps. With tail >= 1e-2 the mode is not resolved and the
+    estimate (>= 2e-2) only says so.
     """
-    return truncation_error(tail_value) + roundoff_floor(twist_angle)
+    return truncation_error(tail_value) + roundoff_floor(twist_angle, n)
 
 
 def tail_for_tolerance(tol: float) -> float:
@@ -166,10 +181,12 @@ def tail_for_tolerance(tol: float) -> float:
     return TRUNCATION_SHARE * check_tol(tol) / ERR_LINEAR
 
 
-def roundoff_floor(twist_angle: ArrayLike) -> NDArray[np.float64]:
-    """Round-off part of :func:`error_estimate`: eps (32 + 0.3 Omega^2), measured (see there)."""
+def roundoff_floor(twist_angle: ArrayLike, n: ArrayLike = 0) -> NDArray[np.float64]:
+    """Round-off part of :func:`error_estimate` at degree `n`: eps (32 + 0.3 Omega^2 +
+    (n / ROUNDOFF_DEGREE)^4), measured (see there); n = 0 gives the twist's part alone."""
     om = np.asarray(twist_angle, dtype=float)
-    return EPS * (ROUNDOFF_BASE + ROUNDOFF_TWIST * (om * om))
+    q = np.asarray(n) / ROUNDOFF_DEGREE
+    return EPS * (ROUNDOFF_BASE + ROUNDOFF_TWIST * (om * om) + (q * q) * (q * q))
 
 
 #: tail_parts' split of the last axis: the four tail coefficients first, then the others.

@@ -127,7 +127,7 @@ def stacked_inverse(a: NDArray[np.float64]) -> NDArray[np.float64]:
     """
     k = a.shape[-1]
     if not uses_blocks(k, a.shape[0]):
-        return np.linalg.inv(a)
+        return np.asarray(np.linalg.inv(a), dtype=float)
     with np.errstate(all="ignore"):  # a zero pivot: inf/nan, rejected below
         inv = block_inverse(a)
         v = _probe(k)
