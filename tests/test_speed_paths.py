@@ -333,8 +333,11 @@ def test_scalar_large_twist_path(monkeypatch, reference):
             m.setattr(critical, "_one_point", lambda *a: None)
             general = critical_load(np.array([om]), nu, method=method, full_output=True)
         assert fast.method == "characteristic" and fast.converged
-        assert (fast.p_star, fast.family, fast.error_estimate) == (
-            float(general.p_star[0]), str(general.family[0]), float(general.error_estimate[0]))
+        # the same algorithm in floats (libm's sin/cos) and in numpy: equal to an ulp or so,
+        # depending on numpy's build (1 ulp apart at the dependency floors)
+        assert (fast.family, fast.error_estimate) == (
+            str(general.family[0]), float(general.error_estimate[0]))
+        assert abs(fast.p_star - float(general.p_star[0])) <= 4 * np.finfo(float).eps * fast.p_star
         assert abs(fast.p_star / reference(abs(om), nu) - 1) <= max(1e-13, fast.error_estimate)
     with pytest.warns(ConvergenceWarning, match="tol=1e-14 not met"):
         res = critical_load(40.0, 1.5, tol=1e-14, method="characteristic", full_output=True)
