@@ -99,8 +99,13 @@ def _child(env_value: str | None) -> dict:
     env.pop(modal_kernel.DISABLE_ENV, None)
     if env_value is not None:
         env[modal_kernel.DISABLE_ENV] = env_value
-    out = subprocess.run([sys.executable, "-c", _CHILD], env=env, capture_output=True,
-                         text=True, check=True, timeout=300)
+    # from a neutral directory: `python -c` puts the working directory first on sys.path, and
+    # a source tree there (an unpacked sdist) would shadow the installed package and its kernel
+    import tempfile
+
+    with tempfile.TemporaryDirectory() as cwd:
+        out = subprocess.run([sys.executable, "-c", _CHILD], env=env, capture_output=True,
+                             text=True, check=True, timeout=300, cwd=cwd)
     return json.loads(out.stdout.strip().splitlines()[-1])
 
 
