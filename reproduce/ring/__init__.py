@@ -20,7 +20,9 @@ ring.png, the ring rows of claims.json / claims.md and the report section.
 The package: :mod:`.evidence` computes every number (calls to the library), :mod:`.rows`,
 :mod:`.galerkin_rows` and :mod:`.model_rows` declare each claim with its verdict rule and measure
 it, with the named thresholds of :mod:`.standards` and the root causes of :mod:`.root_causes`;
-:mod:`.outputs` writes tables and the figure.
+:mod:`.outputs` writes tables and the figure. Every sentence is a template with named fields in
+a module-level table (``RULE_TEXTS``, ``EVIDENCE``, ``PHRASES`` of the row modules,
+:data:`REPORT` here, ``TEXTS`` of :mod:`.outputs`); the computations only fill the fields.
 """
 
 from __future__ import annotations

@@ -10,6 +10,12 @@ verdicts that rest on a range it does not cover (the largest rise of ring-monoto
 first step of ring-rate-grows-with-nu where the drop does not grow): those verdicts need both
 formulations to agree there. Munder is listed among a row's methods only where its numbers
 enter the row's measurement.
+
+The words are module-level template tables with named fields: :data:`RULE_TEXTS` (each rule's
+text, whose fields are the thresholds its logic is given by :func:`ring_rule`),
+:data:`EVIDENCE` (each row's evidence) and :data:`PHRASES` (their parts and the cross-checks'
+names). A ``measure_*`` function only computes the fields. :mod:`.galerkin_rows` and
+:mod:`.model_rows` keep their own tables of the same kind.
 """
 
 from __future__ import annotations
