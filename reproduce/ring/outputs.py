@@ -79,7 +79,7 @@ def threshold_markdown(ev: RingEvidence) -> str:
 
 
 def formulations_markdown(ev: RingEvidence) -> str:
-    """The two formulations side by side (issue 11: the agreement is a table in the report)."""
+    """The two formulations side by side: the table of their agreement in the report."""
     f = ev.formulations
     rows = [[r.N, f"{r.nu:g}", f"{r.e_ratio:.4f}", r.load, f"{r.q_galerkin:.12f}",
              f"{r.q_munder:.12f}", f"{r.rel_diff:.1e}", r.kind_galerkin, r.max_frequency]
