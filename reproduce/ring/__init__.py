@@ -128,6 +128,9 @@ REPORT = {
                "`ring_formulations.csv`, `ring_wide.csv`. Run time: {timings}; total "
                "{seconds:.1f} s."),
     "timing": "{stage} {seconds:.1f} s",
+    "writing": "writing tables, figure and ledger rows",
+    "verdicts": "verdicts: {verdicts}",
+    "verdict": "{id}={verdict}",
 }
 
 
@@ -188,7 +191,7 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
     ev = compute_evidence(progress)
     claims = evaluate_claims(ev)
     witnesses = len(ev.witnesses)
-    progress("writing tables, figure and ledger rows")
+    progress(_report("writing"))
     files = [write_csv(out / "ring_table.csv", ev.table),
              write_text(out / "ring_table.md", table_markdown(ev)),
              write_csv(out / "ring_threshold.csv", ev.thresholds),
@@ -199,7 +202,8 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
     files += update_ledger(out, NAME, claims)
     seconds = time.perf_counter() - t0
     report = report_section(claims, ev, seconds, witnesses)
-    progress("verdicts: " + ", ".join(f"{c.id}={c.verdict}" for c in claims))
+    progress(_report("verdicts", verdicts=", ".join(_report("verdict", id=c.id, verdict=c.verdict)
+                                                    for c in claims)))
     details = {"verdicts": {c.id: c.verdict for c in claims}, "timings": ev.timings,
                "solves": {**ev.solves, "witnesses": witnesses},
                "crit2_deviation": crit2_deviation(ev)}
