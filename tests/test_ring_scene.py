@@ -640,3 +640,25 @@ def test_torsions_and_coupled_equations_rows(claims: dict) -> None:
     # the untwisted ring's (uncoupled) numbers in place of the twisted ones: the claim fails
     assert model_rows.THREE_EQUATIONS.rule.decide(
         {**c.numbers, "twisted": c.numbers["untwisted"]}) == "fails"
+
+
+def test_every_ring_evidence_is_its_template_filled(evidence: scene.RingEvidence,
+                                                    monkeypatch: pytest.MonkeyPatch) -> None:
+    """Each row's evidence text is its module's EVIDENCE template with named fields, every
+    field filled (no brace left), and nothing else: the measurement only computes the fields."""
+    from reproduce.ring import galerkin_rows, model_rows
+    filled: dict[str, list[tuple[dict, str]]] = {}
+    for module in (rows, galerkin_rows, model_rows):
+        def record(name: str, _fill=module._evidence, _table=module.EVIDENCE,
+                   **fields: object) -> str:
+            text = _fill(name, **fields)
+            assert text == _table[name].format(**fields)
+            filled.setdefault(name, []).append((fields, text))
+            return text
+        monkeypatch.setattr(module, "_evidence", record)
+    for spec, measure in rows.CLAIMS:
+        got = measure(evidence)
+        fields, text = filled[spec.id][-1]
+        assert got.evidence == text, spec.id
+        assert "{" not in text and "}" not in text, spec.id
+        assert fields, spec.id

@@ -20,7 +20,9 @@ ring.png, the ring rows of claims.json / claims.md and the report section.
 The package: :mod:`.evidence` computes every number (calls to the library), :mod:`.rows`,
 :mod:`.galerkin_rows` and :mod:`.model_rows` declare each claim with its verdict rule and measure
 it, with the named thresholds of :mod:`.standards` and the root causes of :mod:`.root_causes`;
-:mod:`.outputs` writes tables and the figure.
+:mod:`.outputs` writes tables and the figure. Every sentence is a template with named fields in
+a module-level table (``RULE_TEXTS``, ``EVIDENCE``, ``PHRASES`` of the row modules,
+:data:`REPORT` here, ``TEXTS`` of :mod:`.outputs`); the computations only fill the fields.
 """
 
 from __future__ import annotations
@@ -88,26 +90,70 @@ __all__ = ["CLAIMS", "E_RATIOS", "NAME", "NUS", "SUMMARY", "TWISTS", "RingEviden
            "compute_evidence", "evaluate_claim", "evaluate_claims", "run"]
 
 
+#: The report's prose: templates with named fields, filled by :func:`report_section` and
+#: :func:`physical_threshold_text` from the evidence and the judged rows.
+REPORT = {
+    "title": "## Ring: Eq. crit2 against the converged answer",
+    "solved": (
+        "{rings} rings (N = {n_first}..{n_last}, ν ∈ {{{nus}}}, e = 1 and isotropic e = "
+        "{e_iso:.4f}) solved for every reading of the load ({readings}); every critical load "
+        "converged (largest change between the last two truncations {rel_change:.1e} relative, "
+        "frequencies ≤ {max_frequency}), and {wide} cases on the wide scan to ν = {nu_max:g}. "
+        "Each ring is solved once per run through one memo: {distinct} solves for {requested} "
+        "requests (the ν* searches of `destabilisation_threshold` solve their own rings), and "
+        "{witnesses} rings re-solved by Eqs. Munder as witnesses (the decisive rings of two "
+        "verdicts, on the evidence of all readings and of each alone)."),
+    "formulations": (
+        "**Two formulations.** The second variation of the energy and the paper's equilibrium "
+        "equations Munder (linearised numerically) agree to {max_diff:.1e} (limit "
+        "{limit:g}) on {cases} cases:"),
+    "crit2": (
+        "**How far is crit2?** Max |crit2 − q|/q = {max_rel_dev:.3g} (hydrostatic; axis "
+        "{axis_max_rel_dev:.3g}); median {median_rel_dev:.2f}; where crit2 > 0 the relative "
+        "error (crit2 − q)/q spans [{lo:+.2f}, {hi:+.2f}]; even at N = 0 up to "
+        "{max_rel_dev_N0:.2f}. crit2 is ≤ 0 in {n_formula_nonpositive} of {rings} cases, "
+        "whereas the numerical load never falls below {min_numerical:.4f}."),
+    "by-reading": ("**Verdicts under each reading of the load** (each row judged on that "
+                   "reading's numbers alone):"),
+    "depends": "**depends on the reading**",
+    "physical": "**Is the threshold twist physical?** {answer} {facts} (see `ring_threshold.md`).",
+    "physical-facts": (
+        "the numerical stiffness is positive definite in every one of the {n_solves} solves, "
+        "the smallest 1/q is {min_inverse_load:.1e} and the smallest critical load {min_q:.4f}"),
+    "physical-fails": "No. The stress-free twisted ring minimises a non-negative energy;",
+    "physical-holds": "Yes: a converged critical load at or beyond the threshold is ≤ 0;",
+    "physical-undecided": "Undecided ({verdict}):",
+    "figure": "![ring](ring.png)",
+    "tables": ("Tables: `ring_table.md`, `ring_table.csv`, `ring_threshold.csv`, "
+               "`ring_formulations.csv`, `ring_wide.csv`. Run time: {timings}; total "
+               "{seconds:.1f} s."),
+    "timing": "{stage} {seconds:.1f} s",
+    "writing": "writing tables, figure and ledger rows",
+    "verdicts": "verdicts: {verdicts}",
+    "verdict": "{id}={verdict}",
+}
+
+
+def _report(name: str, **fields: object) -> str:
+    """The report text `name` of :data:`REPORT` with its named fields."""
+    return REPORT[name].format(**fields)
+
+
 def physical_threshold_text(claim: Claim) -> str:
     """The answer of the ring-spontaneous-instability row to "is the threshold physical?"."""
-    n = claim.numbers
-    facts = (f"the numerical stiffness is positive definite in every one of the {n['n_solves']} "
-             f"solves, the smallest 1/q is {n['min_inverse_load']:.1e} and the smallest critical "
-             f"load {n['min_q']:.4f}")
-    answer = {"fails": "No. The stress-free twisted ring minimises a non-negative energy;",
-              "holds": "Yes: a converged critical load at or beyond the threshold is ≤ 0;"
-              }.get(claim.verdict, f"Undecided ({claim.verdict}):")
-    return f"**Is the threshold twist physical?** {answer} {facts} (see `ring_threshold.md`)."
+    answer = {"fails": "physical-fails", "holds": "physical-holds"}.get(claim.verdict,
+                                                                        "physical-undecided")
+    return _report("physical", answer=_report(answer, verdict=claim.verdict),
+                   facts=_report("physical-facts", **claim.numbers))
 
 
 def verdicts_by_reading_markdown(claims: list[Claim]) -> str:
     """The ring verdicts under each reading of the load alone (from caveat-load-model)."""
     per = next(c for c in claims if c.id == "caveat-load-model").numbers["verdicts_per_load"]
     rows = [[f"`{cid}`", *(v[ld] for ld in RING_LOADS),
-             "**depends on the reading**" if len(set(v.values())) > 1 else ""]
+             _report("depends") if len(set(v.values())) > 1 else ""]
             for cid, v in per.items()]
-    return ("**Verdicts under each reading of the load** (each row judged on that reading's "
-            "numbers alone):\n\n" + markdown_table(["row", *RING_LOADS, ""], rows))
+    return _report("by-reading") + "\n\n" + markdown_table(["row", *RING_LOADS, ""], rows)
 
 
 def report_section(claims: list[Claim], ev: RingEvidence, seconds: float,
@@ -116,40 +162,27 @@ def report_section(claims: list[Claim], ev: RingEvidence, seconds: float,
     h = d["hydrostatic"]
     conv = ev.table[[f"max_frequency_{ld}" for ld in RING_LOADS]].max().max()
     rel = ev.table[[f"rel_change_{ld}" for ld in RING_LOADS]].max().max()
-    lines = ["## Ring: Eq. crit2 against the converged answer", "",
-             f"{len(ev.table)} rings (N = {TWISTS[0]}..{TWISTS[-1]}, ν ∈ "
-             f"{{{', '.join(f'{v:g}' for v in NUS)}}}, e = 1 and isotropic e = "
-             f"{E_RATIOS['isotropic']:.4f}) solved for every reading of the load ("
-             + ", ".join(RING_LOADS) + "); every critical load "
-             f"converged (largest change between the last two truncations {rel:.1e} relative, "
-             f"frequencies ≤ {int(conv)}), and {len(ev.wide)} cases on the wide scan to ν = "
-             f"{max(WIDE_NUS):g}. Each ring is solved once per run through one memo: "
-             f"{ev.solves['distinct']} solves for {ev.solves['requested']} requests (the ν* "
-             f"searches of `destabilisation_threshold` solve their own rings), and {witnesses} "
-             "rings re-solved by Eqs. Munder as witnesses (the decisive rings of two verdicts, "
-             "on the evidence of all readings and of each alone).", "",
-             f"**Two formulations.** The second variation of the energy and the paper's "
-             f"equilibrium equations Munder (linearised numerically) agree to "
-             f"{ev.formulations['rel_diff'].max():.1e} (limit {FORMULATION_TOL:g}) on "
-             f"{len(ev.formulations)} cases:", "", formulations_markdown(ev), "",
-             f"**How far is crit2?** Max |crit2 − q|/q = {h['max_rel_dev']:.3g} (hydrostatic; "
-             f"axis {d['axis']['max_rel_dev']:.3g}); median {h['median_rel_dev']:.2f}; where "
-             f"crit2 > 0 the relative error (crit2 − q)/q spans "
-             f"[{h['positive_formula_rel_dev_range'][0]:+.2f}, "
-             f"{h['positive_formula_rel_dev_range'][1]:+.2f}]; even at N = 0 up to "
-             f"{h['max_rel_dev_N0']:.2f}. crit2 is ≤ 0 in {h['n_formula_nonpositive']} of "
-             f"{len(ev.table)} cases, whereas the numerical load never falls below "
-             f"{min(d[ld]['min_numerical'] for ld in RING_LOADS):.4f}.", "",
-             verdicts_by_reading_markdown(claims), "",
+    lo, hi = h["positive_formula_rel_dev_range"]
+    lines = [_report("title"), "",
+             _report("solved", rings=len(ev.table), n_first=TWISTS[0], n_last=TWISTS[-1],
+                     nus=", ".join(f"{v:g}" for v in NUS), e_iso=E_RATIOS["isotropic"],
+                     readings=", ".join(RING_LOADS), rel_change=rel, max_frequency=int(conv),
+                     wide=len(ev.wide), nu_max=max(WIDE_NUS), witnesses=witnesses,
+                     **ev.solves), "",
+             _report("formulations", max_diff=ev.formulations["rel_diff"].max(),
+                     limit=FORMULATION_TOL, cases=len(ev.formulations)), "",
+             formulations_markdown(ev), "",
+             _report("crit2", axis_max_rel_dev=d["axis"]["max_rel_dev"], lo=lo, hi=hi,
+                     rings=len(ev.table),
+                     **{**h, "min_numerical": min(d[ld]["min_numerical"] for ld in RING_LOADS)}),
+             "", verdicts_by_reading_markdown(claims), "",
              physical_threshold_text(
                  next(c for c in claims if c.id == "ring-spontaneous-instability")), "",
              markdown_table(["id", "claim", "verdict"],
                             [[f"`{c.id}`", c.claim, f"**{c.verdict}**"] for c in claims]),
-             "", "![ring](ring.png)", "", threshold_markdown(ev).split("\n", 2)[2], "",
-             "Tables: `ring_table.md`, `ring_table.csv`, `ring_threshold.csv`, "
-             "`ring_formulations.csv`, `ring_wide.csv`. Run time: "
-             + ", ".join(f"{k} {v:.1f} s" for k, v in ev.timings.items())
-             + f"; total {seconds:.1f} s."]
+             "", _report("figure"), "", threshold_markdown(ev).split("\n", 2)[2], "",
+             _report("tables", seconds=seconds, timings=", ".join(
+                 _report("timing", stage=k, seconds=v) for k, v in ev.timings.items()))]
     return "\n".join(lines) + "\n"
 
 
@@ -158,7 +191,7 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
     ev = compute_evidence(progress)
     claims = evaluate_claims(ev)
     witnesses = len(ev.witnesses)
-    progress("writing tables, figure and ledger rows")
+    progress(_report("writing"))
     files = [write_csv(out / "ring_table.csv", ev.table),
              write_text(out / "ring_table.md", table_markdown(ev)),
              write_csv(out / "ring_threshold.csv", ev.thresholds),
@@ -169,7 +202,8 @@ def run(out: Path, progress: Callable[[str], None]) -> SceneOutput:
     files += update_ledger(out, NAME, claims)
     seconds = time.perf_counter() - t0
     report = report_section(claims, ev, seconds, witnesses)
-    progress("verdicts: " + ", ".join(f"{c.id}={c.verdict}" for c in claims))
+    progress(_report("verdicts", verdicts=", ".join(_report("verdict", id=c.id, verdict=c.verdict)
+                                                    for c in claims)))
     details = {"verdicts": {c.id: c.verdict for c in claims}, "timings": ev.timings,
                "solves": {**ev.solves, "witnesses": witnesses},
                "crit2_deviation": crit2_deviation(ev)}

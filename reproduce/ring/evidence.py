@@ -67,6 +67,23 @@ ROD_MODE_CASE = (5.0, 1.5)
 #: while the claims are measured, on the evidence and on each load model's alone).
 WITNESS_TIMING = "witnesses (Munder re-solves)"
 
+#: The progress messages of :func:`compute_evidence`: templates with named fields.
+PROGRESS = {
+    "table": "solving {rings} rings for {label} (e = {e:.4f}), every reading",
+    "wide": "wide scan nu in [{nu_first:g}, {nu_last:g}] for {label}",
+    "checks": "threshold twists, untwisted circular ring, the straight rod's mode",
+    "one-harmonic": "the one-harmonic Galerkin (the paper's stated method) on the table",
+    "formulations": "second formulation (Munder) on {cases} cases",
+    "rectangle": "torsion caveat: rectangular sections",
+    "equilibrium": "Eqs. Munder vs Kirchhoff's balances; the loaded circle; the sympy derivation",
+}
+
+
+def _progress(name: str, **fields: object) -> str:
+    """The progress message `name` of :data:`PROGRESS` with its named fields."""
+    return PROGRESS[name].format(**fields)
+
+
 #: solve(N, nu, e, load, method="second-variation"|"munder"|"kirchhoff") -> the library result
 Solve = Callable[..., Any]
 
@@ -158,7 +175,7 @@ def table_rows(solve: Solve, nus: tuple[float, ...] = NUS, twists: tuple[int, ..
     """Formula and converged numerical q_cr R^3/(E1 I1) for every (e, nu, N) and load model."""
     rows = []
     for label, e in e_ratios.items():
-        progress(f"solving {len(nus) * len(twists)} rings for {label} (e = {e:.4f}), every reading")
+        progress(_progress("table", rings=len(nus) * len(twists), label=label, e=e))
         rows += [_table_row(solve, label, e, nu, N) for nu in nus for N in twists]
     return pd.DataFrame(rows)
 
@@ -236,7 +253,7 @@ def wide_rows(solve: Solve, progress: Callable[[str], None] = lambda _m: None) -
     format)."""
     rows = []
     for label, e in E_RATIOS.items():
-        progress(f"wide scan nu in [{WIDE_NUS[0]:g}, {WIDE_NUS[-1]:g}] for {label}")
+        progress(_progress("wide", nu_first=WIDE_NUS[0], nu_last=WIDE_NUS[-1], label=label))
         for nu in WIDE_NUS:
             for load in RING_LOADS:
                 for N in WIDE_TWISTS:
@@ -304,20 +321,20 @@ def compute_evidence(progress: Callable[[str], None] = lambda _m: None) -> RingE
         return value
 
     table = timed("table", lambda: table_rows(solve, progress=progress))
-    progress("threshold twists, untwisted circular ring, the straight rod's mode")
+    progress(_progress("checks"))
     thresholds = timed("checks", lambda: threshold_rows(table, solve))
     shares = timed("checks", lambda: large_twist_shares(solve))
     circ = timed("checks", lambda: untwisted_circular_rows(solve))
     rod = timed("checks", rod_mode_non_planarity)
-    progress("the one-harmonic Galerkin (the paper's stated method) on the table")
+    progress(_progress("one-harmonic"))
     one = timed("one-harmonic Galerkin", lambda: one_harmonic_rows(solve, table))
-    progress(f"second formulation (Munder) on {len(AGREEMENT_CASES)} cases")
+    progress(_progress("formulations", cases=len(AGREEMENT_CASES)))
     forms = timed("second formulation", lambda: formulation_rows(solve))
     wide = timed("wide scan", lambda: wide_rows(solve, progress))
     boundaries = timed("wide scan", lambda: boundary_rows(wide))
-    progress("torsion caveat: rectangular sections")
+    progress(_progress("rectangle"))
     rect = timed("rectangle caveat", lambda: rectangle_rows(solve))
-    progress("Eqs. Munder vs Kirchhoff's balances; the loaded circle; the sympy derivation")
+    progress(_progress("equilibrium"))
     equilibrium = timed("equilibrium checks", lambda: equilibrium_checks(solve))
     info = solve.cache_info()
     solves = {"distinct": info.misses, "requested": info.hits + info.misses}

@@ -12,6 +12,9 @@ converged load; crit2 falls below the converged load.
 
 from __future__ import annotations
 
+import functools
+from collections.abc import Callable, Iterable
+
 import numpy as np
 
 from reproduce.ledger import ClaimSpec, Measured, Method, Rule
@@ -22,11 +25,12 @@ from reproduce.ring.standards import (
     CLASSICAL,
     CLOSED_FORM_TOL,
     CRIT2,
-    DEVIATION_RULE,
+    DEVIATION_RULE_TEXT,
     EXACT_TOL,
     PAPER_NU_MAX,
     SECOND_VARIATION,
     readings,
+    rule_from_template,
     verdict_by_deviation,
 )
 from spectral_rod import (
@@ -40,6 +44,73 @@ ONE_HARMONIC = Method("one-harmonic Galerkin of the second variation (every fiel
                       "one ns/R; spectral_rod.ring_one_harmonic_load)", "second variation")
 #: Wavenumbers searched for the single-mode load nearest to crit2(N = 0).
 WAVENUMBERS = range(2, 41)
+
+#: The verdict rules' texts: templates whose named fields are the thresholds the rule's logic
+#: is given (:func:`_rule`).
+RULE_TEXTS = {
+    "ring-crit2-galerkin": "on the best-matching reading, the largest |crit2(0) − q(0)|/q(0) "
+                           "over (ν, e): " + DEVIATION_RULE_TEXT,
+    "ring-crit2-torsion-scaling": "largest |(q(e=1)/q(iso)) / (1/e_iso) − 1| over the table: "
+                                  + DEVIATION_RULE_TEXT,
+    "ring-analytic-only-circular": (
+        "fails if a closed form reproduces the converged q_cr of some ring with I₁ ≠ I₂ to "
+        "{closed_form:g} (an analytical solution beyond I₁ = I₂); inconclusive otherwise (a "
+        "closed form that misses the solver disproves nothing)"),
+    "ring-fixed-n-ansatz": (
+        "an estimate is reasonable within {approx:.0%}: holds if (q_one-harmonic − q)/q ≤ "
+        "{approx:.0%} at every ν of the table; holds approximately if so for every ν within the "
+        "paper's range (ν ≤ {paper_nu_max:g}) only; fails otherwise; inconclusive without "
+        "twisted rings"),
+}
+
+#: The evidence texts of the rows and their parts: templates with named fields, filled by the
+#: rows' measurements (:func:`_evidence`, :func:`_items`).
+EVIDENCE = {
+    "ring-crit2-galerkin": (
+        "At N = 0 crit2 = e(ν + 2): {crit2_nu4:g} at ν = 4, e = 1, where the exact "
+        "(one-harmonic) load is {exact_nu4}; max |crit2(0) − q(0)|/q(0) per reading: "
+        "{per_reading}; for some (ν, e) no single mode's load (n = {n_first}..{n_last}, in or "
+        "out of plane, any reading) comes within {nearest:.0%} of crit2(0). For N ≥ 1 the "
+        "computed one-harmonic Galerkin is an upper bound of the converged load ({bound_ok}), "
+        "while crit2 lies below the converged load in {below} of {twisted} twisted rings; "
+        "|crit2 − one-harmonic|/one-harmonic up to {gap:.3g}."),
+    "ring-crit2-torsion-scaling": (
+        "crit2 scales by {factor:.3f} from the isotropic e to e = 1; the converged load by "
+        "{ratio_min:.3f} … {ratio_max:.3f}. {in_plane} of the e = 1 critical modes are in-plane "
+        "— bending about e_z only, no torsion — and their load does not depend on E₂ at all "
+        "(ratio 1)."),
+    "ring-analytic-only-circular": (
+        "At N = 0 the closed forms reproduce all {cases} converged loads with I₁ ≠ I₂ to "
+        "{dev:.1e}. For N ≥ 1 and I₁ ≠ I₂ the twist couples frequency n to 2N ± n and no closed "
+        "form is known (only the N → ∞ limit, by homogenisation): the sentence holds for the "
+        "twisted ring, not for the equations as stated."),
+    "ring-fixed-n-ansatz": (
+        "Largest excess of the one-harmonic load over the converged one by ν: {by_nu} (within "
+        "{approx:.0%} up to ν = {good:g}). A reasonable estimate for small anisotropy, a poor "
+        "one beyond; it never falls below the converged load, so it has no threshold twist."),
+    "exact-load": "{q:g} ({load})",
+    "reading-deviation": "{load} {dev:.2f}",
+    "excess-by-nu": "ν = {nu:g}: {excess:.1%}",
+}
+
+
+def _rule(row_id: str, decide: Callable[..., str], **thresholds: float) -> Rule:
+    """The rule of `row_id`: :data:`RULE_TEXTS` and `decide` with the same `thresholds`."""
+    return rule_from_template(RULE_TEXTS[row_id], decide, **thresholds)
+
+
+def _evidence(name: str, **fields: object) -> str:
+    """The text `name` of :data:`EVIDENCE` with its named fields."""
+    return EVIDENCE[name].format(**fields)
+
+
+def _items(name: str, items: Iterable[dict[str, object]]) -> str:
+    """The text `name` once per item (its fields), joined by commas."""
+    return ", ".join(_evidence(name, **fields) for fields in items)
+
+
+def _deviation_rule(n: dict, *, key: str, exact: float, approx: float) -> str:
+    return verdict_by_deviation(n[key], exact, approx)
 
 
 def _nearest_mode_load(value: float, nu: float, e: float, loads: tuple[str, ...]) -> float:
@@ -64,9 +135,9 @@ CRIT2_GALERKIN = ClaimSpec(
          "out of plane, any reading). For N ≥ 1: the one-harmonic Galerkin computed (an upper "
          "bound of the converged load) against crit2.",
     methods=(CRIT2, CLASSICAL, ONE_HARMONIC), shared_checks=True,
-    rule=Rule("on the best-matching reading, the largest |crit2(0) − q(0)|/q(0) over (ν, e): "
-              + DEVIATION_RULE,
-              lambda n: verdict_by_deviation(n["max_rel_dev_N0_best_reading"])),
+    rule=_rule("ring-crit2-galerkin", functools.partial(_deviation_rule,
+                                                         key="max_rel_dev_N0_best_reading"),
+               exact=EXACT_TOL, approx=APPROX_TOL),
     related=("ring-crit2", "ring-crit2-torsion-scaling", "ring-fixed-n-ansatz"),
     root_cause=CRIT2_NOT_GALERKIN)
 
@@ -100,18 +171,14 @@ def measure_crit2_galerkin(ev: RingEvidence) -> Measured:
                  "crit2_below_converged_N_ge_1": below, "twisted_cases": len(tw),
                  "one_harmonic_is_upper_bound": bound_ok,
                  "max_rel_dev_one_harmonic_N_ge_1": float(gap.max()) if gap.size else np.nan},
-        evidence=f"At N = 0 crit2 = e(ν + 2): {crit2(0, 4.0, 1.0):g} at ν = 4, e = 1, where the "
-                 "exact (one-harmonic) load is "
-                 + ", ".join(f"{untwisted_critical_load(4.0, 1.0, ld):g} ({ld})" for ld in loads)
-                 + "; max |crit2(0) − q(0)|/q(0) per reading: "
-                 + ", ".join(f"{k} {v:.2f}" for k, v in per_reading.items())
-                 + f"; for some (ν, e) no single mode's load (n = {WAVENUMBERS[0]}.."
-                 f"{WAVENUMBERS[-1]}, in or out of plane, any reading) comes within "
-                 f"{nearest:.0%} of crit2(0). For "
-                 f"N ≥ 1 the computed one-harmonic Galerkin is an upper bound of the converged "
-                 f"load ({bound_ok}), while crit2 lies below the converged load in {below} of "
-                 f"{len(tw)} twisted rings; |crit2 − one-harmonic|/one-harmonic up to "
-                 f"{float(gap.max()) if gap.size else float('nan'):.3g}.")
+        evidence=_evidence(
+            "ring-crit2-galerkin", crit2_nu4=crit2(0, 4.0, 1.0),
+            exact_nu4=_items("exact-load", ({"q": untwisted_critical_load(4.0, 1.0, ld),
+                                             "load": ld} for ld in loads)),
+            per_reading=_items("reading-deviation", ({"load": k, "dev": v}
+                                                     for k, v in per_reading.items())),
+            n_first=WAVENUMBERS[0], n_last=WAVENUMBERS[-1], nearest=nearest, bound_ok=bound_ok,
+            below=below, twisted=len(tw), gap=float(gap.max()) if gap.size else float("nan")))
 
 
 TORSION_SCALING = ClaimSpec(
@@ -122,8 +189,9 @@ TORSION_SCALING = ClaimSpec(
          f"crit2's ratio 1/e_iso = {1 / E_RATIOS['isotropic']:.3f}, over the table; in-plane "
          "modes involve no torsion at all.",
     methods=(SECOND_VARIATION, CRIT2), shared_checks=True,
-    rule=Rule("largest |(q(e=1)/q(iso)) / (1/e_iso) − 1| over the table: " + DEVIATION_RULE,
-              lambda n: verdict_by_deviation(n["max_rel_dev"])),
+    rule=_rule("ring-crit2-torsion-scaling", functools.partial(_deviation_rule,
+                                                                key="max_rel_dev"),
+               exact=EXACT_TOL, approx=APPROX_TOL),
     related=("ring-crit2-galerkin", "ring-crit2"), root_cause=CRIT2_NOT_GALERKIN)
 
 
@@ -141,10 +209,12 @@ def measure_torsion_scaling(ev: RingEvidence) -> Measured:
         numbers={"max_rel_dev": float(max(devs)), "ratio_range": (float(min(ratios)),
                                                                   float(max(ratios))),
                  "crit2_ratio": factor, "in_plane_modes_e1": in_plane},
-        evidence=f"crit2 scales by {factor:.3f} from the isotropic e to e = 1; the converged "
-                 f"load by {min(ratios):.3f} … {max(ratios):.3f}. {in_plane} of the e = 1 "
-                 "critical modes are in-plane — bending about e_z only, no torsion — and their "
-                 "load does not depend on E₂ at all (ratio 1).")
+        evidence=_evidence("ring-crit2-torsion-scaling", factor=factor, ratio_min=min(ratios),
+                           ratio_max=max(ratios), in_plane=in_plane))
+
+
+def _analytic_only_rule(n: dict, *, closed_form: float) -> str:
+    return "fails" if n["max_rel_dev_N0_nu_gt_1"] <= closed_form else "inconclusive"
 
 
 ANALYTIC_ONLY = ClaimSpec(
@@ -156,11 +226,7 @@ ANALYTIC_ONLY = ClaimSpec(
          f"the converged q_cr for ν ∈ {{{', '.join(f'{v:g}' for v in NUS if v > 1)}}}, e = 1 "
          "and isotropic.",
     methods=(CLASSICAL, SECOND_VARIATION), shared_checks=True,
-    rule=Rule("fails if a closed form reproduces the converged q_cr of some ring with I₁ ≠ I₂ "
-              f"to {CLOSED_FORM_TOL:g} (an analytical solution beyond I₁ = I₂); inconclusive "
-              "otherwise (a closed form that misses the solver disproves nothing)",
-              lambda n: "fails" if n["max_rel_dev_N0_nu_gt_1"] <= CLOSED_FORM_TOL
-              else "inconclusive"),
+    rule=_rule("ring-analytic-only-circular", _analytic_only_rule, closed_form=CLOSED_FORM_TOL),
     related=("ring-crit2-galerkin",), root_cause=UNTWISTED_ANISOTROPIC_SOLVABLE)
 
 
@@ -171,21 +237,17 @@ def measure_analytic_only(ev: RingEvidence) -> Measured:
     dev = float(max(devs)) if devs else float("nan")
     return Measured(
         numbers={"max_rel_dev_N0_nu_gt_1": dev, "cases": len(devs)},
-        evidence=f"At N = 0 the closed forms reproduce all {len(devs)} converged loads with "
-                 f"I₁ ≠ I₂ to {dev:.1e}. For N ≥ 1 and I₁ ≠ I₂ the twist couples frequency n "
-                 "to 2N ± n and no closed form is known (only the N → ∞ limit, by "
-                 "homogenisation): the sentence holds for the twisted ring, not for the "
-                 "equations as stated.")
+        evidence=_evidence("ring-analytic-only-circular", cases=len(devs), dev=dev))
 
 
-def _estimate_rule(n: dict) -> str:
+def _estimate_rule(n: dict, *, approx: float, paper_nu_max: float) -> str:
     by_nu = n["max_rel_excess_by_nu"]
     if not by_nu:
         return "inconclusive"
-    if max(by_nu.values()) <= APPROX_TOL:
+    if max(by_nu.values()) <= approx:
         return "holds"
-    paper = [v for nu, v in by_nu.items() if nu <= PAPER_NU_MAX]
-    return "holds approximately" if paper and max(paper) <= APPROX_TOL else "fails"
+    paper = [v for nu, v in by_nu.items() if nu <= paper_nu_max]
+    return "holds approximately" if paper and max(paper) <= approx else "fails"
 
 
 FIXED_N = ClaimSpec(
@@ -196,11 +258,8 @@ FIXED_N = ClaimSpec(
          f"every twisted ring of the table (N ≥ 1, ν ∈ {{{', '.join(f'{v:g}' for v in NUS)}}}, "
          "e = 1 and isotropic, every reading).",
     methods=(ONE_HARMONIC, SECOND_VARIATION), shared_checks=True,
-    rule=Rule(f"an estimate is reasonable within {APPROX_TOL:.0%}: holds if (q_one-harmonic − "
-              f"q)/q ≤ {APPROX_TOL:.0%} at every ν of the table; holds approximately if so for "
-              f"every ν within the paper's range (ν ≤ {PAPER_NU_MAX:g}) only; fails otherwise; "
-              "inconclusive without twisted rings",
-              _estimate_rule),
+    rule=_rule("ring-fixed-n-ansatz", _estimate_rule, approx=APPROX_TOL,
+               paper_nu_max=PAPER_NU_MAX),
     related=("ring-crit2-galerkin",))
 
 
@@ -212,8 +271,6 @@ def measure_fixed_n(ev: RingEvidence) -> Measured:
     good = max([k for k, v in by_nu.items() if v <= APPROX_TOL], default=float("nan"))
     return Measured(
         numbers={"max_rel_excess": float(excess.max()), "max_rel_excess_by_nu": by_nu},
-        evidence="Largest excess of the one-harmonic load over the converged one by ν: "
-                 + ", ".join(f"ν = {k:g}: {v:.1%}" for k, v in by_nu.items())
-                 + f" (within {APPROX_TOL:.0%} up to ν = {good:g}). A reasonable estimate for "
-                 "small anisotropy, a poor one beyond; it never falls below the converged load, "
-                 "so it has no threshold twist.")
+        evidence=_evidence("ring-fixed-n-ansatz", approx=APPROX_TOL, good=good,
+                           by_nu=_items("excess-by-nu", ({"nu": k, "excess": v}
+                                                         for k, v in by_nu.items()))))

@@ -5,6 +5,7 @@ which twists close the ring (Sec. 'Stability of a ring')."""
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Iterable
 
 import numpy as np
 
@@ -16,6 +17,7 @@ from reproduce.ring.standards import (
     MUNDER,
     SECOND_VARIATION,
     readings,
+    rule_from_template,
 )
 from spectral_rod import (
     RING_LOADS,
@@ -35,6 +37,103 @@ RIGID_TOL = 1.0e-12
 NEUTRAL_TOL = 1.0e-12
 #: Every rigid motion of a ring in space: three translations, three rotations.
 N_RIGID = 6
+#: The status :func:`spectral_rod.derivation_status` reports for a derivation whose every step
+#: checked.
+DERIVATION_CHECKED = "all steps checked"
+
+#: The verdict rules' texts: templates whose named fields are the thresholds the rule's logic
+#: is given (:func:`_rule`).
+RULE_TEXTS = {
+    "caveat-ring-supports": (
+        "holds if the rigid motions store no elastic energy (≤ {rigid:g}) and the constraints "
+        "restrain all {n_rigid} (rank {n_rigid}: none left to tip, spin or drift); fails "
+        "otherwise"),
+    "ring-adjacent-equilibrium": (
+        "holds if, for every reading, the two agree to {formulation:g} on its cases; fails if "
+        "they disagree for some reading; inconclusive if a reading has no case"),
+    "caveat-admissible-twists": (
+        "holds if the half turn leaves the stiffness unchanged (≤ {neutral:g}) and the quarter "
+        "turn does not (half-integer twists close, quarter-integer do not); fails otherwise"),
+    "ring-spontaneous-torsions": (
+        "holds if the symbolic step passes and the numerical torsions match to {exact:g}; fails "
+        "otherwise"),
+    "ring-three-coupled-equations": (
+        "holds if on the twisted ring both links exceed {coupling:g} of K's largest entry and "
+        "the derivation's steps pass; fails otherwise"),
+}
+
+#: The evidence texts of the rows and their parts: templates with named fields, filled by the
+#: rows' measurements (:func:`_evidence`, :func:`_items`).
+EVIDENCE = {
+    "caveat-ring-supports": (
+        "Rigid motions under q > 0 — {per_reading}. Only the centre-directed load destabilises "
+        "none. Elastic energy of the rigid motions {stiffness:.1e}; the six constraints have "
+        "rank {rank} on them, so the package's ring is held against every rigid motion (a "
+        "frictionless mean restraint: it acts on frequencies 0 and 1 only and leaves every "
+        "buckling mode of wavenumber ≥ 2 free)."),
+    "ring-adjacent-equilibrium": (
+        "Equilibrium (forces) vs energy (potentials), largest relative difference per reading: "
+        "{per_reading}. So the loads are conservative and the criterion gives their stability "
+        "limit."),
+    "caveat-admissible-twists": (
+        "Turned by π the stiffness changes by {half:.1e}, by π/2 by {quarter:g}: the ring "
+        "closes for N ∈ ½ℤ, the paper and the package use integers only (its solver's families "
+        "f = ±n mod 2N need 2N integer, which half-integers satisfy; they are not solved "
+        "here)."),
+    "ring-spontaneous-torsions": (
+        "sympy: {status}; numerically the sampled frame's torsions match the printed ones to "
+        "{dev:.1e} (R₀ = 1) for N = {n_first}..{n_last}."),
+    "ring-three-coupled-equations": (
+        "Relative size of the links in K: twisted (N = {N}, ν = {nu:g}) fields "
+        "{twisted_fields:.2f}, f ↔ f ± 2N {twisted_variable:.2f}; untwisted {flat_fields:.1e} / "
+        "{flat_variable:.1e}; circular section {circular_fields:.1e} / "
+        "{circular_variable:.1e}. So the three equations are coupled with variable coefficients "
+        "for N ≥ 1 and I₁ ≠ I₂ only; for N = 0 or I₁ = I₂ they have constant coefficients and "
+        "the in-plane one separates."),
+    "supports-reading": "{load}: destabilised {destabilised}; neutral {neutral}",
+    "adjacent-reading": "{load} {diff:.1e} ({cases} cases)",
+    "none": "none",
+}
+
+
+def _rule(row_id: str, decide: Callable[..., str], **thresholds: float) -> Rule:
+    """The rule of `row_id`: :data:`RULE_TEXTS` and `decide` with the same `thresholds`."""
+    return rule_from_template(RULE_TEXTS[row_id], decide, **thresholds)
+
+
+def _evidence(name: str, **fields: object) -> str:
+    """The text `name` of :data:`EVIDENCE` with its named fields."""
+    return EVIDENCE[name].format(**fields)
+
+
+def _items(name: str, items: Iterable[dict[str, object]], sep: str = ", ") -> str:
+    """The text `name` once per item (its fields), joined by `sep`."""
+    return sep.join(_evidence(name, **fields) for fields in items)
+
+
+def _supports_rule(n: dict, *, rigid: float, n_rigid: int) -> str:
+    return ("holds" if n["rigid_stiffness"] <= rigid and n["constraint_rank"] == n_rigid
+            else "fails")
+
+
+def _adjacent_rule(n: dict, *, formulation: float) -> str:
+    if min(n["cases_per_reading"].values()) == 0:
+        return "inconclusive"
+    return "holds" if max(n["max_rel_diff_per_reading"].values()) <= formulation else "fails"
+
+
+def _twists_rule(n: dict, *, neutral: float) -> str:
+    return "holds" if n["half_turn_change"] <= neutral < n["quarter_turn_change"] else "fails"
+
+
+def _torsions_rule(n: dict, *, exact: float) -> str:
+    return ("holds" if n["sympy"] == DERIVATION_CHECKED and n["max_abs_dev"] <= exact
+            else "fails")
+
+
+def _three_equations_rule(n: dict, *, coupling: float) -> str:
+    return ("holds" if min(n["twisted"].values()) > coupling and n["sympy"] == DERIVATION_CHECKED
+            else "fails")
 
 
 def _behaviour(work: float) -> str:
@@ -54,11 +153,7 @@ SUPPORTS = ClaimSpec(
          "q > 0, 0: neutral, < 0: restored); their elastic energy x·K·x; the rank of the "
          "solvers' six constraints on them.",
     methods=(RIGID, MUNDER), kind="caveat",
-    rule=Rule(f"holds if the rigid motions store no elastic energy (≤ {RIGID_TOL:g}) and the "
-              f"constraints restrain all {N_RIGID} (rank {N_RIGID}: none left to tip, spin or "
-              "drift); fails otherwise",
-              lambda n: "holds" if n["rigid_stiffness"] <= RIGID_TOL
-              and n["constraint_rank"] == N_RIGID else "fails"),
+    rule=_rule("caveat-ring-supports", _supports_rule, rigid=RIGID_TOL, n_rigid=N_RIGID),
     related=("caveat-load-model",),
     one_formulation_why="the rigid motions' load work is a property of each load's potential; "
                         "Eqs. Munder carry the same six constraints as reactions")
@@ -67,22 +162,16 @@ SUPPORTS = ClaimSpec(
 def measure_supports(ev: RingEvidence) -> Measured:
     work = {ld: rigid_motion_load_work(ld) for ld in RING_LOADS}
     behaviour = {ld: {m: _behaviour(w) for m, w in work[ld].items()} for ld in RING_LOADS}
-    parts = []
-    for ld in RING_LOADS:
-        bad = [m for m, b in behaviour[ld].items() if b == "destabilised"]
-        free = [m for m, b in behaviour[ld].items() if b == "neutral"]
-        parts.append(f"{ld}: destabilised {', '.join(bad) or 'none'}; neutral "
-                     f"{', '.join(free) or 'none'}")
+    parts = [{"load": ld, **{kind: ", ".join(m for m, b in behaviour[ld].items() if b == kind)
+                             or _evidence("none") for kind in ("destabilised", "neutral")}}
+             for ld in RING_LOADS]
     rank, stiff = ring_constraint_rank(), rigid_motion_stiffness()
     return Measured(
         numbers={"load_work": work, "behaviour": behaviour, "constraint_rank": rank,
                  "rigid_stiffness": stiff},
-        evidence="Rigid motions under q > 0 — " + "; ".join(parts)
-                 + f". Only the centre-directed load destabilises none. Elastic energy of the "
-                 f"rigid motions {stiff:.1e}; the six constraints have rank {rank} on them, so "
-                 "the package's ring is held against every rigid motion (a frictionless mean "
-                 "restraint: it acts on frequencies 0 and 1 only and leaves every buckling "
-                 "mode of wavenumber ≥ 2 free).")
+        evidence=_evidence("caveat-ring-supports", per_reading=_items("supports-reading", parts,
+                                                                      "; "),
+                           stiffness=stiff, rank=rank))
 
 
 ADJACENT = ClaimSpec(
@@ -95,11 +184,7 @@ ADJACENT = ClaimSpec(
          "dead load). Per reading, the equilibrium formulation (Eqs. Munder, the load as a "
          "force, no potential) against the energy's second variation on the comparison cases.",
     methods=(MUNDER, SECOND_VARIATION), shared_checks=True,
-    rule=Rule(f"holds if, for every reading, the two agree to {FORMULATION_TOL:g} on its cases; "
-              "fails if they disagree for some reading; inconclusive if a reading has no case",
-              lambda n: "inconclusive" if min(n["cases_per_reading"].values()) == 0 else
-              "holds" if max(n["max_rel_diff_per_reading"].values()) <= FORMULATION_TOL
-              else "fails"),
+    rule=_rule("ring-adjacent-equilibrium", _adjacent_rule, formulation=FORMULATION_TOL),
     related=("ring-two-formulations", "caveat-load-model"))
 
 
@@ -110,11 +195,9 @@ def measure_adjacent(ev: RingEvidence) -> Measured:
             for ld in readings(ev)}
     return Measured(
         numbers={"cases_per_reading": cases, "max_rel_diff_per_reading": diff},
-        evidence="Equilibrium (forces) vs energy (potentials), largest relative difference per "
-                 "reading: " + ", ".join(f"{ld} {diff[ld]:.1e} ({cases[ld]} cases)"
-                                         for ld in cases)
-                 + ". So the loads are conservative and the criterion gives their stability "
-                 "limit.")
+        evidence=_evidence("ring-adjacent-equilibrium", per_reading=_items(
+            "adjacent-reading", ({"load": ld, "diff": diff[ld], "cases": cases[ld]}
+                                 for ld in cases))))
 
 
 def _section_stiffness(nu: float, angle: float) -> np.ndarray:
@@ -137,11 +220,7 @@ TWISTS_CAVEAT = ClaimSpec(
          "by π/2 against the untwisted one: the ring's energy depends on Ω through 2Ω only if "
          "the half turn leaves it unchanged.",
     methods=(Method("rotation of the section's stiffness tensor", "closed form"),), kind="caveat",
-    rule=Rule(f"holds if the half turn leaves the stiffness unchanged (≤ {NEUTRAL_TOL:g}) and "
-              "the quarter turn does not (half-integer twists close, quarter-integer do not); "
-              "fails otherwise",
-              lambda n: "holds" if n["half_turn_change"] <= NEUTRAL_TOL
-              < n["quarter_turn_change"] else "fails"),
+    rule=_rule("caveat-admissible-twists", _twists_rule, neutral=NEUTRAL_TOL),
     one_formulation_why="a property of the section's symmetry, not of a solver")
 
 
@@ -151,10 +230,7 @@ def measure_twists_caveat(ev: RingEvidence) -> Measured:
     quarter = float(np.max(np.abs(_section_stiffness(TWIST_CHECK_NU, math.pi / 2) - base)))
     return Measured(
         numbers={"half_turn_change": half, "quarter_turn_change": quarter},
-        evidence=f"Turned by π the stiffness changes by {half:.1e}, by π/2 by {quarter:g}: the "
-                 "ring closes for N ∈ ½ℤ, the paper and the package use integers only (its "
-                 "solver's families f = ±n mod 2N need 2N integer, which half-integers satisfy; "
-                 "they are not solved here).")
+        evidence=_evidence("caveat-admissible-twists", half=half, quarter=quarter))
 
 
 SYMPY_FRAMES = Method("sympy: the ring's frame in Eq. frenini "
@@ -170,10 +246,7 @@ TORSIONS = ClaimSpec(
          f"sampled frame by spectral differentiation for N = {TWISTS[0]}..{TWISTS[-1]} against "
          "the printed formulas.",
     methods=(SYMPY_FRAMES, NUMERIC_FRAMES),
-    rule=Rule(f"holds if the symbolic step passes and the numerical torsions match to "
-              f"{EXACT_TOL:g}; fails otherwise",
-              lambda n: "holds" if n["sympy"] == "all steps checked"
-              and n["max_abs_dev"] <= EXACT_TOL else "fails"),
+    rule=_rule("ring-spontaneous-torsions", _torsions_rule, exact=EXACT_TOL),
     related=("ring-hoop-force",))
 
 
@@ -186,8 +259,8 @@ def measure_torsions(ev: RingEvidence) -> Measured:
     status = derivation_status("ring_linearisation")
     return Measured(
         numbers={"max_abs_dev": dev, "sympy": status},
-        evidence=f"sympy: {status}; numerically the sampled frame's torsions match the printed "
-                 f"ones to {dev:.1e} (R₀ = 1) for N = {TWISTS[0]}..{TWISTS[-1]}.")
+        evidence=_evidence("ring-spontaneous-torsions", status=status, dev=dev,
+                           n_first=TWISTS[0], n_last=TWISTS[-1]))
 
 
 #: The ring on which the coupling of the perturbation equations is measured (N, nu, e).
@@ -207,10 +280,7 @@ THREE_EQUATIONS = ClaimSpec(
          "section (ν = 1) as references, where both links vanish; the sympy derivation's "
          "inextensibility step (y_r = −R y_φ').",
     methods=(SECOND_VARIATION, SYMPY_FRAMES),
-    rule=Rule(f"holds if on the twisted ring both links exceed {COUPLING_TOL:g} of K's largest "
-              "entry and the derivation's steps pass; fails otherwise",
-              lambda n: "holds" if min(n["twisted"].values()) > COUPLING_TOL
-              and n["sympy"] == "all steps checked" else "fails"))
+    rule=_rule("ring-three-coupled-equations", _three_equations_rule, coupling=COUPLING_TOL))
 
 
 def measure_three_equations(ev: RingEvidence) -> Measured:
@@ -220,13 +290,11 @@ def measure_three_equations(ev: RingEvidence) -> Measured:
     return Measured(
         numbers={"twisted": twisted, "untwisted": flat, "circular": circular,
                  "sympy": derivation_status("ring_linearisation")},
-        evidence=f"Relative size of the links in K: twisted (N = {N}, ν = {nu:g}) fields "
-                 f"{twisted['fields']:.2f}, f ↔ f ± 2N {twisted['variable_coefficients']:.2f}; "
-                 f"untwisted {flat['fields']:.1e} / {flat['variable_coefficients']:.1e}; "
-                 f"circular section {circular['fields']:.1e} / "
-                 f"{circular['variable_coefficients']:.1e}. So the three equations are coupled "
-                 "with variable coefficients for N ≥ 1 and I₁ ≠ I₂ only; for N = 0 or I₁ = I₂ "
-                 "they have constant coefficients and the in-plane one separates.")
+        evidence=_evidence(
+            "ring-three-coupled-equations", N=N, nu=nu, twisted_fields=twisted["fields"],
+            twisted_variable=twisted["variable_coefficients"], flat_fields=flat["fields"],
+            flat_variable=flat["variable_coefficients"], circular_fields=circular["fields"],
+            circular_variable=circular["variable_coefficients"]))
 
 
 __all__ = [

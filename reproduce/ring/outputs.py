@@ -16,12 +16,35 @@ from reproduce.ring.evidence import E_RATIOS, NUS, TITLES, TWISTS, RingEvidence
 from reproduce.tables import markdown_table
 from spectral_rod import crit2, threshold_twist
 
+#: The words of the tables and the figure: templates with named fields (:func:`_text`).
+TEXTS = {
+    "table-title": "# Ring: Eq. crit2 vs the converged critical load",
+    "table-caption": (
+        "q_cr R³/(E₁I₁); each cell: crit2 / numerical hydrostatic / numerical axis (kind of the "
+        "hydrostatic mode: i in-plane, o out-of-plane, c coupled); the centre and dead readings "
+        "are in `ring_table.csv`."),
+    "table-cell": "{crit2:.3f} / {q_hydrostatic:.4f} / {q_axis:.4f} ({kind})",
+    "table-section": "## {label} (e = E₂/E₁ = {e:.4f})",
+    "table-column": "ν = {nu:g}",
+    "threshold-title": "# Threshold twist of Eq. crit2",
+    "threshold-caption": (
+        "N*² = 3(I₁+I₂)/(I₂−I₁) − 1 = (2ν+4)/(ν−1); the integer is the smallest N with "
+        "crit2 ≤ 0 (independent of e). The numerical q_cr R³/(E₁I₁) at that N stays positive."),
+    "curve": "ν = {nu:g}",
+    "panel": "{title}: e = E₂/E₁ = {e:.3f}",
+    "reading-marker": "numerical, {load}",
+    "suptitle": ("Twisted ring: the paper's Eq. crit2 (dashed, leaves the plot below −2) vs the "
+                 "converged Fourier-Galerkin critical load"),
+}
+
+
+def _text(name: str, **fields: object) -> str:
+    """The text `name` of :data:`TEXTS` with its named fields."""
+    return TEXTS[name].format(**fields)
+
 
 def table_markdown(ev: RingEvidence) -> str:
-    lines = ["# Ring: Eq. crit2 vs the converged critical load", "",
-             "q_cr R³/(E₁I₁); each cell: crit2 / numerical hydrostatic / numerical axis "
-             "(kind of the hydrostatic mode: i in-plane, o out-of-plane, c coupled); the "
-             "centre and dead readings are in `ring_table.csv`.", ""]
+    lines = [_text("table-title"), "", _text("table-caption"), ""]
     for label, e in E_RATIOS.items():
         t = ev.table[ev.table["e_label"] == label]
         rows = []
@@ -29,19 +52,18 @@ def table_markdown(ev: RingEvidence) -> str:
             cells = [N]
             for nu in NUS:
                 r = t[(t["nu"] == nu) & (t["N"] == N)].iloc[0]
-                cells.append(f"{r['crit2']:.3f} / {r['q_hydrostatic']:.4f} / "
-                             f"{r['q_axis']:.4f} ({r['kind_hydrostatic'][0]})")
+                cells.append(_text("table-cell", crit2=r["crit2"],
+                                   q_hydrostatic=r["q_hydrostatic"], q_axis=r["q_axis"],
+                                   kind=r["kind_hydrostatic"][0]))
             rows.append(cells)
-        lines += [f"## {label} (e = E₂/E₁ = {e:.4f})", "",
-                  markdown_table(["N", *(f"ν = {nu:g}" for nu in NUS)], rows), ""]
+        lines += [_text("table-section", label=label, e=e), "",
+                  markdown_table(["N", *(_text("table-column", nu=nu) for nu in NUS)], rows),
+                  ""]
     return "\n".join(lines)
 
 
 def threshold_markdown(ev: RingEvidence) -> str:
-    lines = ["# Threshold twist of Eq. crit2", "",
-             "N*² = 3(I₁+I₂)/(I₂−I₁) − 1 = (2ν+4)/(ν−1); the integer is the smallest N with "
-             "crit2 ≤ 0 (independent of e). The numerical q_cr R³/(E₁I₁) at that N stays "
-             "positive.", ""]
+    lines = [_text("threshold-title"), "", _text("threshold-caption"), ""]
     rows = []
     for _, r in ev.thresholds.iterrows():
         if math.isinf(r["N_integer"]):
@@ -57,7 +79,7 @@ def threshold_markdown(ev: RingEvidence) -> str:
 
 
 def formulations_markdown(ev: RingEvidence) -> str:
-    """The two formulations side by side: their agreement as a table of the report."""
+    """The two formulations side by side: the table of their agreement in the report."""
     f = ev.formulations
     rows = [[r.N, f"{r.nu:g}", f"{r.e_ratio:.4f}", r.load, f"{r.q_galerkin:.12f}",
              f"{r.q_munder:.12f}", f"{r.rel_diff:.1e}", r.kind_galerkin, r.max_frequency]
@@ -82,13 +104,13 @@ def draw(ev: RingEvidence):
             g = t[t["nu"] == nu].sort_values("N")
             ax.plot(n_fine, crit2(n_fine, nu, e), ls="--", color=c, lw=1.2)
             ax.plot(g["N"], g["q_hydrostatic"], "o-", color=c, ms=4, lw=1.4,
-                    label=f"ν = {nu:g}")
+                    label=_text("curve", nu=nu))
             for load, (marker, size) in OTHER_READINGS.items():
                 ax.plot(g["N"], g[f"q_{load}"], marker, color=c, ms=size, mfc="none", lw=0)
             th = threshold_twist(nu)
             if not math.isinf(th.continuous) and th.continuous <= 10:
                 ax.plot([th.continuous], [0.0], marker="x", color=c, ms=9, mew=2)
-        ax.set_title(f"{TITLES[label]}: e = E₂/E₁ = {e:.3f}")
+        ax.set_title(_text("panel", title=TITLES[label], e=e))
         ax.set_xlabel("twist N (turns of the cross-section around the ring)")
         ax.set_xlim(-0.3, 10.3)
         ax.set_ylim(-2.0, 7.8)  # room for the style legend above the loads
@@ -98,13 +120,13 @@ def draw(ev: RingEvidence):
     style = [Line2D([], [], color="k", ls="--", label="Eq. crit2 (paper)"),
              Line2D([], [], color="k", marker="o", ms=4, label="numerical, hydrostatic"),
              *(Line2D([], [], color="k", marker=m, ms=sz, mfc="none", lw=0,
-                      label=f"numerical, {load}") for load, (m, sz) in OTHER_READINGS.items()),
+                      label=_text("reading-marker", load=load))
+               for load, (m, sz) in OTHER_READINGS.items()),
              Line2D([], [], color="k", marker="x", mew=2, lw=0,
                     label="crit2 = 0 (threshold twist)")]
     first = axes[0].legend(handles=style, loc="upper right", fontsize=8, framealpha=0.9)
     axes[0].add_artist(first)
     axes[1].legend(loc="lower left", fontsize=8, ncol=2, framealpha=0.9)
-    fig.suptitle("Twisted ring: the paper's Eq. crit2 (dashed, leaves the plot below −2) vs the "
-                 "converged Fourier-Galerkin critical load", fontsize=11)
+    fig.suptitle(_text("suptitle"), fontsize=11)
     fig.tight_layout()
     return fig

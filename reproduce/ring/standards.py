@@ -1,9 +1,12 @@
 """The ring scene's standards: the named tolerances every ring verdict rule uses (in its logic
-and, through f-strings, in its text) and the methods the rows cite."""
+and, as the named fields of its text template, in its text) and the methods the rows cite."""
 
 from __future__ import annotations
 
-from reproduce.ledger import Method
+import functools
+from collections.abc import Callable
+
+from reproduce.ledger import Method, Rule
 from spectral_rod import FIGURE1_NU, RING_LOADS
 
 SCENE = "ring"
@@ -59,13 +62,22 @@ def readings(ev: object) -> tuple[str, ...]:
     return (override,) if override else RING_LOADS
 
 
-def verdict_by_deviation(dev: float) -> str:
-    """The ring's one standard for "is this number that number": holds within EXACT_TOL, holds
-    approximately within APPROX_TOL, fails beyond."""
-    if dev <= EXACT_TOL:
+def verdict_by_deviation(dev: float, exact: float = EXACT_TOL, approx: float = APPROX_TOL
+                         ) -> str:
+    """The ring's one standard for "is this number that number": holds within `exact`
+    (EXACT_TOL), holds approximately within `approx` (APPROX_TOL), fails beyond; its text is
+    :data:`DEVIATION_RULE_TEXT` with the same two fields."""
+    if dev <= exact:
         return "holds"
-    return "holds approximately" if dev <= APPROX_TOL else "fails"
+    return "holds approximately" if dev <= approx else "fails"
 
 
-DEVIATION_RULE = (f"holds if ≤ {EXACT_TOL:g}, holds approximately if ≤ {APPROX_TOL:.0%}, fails "
-                  "otherwise")
+#: The text of :func:`verdict_by_deviation`: a template whose fields are its two thresholds.
+DEVIATION_RULE_TEXT = "holds if ≤ {exact:g}, holds approximately if ≤ {approx:.0%}, fails otherwise"
+DEVIATION_RULE = DEVIATION_RULE_TEXT.format(exact=EXACT_TOL, approx=APPROX_TOL)
+
+
+def rule_from_template(template: str, decide: Callable[..., str], **thresholds: float) -> Rule:
+    """A verdict rule whose text is `template` filled with `thresholds` (named fields) and whose
+    logic is ``decide(numbers, **thresholds)``: one definition of every threshold for both."""
+    return Rule(template.format(**thresholds), functools.partial(decide, **thresholds))
