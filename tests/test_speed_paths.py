@@ -469,3 +469,17 @@ def test_lean_loose_eigenvalue_is_the_discrete_eigenvalue_within_the_iteration_t
     with capsys.disabled():
         print(f"\nloose quotient ({few_engine}): {om.size} points, {accepted} of {families} "
               f"families accepted and converged, max |lambda/eig - 1| {worst:.2g}")
+
+
+def test_an_explicit_degree_forces_collocation_on_every_path():
+    """`n` forces collocation at that degree (critical_load's contract), also where the router
+    would send the point to the characteristic equation (|Omega(L)| >= 50): the scalar path, a
+    one-element array and a batch answer alike."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ConvergenceWarning)  # n = 8 cannot resolve Omega = 100
+        scalar = critical_load(100.0, 10.0, n=8, full_output=True)
+        one = critical_load(np.array([100.0]), 10.0, n=8, full_output=True)
+        batch = critical_load(np.array([100.0, 5.0]), 10.0, n=8, full_output=True)
+    assert scalar.method == one.method[0] == batch.method[0] == "collocation"
+    assert scalar.n == one.n[0] == batch.n[0] == 8
+    assert not scalar.converged and scalar.p_star == one.p_star[0] == batch.p_star[0]

@@ -183,7 +183,7 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
         return None
     if not (om <= TWIST_MAX and 1.0 <= nv <= NU_MAX and TOL_RANGE[0] <= tol <= TOL_RANGE[1]):
         return None  # includes NaN: the general path names the bad argument
-    chosen = route_point(om, nv, None, method)
+    chosen = route_point(om, nv, n if isinstance(n, int) else None, method)
     if chosen == "characteristic":
         return _one_characteristic(om, nv, tol, bool(full_output))
     if chosen != "collocation":
