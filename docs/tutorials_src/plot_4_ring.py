@@ -3,8 +3,10 @@ The ring under each load reading
 ================================
 
 The paper's ring carries "a radially inward-directed force per unit length" and "radially
-inwards directed pressure" without saying which; the two readings are different loads once
-the ring moves. :data:`spectral_rod.RING_LOADS` lists the readings the package implements, and
+inwards directed pressure" without saying which. The standard readings (pressure that follows
+the surface, a force toward the ring's axis, toward its centre point, a dead load of fixed
+direction) agree on the circle and are different loads once the ring moves.
+:data:`spectral_rod.RING_LOADS` lists the readings the package implements, and
 :func:`spectral_rod.ring_critical_load` gives the converged critical load q_cr R³/(E₁I₁) for
 each, against N (turns of the cross-section around the ring). Eq. ``crit2``, the paper's
 one-mode estimate (:func:`spectral_rod.ring_formula_load`), is drawn for comparison.
