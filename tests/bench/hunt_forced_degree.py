@@ -27,7 +27,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from hunt_routes import HUNT_TOL, HuntResult, reference
+from hunt_routes import COLUMNS, HEADER, HUNT_TOL, HuntResult, judge, reference, row
 
 from spectral_rod import ConvergenceWarning, critical_load
 
@@ -61,16 +61,6 @@ def solve(twist: np.ndarray, nu: np.ndarray, n: np.ndarray, tol: float):
     return p, est, ok
 
 
-def judge(part: str, err: np.ndarray, est: np.ndarray, ok: np.ndarray, twist: np.ndarray,
-          nu: np.ndarray, tol: float) -> HuntResult:
-    """The hunt's evidence for one part (automatic or explicit degree)."""
-    ratio = err / np.maximum(est, np.finfo(float).tiny)
-    worst = int(np.argmax(ratio))
-    return HuntResult(part, err.size, float(err.max()), float(ratio.max()),
-                      int(np.sum((err > tol) & ok)), int(np.sum((err > est) & ok)),
-                      int(np.sum(~ok)), (float(twist[worst]), float(nu[worst])))
-
-
 def hunt(points: int, seed: int = 37, tol: float = HUNT_TOL) -> list[HuntResult]:
     """Solve `points` random points (module docstring) at `tol`; compare with the references."""
     twist, nu, n = sample(points, np.random.default_rng([seed, 5]))
@@ -87,14 +77,11 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--seed", type=int, default=37)
     args = parser.parse_args(argv)
     print(f"forced collocation, tol {HUNT_TOL:g}, {args.points} random points, seed {args.seed}")
-    print(f"{'part':<14}{'points':>7}{'max error':>11}{'max err/est':>13}{'silent':>8}"
-          f"{'err>est':>9}{'flagged':>9}  worst (twist, nu)")
+    print(HEADER.format("part", *COLUMNS, w=14))
     silent = 0
     for r in hunt(args.points, args.seed):
         silent += r.silent_misses
-        print(f"{r.route:<14}{r.points:>7}{r.max_error:>11.2e}{r.max_error_over_estimate:>13.3g}"
-              f"{r.silent_misses:>8}{r.estimate_misses:>9}{r.flagged:>9}  "
-              f"({r.worst[0]:.6g}, {r.worst[1]:.10g})", flush=True)
+        print(row(r, 14), flush=True)
     return 1 if silent else 0
 
 

@@ -69,6 +69,29 @@ def reference(twist: float, nu: float) -> float:
     return float(characteristic_critical_load(twist, nu, dps=REFERENCE_DPS).p_star)
 
 
+def judge(route: str, err: np.ndarray, est: np.ndarray, ok: np.ndarray, twist: np.ndarray,
+          nu: np.ndarray, tol: float) -> HuntResult:
+    """The hunt's evidence from relative errors `err`, estimates `est` and converged flags `ok`:
+    a silent miss errs above `tol` while reported converged; an estimate miss errs above its
+    own estimate (flagged or not)."""
+    ratio = err / np.maximum(est, np.finfo(float).tiny)
+    worst = int(np.argmax(ratio))
+    return HuntResult(route, err.size, float(err.max()), float(ratio.max()),
+                      int(np.sum((err > tol) & ok)), int(np.sum(err > est)), int(np.sum(~ok)),
+                      (float(twist[worst]), float(nu[worst])))
+
+
+def row(r: HuntResult, width: int) -> str:
+    """One printed line of a hunt's table."""
+    return (f"{r.route:<{width}}{r.points:>7}{r.max_error:>11.2e}"
+            f"{r.max_error_over_estimate:>13.3g}{r.silent_misses:>8}{r.estimate_misses:>9}"
+            f"{r.flagged:>9}  ({r.worst[0]:.6g}, {r.worst[1]:.10g})")
+
+
+HEADER = "{:<{w}}{:>7}{:>11}{:>13}{:>8}{:>9}{:>9}  worst (twist, nu)"
+COLUMNS = ("points", "max error", "max err/est", "silent", "err>est", "flagged")
+
+
 def hunt(route: str, points: int, seed: int = 37, tol: float = HUNT_TOL) -> HuntResult:
     """Solve `points` random points of `route` at `tol` in one call; compare with the reference."""
     rng = np.random.default_rng([seed, ROUTES.index(route)])
@@ -79,12 +102,7 @@ def hunt(route: str, points: int, seed: int = 37, tol: float = HUNT_TOL) -> Hunt
         res = critical_load(twist, nu, tol=tol, method=method, full_output=True)
     ref = np.array([reference(float(a), float(b)) for a, b in zip(twist, nu, strict=True)])
     err = np.abs(res.p_star / ref - 1.0)
-    ratio = err / np.maximum(res.error_estimate, np.finfo(float).tiny)
-    worst = int(np.argmax(ratio))
-    return HuntResult(route, points, float(err.max()), float(ratio.max()),
-                      int(np.sum((err > tol) & res.converged)),
-                      int(np.sum(err > res.error_estimate)), int(np.sum(~res.converged)),
-                      (float(twist[worst]), float(nu[worst])))
+    return judge(route, err, res.error_estimate, res.converged, twist, nu, tol)
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -95,14 +113,11 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     silent = 0
     print(f"tol {HUNT_TOL:g}, {args.points} random points a route, seed {args.seed}")
-    print(f"{'route':<16}{'max error':>11}{'max err/est':>13}{'silent':>8}{'err>est':>9}"
-          f"{'flagged':>9}  worst (twist, nu)")
+    print(HEADER.format("route", *COLUMNS, w=16))
     for route in args.routes:
         r = hunt(route, args.points, args.seed)
         silent += r.silent_misses
-        print(f"{r.route:<16}{r.max_error:>11.2e}{r.max_error_over_estimate:>13.3g}"
-              f"{r.silent_misses:>8}{r.estimate_misses:>9}{r.flagged:>9}  "
-              f"({r.worst[0]:.6g}, {r.worst[1]:.10g})", flush=True)
+        print(row(r, 16), flush=True)
     return 1 if silent else 0
 
 
