@@ -164,11 +164,10 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
                full_output: object):
     """The scalar fast path: p* (or its CriticalLoad) for one point given as Python or numpy
     floats on the collocation or the large-twist route, or None wherever the general path must
-    answer (any other input, the increment route, a degree above the lean solver's, a point it
-    does not accept). A forced degree, or an estimate that misses tol (tol below the round-off
+    answer (any other input, the increment route). A forced degree, or an estimate that misses tol (tol below the round-off
     floor), stays here: warned and flagged as the general path does (one call must not cost
     the array path's several times for it). The computation is the general path's for one
-    point, without its array bookkeeping: collocation by the driver's one-point path
+    point, without its array bookkeeping: collocation by the driver's degree loop for one point
     (:func:`spectral_rod.rod.collocation.driver.collocation_point`), the large-twist route
     :func:`_one_characteristic`; ``python -m pytest -m bench`` measures both scalar loops."""
     if not (isinstance(twist_angle, (float, int)) and isinstance(nu, (float, int))
@@ -189,8 +188,6 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
     if chosen != "collocation":
         return None
     point = collocation_point(om, nv, tol, n if isinstance(n, int) else None)
-    if point is None:
-        return None
     p, err = bounded_point(point.p_star, point.error_estimate, nv)
     converged = err <= tol  # after the bounds, as the general path judges it
     if not converged:

@@ -1,9 +1,11 @@
-r"""p* of Eq. ``inst1`` by Chebyshev collocation for arrays of points, with automatic resolution.
+r"""p* of Eq. ``inst1`` by Chebyshev collocation for any call shape, with automatic resolution:
+the one driver and its one degree loop (:func:`_degree_loop`).
 
 For each point: an a priori degree from the mode's wavenumber (in an array call, small degree
 groups may be pooled at a higher degree of the call where that is cheaper,
 :func:`solve_degrees`), the lowest eigenvalue of both mode families at that degree
-(:mod:`.eigensolver`, or :mod:`.few_points` for a few points), the error estimate from the
+(:func:`.eigensolver.solve_points`, the engine), the family rule (:func:`pick_family`), the
+error estimate from the
 computed mode's Chebyshev coefficients (:mod:`.resolution`), plus, above the default tol, the
 eigenvalue iteration's allowance (:func:`.eigensolver.iteration_allowance`); where the estimate's
 tail part misses a tenth of the tolerance (:func:`.resolution.shortfall`) the degree is raised,
@@ -11,6 +13,11 @@ by 2 per factor 10 short and at most ~12 % (:func:`.resolution.raised_degree`), 
 n = :data:`N_MAX` (no raise where the round-off floor alone exceeds the tolerance); a point is
 converged where the whole estimate is <= tol. Inputs are validated by the caller
 (:func:`spectral_rod.critical_load`).
+
+The loop is written once against a namespace of its operations: :class:`_Arrays` for flat
+arrays (:func:`collocation_critical_load`) and :class:`_OnePoint` for one point in Python
+floats (:func:`collocation_point`, a scalar call: a batch of one without numpy's per-call
+cost).
 """
 
 from __future__ import annotations
@@ -30,8 +37,9 @@ from spectral_rod.rod.collocation.eigensolver import (
     lowest_gap,
     physical_eig,
     solve_family,
+    solve_point,
+    solve_points,
 )
-from spectral_rod.rod.collocation.few_points import solve_few, solve_one
 from spectral_rod.rod.collocation.resolution import (
     N_MAX,
     N_MIN,
@@ -54,7 +62,7 @@ from spectral_rod.rod.collocation.tuning import (
     iteration_allowance,
     iteration_rtol,
 )
-from spectral_rod.rod.families import CLOSE_REL, FAMILIES, TIE_REL, check_family
+from spectral_rod.rod.families import CLOSE_REL, TIE_REL, check_family
 
 __all__ = [
     "CLOSE_REL",
@@ -67,13 +75,13 @@ __all__ = [
     "SMALL_PART",
     "TIE_REL",
     "CollocationResult",
+    "PointResult",
     "collocation_critical_load",
     "collocation_family_load",
     "collocation_mode_coefficients",
     "collocation_point",
     "few_points_limit",
     "pick_family",
-    "pick_family_scalar",
     "solve_cost",
     "solve_degrees",
 ]
@@ -109,7 +117,7 @@ def solve_degrees(n: NDArray[np.int_]) -> NDArray[np.int_]:
     The call's degree groups, in ascending order, are pooled with the next group and solved at
     its degree while :func:`solve_cost` says that is cheaper than two solves (a higher degree is
     at least as accurate; its error estimate is the one reported), up to
-    :data:`~spectral_rod.rod.collocation.few_points.LEAN_MAX_DEGREE`.
+    :data:`.tuning.LEAN_MAX_DEGREE`.
 
     >>> solve_degrees(np.repeat([16, 18, 20], [50, 50, 300])).tolist() == [20] * 400
     True
@@ -130,48 +138,6 @@ def solve_degrees(n: NDArray[np.int_]) -> NDArray[np.int_]:
     return target[np.searchsorted(degs, n)]
 
 
-def _solve_points(twist: NDArray[np.float64], nu: NDArray[np.float64], n: NDArray[np.int_],
-                  tol: float = 1e-12, by_kernel: NDArray[np.bool_] | None = None):
-    """p*, family index and tail for flat arrays of points at the given degrees.
-
-    Per degree: up to :func:`few_points_limit` points by the lean solver (both families, dense LU
-    and matrix powers), more by the batched engine: the symmetric family first, the
-    antisymmetric one then only resolved where it is not clearly above (1 + CLOSE_REL times) the
-    symmetric eigenvalue. Points the lean solver does not accept go to the batched engine.
-    ``by_kernel`` (bool, one per point), if given, is set True where the C kernel computed both
-    families' results.
-
-    The two families are iterated one after the other, so that the antisymmetric family can
-    stop at its ceiling and a point leaves the iteration as soon as its family is done.
-    """
-    p = np.empty(twist.size)
-    fam = np.empty(twist.size, dtype=int)
-    tails = np.empty(twist.size)
-    rtol = iteration_rtol(tol)
-    kernel = modal_kernel.available()
-    for deg in np.unique(n):
-        sel = np.flatnonzero(n == deg)
-        if sel.size <= few_points_limit(int(deg)):
-            lam, tl, ok = solve_few(int(deg), twist[sel], nu[sel], rtol)
-            p[sel], fam[sel], tails[sel] = pick_family(lam, tl)
-            if by_kernel is not None:
-                by_kernel[sel] = kernel
-            sel = sel[~ok]
-            if not sel.size:
-                continue
-        lam = np.empty((2, sel.size))
-        tl = np.empty((2, sel.size))
-        used = np.empty((2, sel.size), dtype=bool)
-        lam[0], tl[0], _ = solve_family(int(deg), FAMILIES[0], twist[sel], nu[sel], rtol=rtol,
-                                        kernel_out=used[0])
-        lam[1], tl[1], _ = solve_family(int(deg), FAMILIES[1], twist[sel], nu[sel], rtol=rtol,
-                                        ceiling=lam[0] * (1 + CLOSE_REL), kernel_out=used[1])
-        p[sel], fam[sel], tails[sel] = pick_family(lam, tl)
-        if by_kernel is not None:
-            by_kernel[sel] = used.all(axis=0)
-    return p, fam, tails
-
-
 class PointResult(NamedTuple):
     """One point's :class:`CollocationResult` in Python scalars, and whether its estimate is
     <= tol."""
@@ -184,76 +150,184 @@ class PointResult(NamedTuple):
     converged: bool
 
 
-def collocation_point(twist: float, nu: float, tol: float, n: int | None = None
-                      ) -> PointResult | None:
-    """The driver's lean path: :func:`collocation_critical_load` for one point given as Python
-    floats (validated; |Omega|; ``n`` None or a validated degree) by the same degree loop and
-    rules in Python floats, without a batch's array bookkeeping (a scalar call's cost is mostly
-    numpy's per-call overhead); ``tests/test_speed_paths.py`` checks that both answer alike.
+class _Arrays:
+    """The degree loop's operations on flat arrays of points (numpy); ``todo`` is an index
+    array."""
 
-    A forced degree is solved once; where the round-off floor alone exceeds tol the a priori
-    degree is kept, as in the array path; either may end with an estimate above tol, returned
-    with ``converged`` False (the caller warns and flags). None wherever the array path must
-    answer: a degree above :data:`.tuning.LEAN_MAX_DEGREE` or a point the lean solver does not
-    accept.
-    """
-    rtol, allowance = iteration_rtol(tol), iteration_allowance(tol)
+    where, abs, minimum, maximum = np.where, np.abs, np.minimum, np.maximum
+    initial_degree = staticmethod(initial_degree)
+    error_estimate = staticmethod(error_estimate)
+    shortfall = staticmethod(shortfall)
+    roundoff_floor = staticmethod(roundoff_floor)
+    raised_degree = staticmethod(raised_degree)
+    nonzero = staticmethod(np.flatnonzero)
+
+    @staticmethod
+    def pooled(deg: NDArray[np.int_]) -> NDArray[np.int_]:
+        return solve_degrees(deg)
+
+    @staticmethod
+    def full(tw: NDArray[np.float64], n: int) -> NDArray[np.int_]:
+        return np.full(tw.size, n)
+
+    @staticmethod
+    def size(todo: NDArray[np.int_]) -> int:
+        return todo.size
+
+    @staticmethod
+    def take(a, todo):
+        return a[..., todo]
+
+    @staticmethod
+    def put(a, todo, value):
+        a[..., todo] = value
+        return a
+
+    @staticmethod
+    def subset(todo: NDArray[np.int_], keep: NDArray[np.bool_]) -> NDArray[np.int_]:
+        return todo[keep]
+
+    @staticmethod
+    def engine_names(by_kernel: NDArray[np.bool_]) -> NDArray[np.str_]:
+        return np.where(by_kernel, ENGINES[0], ENGINES[1])
+
+    @staticmethod
+    def solve(tw: NDArray[np.float64], nu: NDArray[np.float64], deg: NDArray[np.int_],
+              rtol: float) -> tuple[NDArray[np.float64], NDArray[np.float64],
+                                    NDArray[np.bool_]]:
+        """Both families' lambda and tails (2, points) and whether the kernel computed them,
+        one engine call per degree of the call."""
+        if deg.size and deg.min() == deg.max():  # one degree: no regrouping
+            return solve_points(int(deg[0]), tw, nu, rtol)
+        lam, tails = np.empty((2, tw.size)), np.empty((2, tw.size))
+        by_kernel = np.empty(tw.size, dtype=bool)
+        for d in np.unique(deg):
+            sel = np.flatnonzero(deg == d)
+            lam[:, sel], tails[:, sel], by_kernel[sel] = solve_points(int(d), tw[sel], nu[sel],
+                                                                      rtol)
+        return lam, tails, by_kernel
+
+
+class _OnePoint:
+    """The degree loop's operations for one point in Python floats, without numpy's per-call
+    cost (the rules' scalar forms, tested against the array forms in
+    ``tests/test_speed_paths.py``); ``todo`` is a bool."""
+
+    abs, minimum, maximum = abs, min, max
+    initial_degree = staticmethod(initial_degree_scalar)
+    error_estimate = staticmethod(error_estimate_scalar)
+    shortfall = staticmethod(shortfall_scalar)
+
+    @staticmethod
+    def where(cond, a, b):
+        return a if cond else b
+
+    @staticmethod
+    def roundoff_floor(tw: float) -> float:
+        return error_estimate_scalar(0.0, tw)  # a zero tail: the round-off part at n = 0
+
+    @staticmethod
+    def raised_degree(deg: int, short: float) -> int:
+        return int(raised_degree(deg, short))
+
+    @staticmethod
+    def pooled(deg: int) -> int:
+        return deg
+
+    @staticmethod
+    def full(tw: float, n: int) -> int:
+        return n
+
+    @staticmethod
+    def nonzero(todo: bool) -> bool:
+        return todo
+
+    size = nonzero
+
+    @staticmethod
+    def take(a, todo):
+        return a
+
+    @staticmethod
+    def put(a, todo, value):
+        return value
+
+    @staticmethod
+    def subset(todo: bool, keep: bool) -> bool:
+        return todo and keep
+
+    @staticmethod
+    def engine_names(by_kernel: bool) -> str:
+        return ENGINES[0] if by_kernel else ENGINES[1]
+
+    @staticmethod
+    def solve(tw: float, nu: float, deg: int, rtol: float
+              ) -> tuple[list[float], list[float], bool]:
+        if deg <= LEAN_MAX_DEGREE:  # small matrices: below OpenBLAS's threading thresholds
+            return solve_point(deg, tw, nu, rtol)
+        with one_blas_thread():
+            return solve_point(deg, tw, nu, rtol)
+
+
+def _degree_loop(xp, tw, nu, n: int | None, tol: float):
+    """The degree loop (module docstring) for points `tw` (|Omega|), `nu` in the namespace `xp`
+    (:class:`_Arrays` or :class:`_OnePoint`): p*, degree, error estimate, family index and
+    engine name per point."""
+    rtol = iteration_rtol(tol)
     if n is None:
-        deg = initial_degree_scalar(twist, tol)
-        # no raise where round-off alone decides (the array path's rule)
-        raise_degree = error_estimate_scalar(0.0, twist) < tol
-    else:
-        deg, raise_degree = n, False
-    while True:  # the degree loop of _collocation_critical_load, for one point
-        if deg > LEAN_MAX_DEGREE:
-            return None
-        # no BLAS thread limit here: the lean solver's matrices (m < 100) are below
-        # OpenBLAS's threading thresholds, and the limit costs more than they do
-        lam, tails, ok = solve_one(deg, twist, nu, rtol)
-        if not ok:
-            return None
-        best, tail = pick_family_scalar(lam, tails)
-        if not raise_degree:
-            break
-        short = shortfall_scalar(tail, tol)
-        if short <= 1.0 or deg >= N_MAX:
-            break
-        deg = int(raised_degree(deg, short))
-    err = error_estimate_scalar(tail, twist, deg) + allowance
-    return PointResult(lam[best] / math.pi**2, deg, err, best, modal_kernel.engine_name(),
-                       err <= tol)
+        deg = xp.pooled(xp.initial_degree(tw, tol))
+        may_raise = xp.roundoff_floor(tw) < tol  # no raise where round-off alone decides
+    else:  # a forced degree is solved once
+        deg, may_raise = xp.full(tw, n), False
+    lam, tails, by_kernel = xp.solve(tw, nu, deg, rtol)
+    p, fam, tail = pick_family(lam, tails, xp)
+    short = xp.shortfall(tail, tol)
+    todo = xp.nonzero(may_raise & (short > 1.0) & (deg < N_MAX))
+    while xp.size(todo):
+        deg = xp.put(deg, todo, xp.raised_degree(xp.take(deg, todo), xp.take(short, todo)))
+        lam, tails, kernel = xp.solve(xp.take(tw, todo), xp.take(nu, todo),
+                                      xp.take(deg, todo), rtol)
+        sub = pick_family(lam, tails, xp)
+        p, fam, tail = (xp.put(old, todo, new) for old, new in zip((p, fam, tail), sub,
+                                                                   strict=True))
+        by_kernel = xp.put(by_kernel, todo, kernel)
+        short = xp.put(short, todo, xp.shortfall(sub[2], tol))
+        todo = xp.subset(todo, (xp.take(short, todo) > 1.0) & (xp.take(deg, todo) < N_MAX))
+    err = xp.error_estimate(tail, tw, deg) + iteration_allowance(tol)
+    return p, deg, err, fam, xp.engine_names(by_kernel)
 
 
-def pick_family(lam: NDArray[np.float64], tails: NDArray[np.float64]
-                ) -> tuple[NDArray[np.float64], NDArray[np.int_], NDArray[np.float64]]:
+def collocation_point(twist: float, nu: float, tol: float, n: int | None = None
+                      ) -> PointResult:
+    """:func:`collocation_critical_load` for one point given as Python floats (validated;
+    |Omega|; ``n`` None or a validated degree): the same degree loop in Python floats
+    (:class:`_OnePoint`), without a batch's array bookkeeping; ``tests/test_speed_paths.py``
+    checks that both answer alike. The estimate may exceed tol (a forced degree, or round-off
+    above tol): ``converged`` is then False and the caller warns and flags."""
+    modal_kernel.warn_if_missing()
+    p, deg, err, fam, engine = _degree_loop(_OnePoint, twist, nu, n, tol)
+    return PointResult(p, deg, err, fam, engine, err <= tol)
+
+
+def pick_family(lam, tails, xp=_Arrays):
     """p*, family index and the tail that judges it, from both families' lambda and tails
-    (arrays (2, points)).
+    (``lam[0]``, ``lam[1]``: arrays of points for ``xp`` = :class:`_Arrays`, floats for
+    :class:`_OnePoint`).
 
     A tie to round-off (e.g. nu = 1 at zero twist: the Euler mode in either plane) goes to the
     symmetric family, whose mode is the planar one in the (u0) plane. If the two families are
     within CLOSE_REL of each other either could be lowest, and both must be resolved.
-    :func:`pick_family_scalar` is the same rule for one point in Python floats.
-    """
-    best = (lam[1] < lam[0] * (1.0 - TIE_REL)).astype(int)
-    cols = np.arange(lam.shape[1])
-    close = np.abs(lam[0] - lam[1]) <= CLOSE_REL * lam.min(axis=0)
-    return (lam[best, cols] / np.pi**2, best,
-            np.where(close, tails.max(axis=0), tails[best, cols]))
 
-
-def pick_family_scalar(lam: list[float], tails: list[float]) -> tuple[int, float]:
-    """:func:`pick_family` for one point (the scalar path's): the family index and the tail
-    that judges it, from both families' lambda and tails (``tests/test_speed_paths.py`` checks
-    that the two agree, ties and near-ties included).
-
-    >>> pick_family_scalar([10.0, 10.0], [1e-9, 2e-9])  # a tie: symmetric, the larger tail
+    >>> pick_family([10.0, 10.0], [1e-9, 2e-9], _OnePoint)[1:]  # a tie: symmetric, larger tail
     (0, 2e-09)
-    >>> pick_family_scalar([10.0, 9.0], [1e-9, 3e-9])
+    >>> pick_family([10.0, 9.0], [1e-9, 3e-9], _OnePoint)[1:]
     (1, 3e-09)
     """
     (l0, l1), (t0, t1) = lam, tails
-    best = 1 if l1 < l0 * (1.0 - TIE_REL) else 0
-    return best, max(t0, t1) if abs(l0 - l1) <= CLOSE_REL * min(l0, l1) else (t0, t1)[best]
+    best = xp.where(l1 < l0 * (1.0 - TIE_REL), 1, 0)
+    close = xp.abs(l0 - l1) <= CLOSE_REL * xp.minimum(l0, l1)
+    return (xp.where(best, l1, l0) / math.pi**2, best,
+            xp.where(close, xp.maximum(t0, t1), xp.where(best, t1, t0)))
 
 
 def collocation_critical_load(twist: NDArray[np.float64], nu: NDArray[np.float64], *,
@@ -264,39 +338,7 @@ def collocation_critical_load(twist: NDArray[np.float64], nu: NDArray[np.float64
     Without the C kernel the first call warns (:func:`.modal_kernel.warn_if_missing`)."""
     modal_kernel.warn_if_missing()
     with one_blas_thread():
-        return _collocation_critical_load(np.abs(twist), nu, n, tol)
-
-
-def _collocation_critical_load(tw: NDArray[np.float64], nu: NDArray[np.float64],
-                               n: int | None, tol: float) -> CollocationResult:
-    allowance = iteration_allowance(tol)  # the eigenvalue iteration's share beyond the model
-    by_kernel = np.zeros(tw.size, dtype=bool)
-    if n is not None:
-        deg = np.full(tw.size, int(n))
-        p, fam, tails = _solve_points(tw, nu, deg, tol, by_kernel)
-        return CollocationResult(p, deg, error_estimate(tails, tw, deg) + allowance, fam,
-                                 _engine_names(by_kernel))
-    deg = solve_degrees(initial_degree(tw, tol))
-    p, fam, tails = _solve_points(tw, nu, deg, tol, by_kernel)
-    # raise the degree where the tail's part of the estimate misses its share of tol, unless
-    # round-off alone decides
-    short = shortfall(tails, tol)
-    todo = np.flatnonzero((short > 1.0) & (deg < N_MAX) & (roundoff_floor(tw) < tol))
-    while todo.size:
-        deg[todo] = raised_degree(deg[todo], short[todo])
-        used = np.zeros(todo.size, dtype=bool)
-        p[todo], fam[todo], tails[todo] = _solve_points(tw[todo], nu[todo], deg[todo], tol,
-                                                        used)
-        by_kernel[todo] = used
-        short[todo] = shortfall(tails[todo], tol)
-        todo = todo[(short[todo] > 1.0) & (deg[todo] < N_MAX)]
-    return CollocationResult(p, deg, error_estimate(tails, tw, deg) + allowance, fam,
-                             _engine_names(by_kernel))
-
-
-def _engine_names(by_kernel: NDArray[np.bool_]) -> NDArray[np.str_]:
-    """ "kernel" where True, "numpy" where False."""
-    return np.where(by_kernel, ENGINES[0], ENGINES[1])
+        return CollocationResult(*_degree_loop(_Arrays, np.abs(twist), nu, n, tol))
 
 
 def collocation_family_load(twist_angle: float, nu: float, family: str, n: int) -> float:

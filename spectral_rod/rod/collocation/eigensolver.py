@@ -47,18 +47,19 @@ from spectral_rod.rod.collocation.resolution import mode_tails
 from spectral_rod.rod.collocation.stacked_inverse import BACKWARD_TOL, stacked_inverse
 from spectral_rod.rod.collocation.tuning import (
     CALIBRATED_TOL,
+    DENSE_ENTRIES,
     KERNEL_MAX_SCHUR,
+    LEAN_MAX_DEGREE,
     LONG_TWIST,
     POWER_RTOL,
     POWER_STEPS,
-    SMALL_BATCH,
-    SMALL_DEGREE,
+    few_points_limit,
     first_check,
     iteration_allowance,
     iteration_rtol,
     loose_quotient,
 )
-from spectral_rod.rod.families import FAMILIES, SHIFT
+from spectral_rod.rod.families import CLOSE_REL, FAMILIES, SHIFT
 
 __all__ = ["CALIBRATED_TOL", "ISOLATION_GAP", "KERNEL_MAX_SCHUR", "ModalFamily", "ModalParts",
            "first_check", "iteration_allowance", "iteration_rtol", "kernel_families",
@@ -196,10 +197,18 @@ class ModalParts(NamedTuple):
                              d_s=self.d_s[idx])
 
 
+def _coefficients(twist: NDArray[np.floating], nu: NDArray[np.floating]) -> NDArray[np.floating]:
+    """:func:`.discretisation.term_coefficients` (points, terms); one float64 point in Python
+    floats (a few us instead of ~20 us of per-term numpy calls, for scalar calls)."""
+    if twist.size == 1 and twist.dtype == nu.dtype == np.float64:
+        return term_coefficients(float(twist[0]), float(nu[0]))[None]
+    return term_coefficients(twist, nu)
+
+
 def modal_parts(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np.float64]
                 ) -> ModalParts:
     """:class:`ModalParts` of family `mf` at the points (twist, nu)."""
-    coef = term_coefficients(twist, nu)[:, :, None]  # (P, terms, 1)
+    coef = _coefficients(twist, nu)[:, :, None]  # (P, terms, 1)
     (s1, z1, c1), (s2, z2, c2) = MODAL_TERMS
     d1, d2 = coef[:, z1] - coef[:, s1] * mf.lam1, coef[:, z2] - coef[:, s2] * mf.lam2
     a1, a2 = 2.0 * coef[:, c1], 2.0 * coef[:, c2]  # d/ds = 2 d/dx
@@ -277,6 +286,50 @@ class _ShiftedModal:
                )[:, 0, :]
         return self._assemble(u - self.b * (z_s @ self.g_se) * self.r_e, z_s)
 
+    def solve_pair(self, v: NDArray[np.float64]) -> NDArray[np.float64]:
+        """((K - SHIFT)^{-1} v[0], (K - SHIFT)^{-T} v[1]) per point, v (2, P, m); as separate
+        calls: a stored transpose S^{-T} would double the memory each step reads."""
+        return np.stack((self.solve(v[0]), self.solve_transposed(v[1])))
+
+
+@dataclass(frozen=True)
+class _DenseShifted:
+    """(K - SHIFT)^{-1} and its transpose at a few points as dense matrices, ``pair`` (2, P, m,
+    m), inverted by LAPACK (pivoted): the same operator as :class:`_ShiftedModal`, applied in one
+    call per step. For a few points numpy's per-call cost, not the arithmetic, decides, and a
+    step is then one batched product instead of ~16 calls (:data:`.tuning.DENSE_ENTRIES`)."""
+
+    pair: NDArray[np.float64]
+
+    @classmethod
+    def from_parts(cls, pt: ModalParts) -> _DenseShifted:
+        points, k_e = pt.r_e.shape
+        m = k_e + pt.d_s.shape[1]
+        shifted = np.zeros((points, m, m))
+        cols = np.arange(m)
+        e, s = cols[pt.elim], cols[pt.kept]
+        shifted[:, e, e], shifted[:, s, s] = 1.0 / pt.r_e, pt.d_s
+        shifted[:, pt.elim, pt.kept] = pt.a[:, :, None] * pt.g_es
+        shifted[:, pt.kept, pt.elim] = pt.b[:, :, None] * pt.g_se
+        inverse = np.linalg.inv(shifted)  # LinAlgError if singular
+        return cls(np.stack((inverse, np.swapaxes(inverse, 1, 2))))
+
+    def take(self, idx: NDArray[np.int_]) -> _DenseShifted:
+        """The points `idx` only."""
+        return _DenseShifted(self.pair[:, idx])
+
+    def solve_pair(self, v: NDArray[np.float64]) -> NDArray[np.float64]:
+        """As :meth:`_ShiftedModal.solve_pair`."""
+        return np.matmul(self.pair, v[..., None])[..., 0]
+
+
+def _shifted(mf: ModalFamily, pt: ModalParts) -> _ShiftedModal | _DenseShifted:
+    """The numpy reference's (K - SHIFT)^{-1} at the points of `pt`: dense up to
+    :data:`.tuning.DENSE_ENTRIES` matrix entries (points m^2), else through the Schur complement."""
+    if pt.r_e.shape[0] * (pt.r_e.shape[1] + pt.d_s.shape[1]) ** 2 <= DENSE_ENTRIES:
+        return _DenseShifted.from_parts(pt)
+    return _ShiftedModal.from_parts(mf, pt)
+
 
 def uses_kernel(k_s: int) -> bool:
     """Whether :func:`lowest_eigenpair` iterates by the C kernel at Schur block size k_s."""
@@ -286,11 +339,6 @@ def uses_kernel(k_s: int) -> bool:
 def _rowdot(a: NDArray[np.float64], b: NDArray[np.float64]) -> NDArray[np.float64]:
     """Row-wise dot products (numpy >= 2.0 has ``np.vecdot``; this works on older numpy too)."""
     return np.einsum("ij,ij->i", a, b)
-
-
-def _unit_rows(v: NDArray[np.float64]) -> NDArray[np.float64]:
-    """1 / |v| per row, as a column."""
-    return 1.0 / np.sqrt(_rowdot(v, v))[:, None]
 
 
 def lowest_eigenpair(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np.float64],
@@ -338,8 +386,7 @@ def lowest_eigenpair(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np
     if kernel_out is not None:
         kernel_out[:] = by_kernel
     if not by_kernel:
-        return _iterate(_ShiftedModal.from_parts(mf, pt), start, rtol, ceiling, first,
-                        max_steps)
+        return _iterate(_shifted(mf, pt), start, rtol, ceiling, first, max_steps)
     res = modal_kernel.modal_lowest(pt.r_e, pt.a, pt.b, pt.d_s, pt.g_es, pt.g_se,
                                     start[pt.elim], start[pt.kept], ceiling, shift=SHIFT,
                                     rtol=rtol, first=first, max_steps=max_steps,
@@ -354,57 +401,78 @@ def lowest_eigenpair(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np
     if rejected.size:  # the numpy iteration, with LAPACK's pivoted inverse where needed
         if kernel_out is not None:
             kernel_out[rejected] = False
-        sub = _iterate(_ShiftedModal.from_parts(mf, pt.take(rejected)), start, rtol,
+        sub = _iterate(_shifted(mf, pt.take(rejected)), start, rtol,
                        None if ceiling is None else ceiling[rejected], first, max_steps)
         lam[rejected], vec[rejected], left[rejected], ok[rejected], above[rejected] = sub
     return lam, vec, left, ok, above
 
 
-def _iterate(sk: _ShiftedModal, start: NDArray[np.float64], rtol: float,
+def _iterate(op: _ShiftedModal | _DenseShifted, start: NDArray[np.float64], rtol: float,
              ceiling: NDArray[np.float64] | None, first: int, max_steps: int
              ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64],
                         NDArray[np.bool_], NDArray[np.bool_]]:
-    """The iteration of :func:`lowest_eigenpair` in numpy, from a unit start vector, with the
-    first test at step `first` (then every 2 steps)."""
-    points = sk.r_e.shape[0]
-    x = np.broadcast_to(start, (points, start.size))
-    y = x
+    """The iteration of :func:`lowest_eigenpair` in numpy (the C kernel's ``solve_group``),
+    from a unit start vector, with the first test at step `first` (then every 2 steps). The
+    right and left vectors travel stacked, v (2, points, m), so that the test
+    (:func:`_lanes_test`) is one set of numpy calls for both."""
+    points = op.pair.shape[1] if isinstance(op, _DenseShifted) else op.r_e.shape[0]
+    v = np.broadcast_to(start, (2, points, start.size))
     lam = np.full(points, np.nan)
-    vec = np.zeros((points, start.size))
-    left = np.zeros_like(vec)
+    vecs = np.zeros((2, points, start.size))
     ok = np.zeros(points, dtype=bool)
     above = np.zeros(points, dtype=bool)
     active = np.arange(points)
     for step in range(1, max_steps + 1):
         # each step scales by <= ~1/(0.05 pi^2) and >= ~1/lambda_max: normalising at the
         # checks (every 2 steps) keeps the vectors far from overflow and underflow
-        x_prev, y_prev = x, y
-        x, y = sk.solve(x), sk.solve_transposed(y)
+        prev = v
+        v = op.solve_pair(v)
         if step < first or step % 2:
             continue
-        sx, sy = _unit_rows(x), _unit_rows(y)
-        x, y = x * sx, y * sy
-        kx, ky = SHIFT * x + x_prev * sx, SHIFT * y + y_prev * sy  # K x, K^T y
-        yx = _rowdot(y, x)
-        rq = _rowdot(y, kx) / yx
-        rx, ry = kx - rq[:, None] * x, ky - rq[:, None] * y
-        bound = np.sqrt(_rowdot(rx, rx) * _rowdot(ry, ry)) / np.abs(yx)
-        conv = (bound <= rtol * np.abs(rq)) & (rq >= SHIFT)
-        high = np.zeros_like(conv) if ceiling is None else \
-            ~conv & (rq - 100.0 * bound > ceiling[active])
-        done = conv | high
-        if step + 2 > max_steps:
-            done[:] = True
-        fin = active[done]
-        lam[fin], ok[fin], above[fin] = rq[done], conv[done], high[done]
-        vec[fin], left[fin] = x[done], y[done]
-        if done.all():
+        v, rq, bound = _lanes_test(v, prev)
+        conv = converged(rq, bound, rtol, np)
+        high = conv if ceiling is None else ~conv & (rq - 100.0 * bound > ceiling[active])
+        done = np.ones_like(conv) if step + 2 > max_steps else conv | high
+        every = bool(done.all())
+        fin, sub = (active, slice(None)) if every else (active[done], done)
+        lam[fin], ok[fin], above[fin] = rq[sub], conv[sub], high[sub] & ~conv[sub]
+        vecs[:, fin] = v[:, sub]
+        if every:
             break
         keep = np.flatnonzero(~done)
         active = active[keep]
-        sk = sk.take(keep)
-        x, y = x[keep], y[keep]
-    return lam, vec, left, ok, above
+        op = op.take(keep)
+        v = v[:, keep]
+    return lam, vecs[0], vecs[1], ok, above
+
+
+def _lanes_test(v: NDArray[np.float64], prev: NDArray[np.float64]
+                ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
+    """The kernel's ``lanes_test`` in numpy: the unit right and left vectors v (2, points, m)
+    from the step's v and its input `prev`, the two-sided quotient rq = y^T K x / y^T x and its
+    first-order error bound |r| |l| / |y^T x| (K x = SHIFT x + prev, as the step solved
+    (K - SHIFT) x = prev)."""
+    scale = 1.0 / np.sqrt(np.einsum("kpi,kpi->kp", v, v))[..., None]
+    v = v * scale
+    kv = SHIFT * v + prev * scale  # (K x, K^T y)
+    yx = np.einsum("pi,pi->p", v[1], v[0])
+    rq = np.einsum("pi,pi->p", v[1], kv[0]) / yx
+    res = kv - rq[:, None] * v
+    norms = np.einsum("kpi,kpi->kp", res, res)
+    return v, rq, np.sqrt(norms[0] * norms[1]) / np.abs(yx)
+
+
+def converged(rq, bound, rtol: float, xp=np):
+    """The convergence test of the eigenvalue iteration (the kernel's ``solve_group``):
+    the first-order error bound is <= rtol |rq| and rq >= SHIFT. `xp` is numpy for arrays,
+    :mod:`math` (or anything with ``fabs``) for Python floats.
+
+    >>> converged(10.0, 1e-14, 1e-14, math), converged(5.0, 0.0, 1e-14, math)
+    (True, False)
+    """
+    if xp is np:
+        return (bound <= rtol * np.abs(rq)) & (rq >= SHIFT)
+    return bound <= rtol * xp.fabs(rq) and rq >= SHIFT
 
 
 @lru_cache(maxsize=64)
@@ -467,7 +535,7 @@ def _rayleigh_sums(op: FamilyOperator, twist: NDArray[np.float64], nu: NDArray[n
         for e, f, idx, blocks in _term_blocks(op.n, op.family, dtype):
             px = (x[:, cols[f]] @ blocks).reshape(x.shape[0], len(idx), -1)
             terms[:, idx] = np.einsum("pj,pij->pi", y[:, cols[e]], px)
-    coef = term_coefficients(twist.astype(dtype), nu.astype(dtype))
+    coef = _coefficients(twist.astype(dtype), nu.astype(dtype))
     return ((coef * terms).sum(axis=1) / terms[:, _MASS_TERMS].sum(axis=1)).astype(np.float64)
 
 
@@ -539,8 +607,6 @@ def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np
     """
     if kernel_out is not None:
         kernel_out[:] = False
-    if twist.size <= SMALL_BATCH and n <= SMALL_DEGREE:  # the full eig is cheaper here
-        return solve_family_eig(n, family, twist, nu)
     mf = modal_family(n, family)
     op = mf.op
     try:
@@ -601,3 +667,106 @@ def lowest_gap(n: int, family: str, twist: float, nu: float) -> tuple[float, flo
     if not lam.size:
         return math.inf, math.inf
     return float(lam[0]), float((lam[1] - lam[0]) / lam[0]) if lam.size > 1 else math.inf
+
+
+class PointsSolution(NamedTuple):
+    """Both families at points of one degree: lambda = pi^2 p and the mode's tail, each
+    (2, points) (symmetric first; the antisymmetric tail inf where that family was only shown
+    above the symmetric one), and True where the C kernel computed both families."""
+
+    lam: NDArray[np.float64]
+    tails: NDArray[np.float64]
+    by_kernel: NDArray[np.bool_]
+
+
+def solve_points(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol: float
+                 ) -> PointsSolution:
+    """Both families' lowest eigenvalue and tail at flat arrays of points of degree n, by the
+    engine: the C kernel one lane at a time up to :func:`.tuning.few_points_limit` points
+    (``modal_points``), else 32 lanes a family (:func:`solve_family`); without the kernel the
+    numpy reference (:func:`solve_family`). The symmetric family first, the antisymmetric one
+    then only until it is shown above (1 + CLOSE_REL) times the symmetric eigenvalue. Points
+    the one-lane kernel does not accept are solved by :func:`solve_family`."""
+    lam, tails = np.empty((2, twist.size)), np.empty((2, twist.size))
+    by_kernel = np.zeros(twist.size, dtype=bool)
+    rest = np.arange(twist.size)
+    if modal_kernel.available() and twist.size <= few_points_limit(n):
+        lam1, tails1, status = _solve_lanes(n, twist, nu, rtol)
+        lam[:], tails[:] = lam1.T, tails1.T
+        by_kernel = _accepted(status)
+        rest = np.flatnonzero(~by_kernel)
+        if not rest.size:
+            return PointsSolution(lam, tails, by_kernel)
+    used = np.empty((2, rest.size), dtype=bool)
+    tw, nv = twist[rest], nu[rest]
+    lam[0, rest], tails[0, rest], _ = solve_family(n, FAMILIES[0], tw, nv, rtol=rtol,
+                                                   kernel_out=used[0])
+    lam[1, rest], tails[1, rest], _ = solve_family(n, FAMILIES[1], tw, nv, rtol=rtol,
+                                                   ceiling=lam[0, rest] * (1 + CLOSE_REL),
+                                                   kernel_out=used[1])
+    by_kernel[rest] = used.all(axis=0)
+    return PointsSolution(lam, tails, by_kernel)
+
+
+def solve_point(n: int, twist: float, nu: float, rtol: float
+                ) -> tuple[list[float], list[float], bool]:
+    """:func:`solve_points` for one point given as Python floats, without a batch's arrays
+    where the kernel is installed (a scalar call's cost is mostly numpy's per-call overhead):
+    lambda and the tail of both families as lists [symmetric, antisymmetric], and whether the
+    kernel computed them.
+
+    >>> lam, tails, _ = solve_point(22, 3.0, 1.5, 1e-14)
+    >>> round(min(lam) / 9.869604401089358, 9)
+    1.078092611
+    """
+    if modal_kernel.available() and n <= LEAN_MAX_DEGREE:
+        dtype = np.longdouble if _extended(twist, n, rtol) else float
+        om, nv = dtype(twist), dtype(nu)
+        lam1, tails1, status = _kernel_points(
+            n, np.array([[t.coefficient(om, nv) for t in INST1]], dtype=dtype), rtol,
+            loose_quotient(rtol, n))
+        if _accepted(status)[0]:
+            return lam1[0].tolist(), tails1[0].tolist(), True
+    sol = solve_points(n, np.array([twist]), np.array([nu]), rtol)
+    return sol.lam[:, 0].tolist(), sol.tails[:, 0].tolist(), bool(sol.by_kernel[0])
+
+
+def _solve_lanes(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol: float
+                 ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.int32]]:
+    """lambda, tails and status (points, 2) of both families by the C kernel one point at a
+    time (``modal_points``: the 32-lane iteration on one lane; the antisymmetric family stopped
+    where shown above the symmetric one, its tail then inf). At |Omega| > LONG_TWIST and tight
+    tol the pencil's quotient is summed in double-double, from the coefficients in extended
+    precision (as :func:`pencil_rayleigh_quotient`, which sums in long double)."""
+    loose, big = loose_quotient(rtol, n), _extended(twist, n, rtol)
+    lam, tails = np.empty((twist.size, 2)), np.empty((twist.size, 2))
+    status = np.empty((twist.size, 2), dtype=np.int32)
+    for sel, dtype in ((np.flatnonzero(~big), float), (np.flatnonzero(big), np.longdouble)):
+        if sel.size:
+            coef = term_coefficients(twist[sel].astype(dtype), nu[sel].astype(dtype))
+            lam[sel], tails[sel], status[sel] = _kernel_points(n, coef, rtol, loose)
+    return lam, tails, status
+
+
+def _extended(twist, n: int, rtol: float):
+    """Where the pencil's quotient is summed in extended precision: |Omega| > LONG_TWIST at a
+    tight tol (a bool, or a bool array for an array `twist`)."""
+    return (np.abs(twist) > LONG_TWIST) & (not loose_quotient(rtol, n))
+
+
+def _kernel_points(n: int, coef: NDArray, rtol: float, loose: bool
+                   ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.int32]]:
+    """:func:`.modal_kernel.modal_points` at points given by their INST1 coefficients (points,
+    terms): in long double, the quotient is summed in double-double."""
+    families, _arrays = kernel_families(n)  # _arrays: what the structs point to, kept alive
+    hi = coef.astype(float)
+    return modal_kernel.modal_points(
+        families, hi, shift=SHIFT, rtol=rtol, first=first_check(rtol, False),
+        max_steps=POWER_STEPS, backward_tol=BACKWARD_TOL, close_rel=CLOSE_REL, loose=loose,
+        coef_lo=None if coef.dtype == np.float64 else (coef - hi).astype(float))
+
+
+def _accepted(status: NDArray[np.int32]) -> NDArray[np.bool_]:
+    """Both families accepted: the symmetric converged, the antisymmetric converged or above."""
+    return (status[:, 0] == modal_kernel.CONVERGED) & (
+        (status[:, 1] == modal_kernel.CONVERGED) | (status[:, 1] == modal_kernel.ABOVE))

@@ -33,10 +33,10 @@ from __future__ import annotations
 
 from typing import NamedTuple
 
-__all__ = ["BLOCK_ENTRIES", "CALIBRATED_TOL", "CHUNK", "FEW_POINTS", "FIRST_CHECK", "FIXED_COST",
-           "KERNEL_MAX_SCHUR", "LEAN_FACTOR", "LEAN_MAX_DEGREE", "LONG_TWIST", "LOOSE_DEGREE",
-           "LOOSE_FIRST_CHECK", "LOOSE_RTOL", "POINT_COST", "POWER_RTOL", "POWER_STEPS",
-           "SMALL_BATCH", "SMALL_DEGREE", "SQUARING_MAX", "TRUNCATION_SHARE", "SolverSettings",
+__all__ = ["BLOCK_ENTRIES", "CALIBRATED_TOL", "CHUNK", "DENSE_ENTRIES", "FEW_POINTS", "FIRST_CHECK",
+           "FIXED_COST", "KERNEL_MAX_SCHUR", "LEAN_FACTOR", "LEAN_MAX_DEGREE", "LONG_TWIST",
+           "LOOSE_DEGREE", "LOOSE_FIRST_CHECK", "LOOSE_RTOL", "POINT_COST", "POWER_RTOL",
+           "POWER_STEPS", "TRUNCATION_SHARE", "SolverSettings",
            "few_points_limit", "first_check", "iteration_allowance", "iteration_rtol",
            "loose_quotient", "power_steps", "solver_settings"]
 
@@ -140,30 +140,26 @@ def solver_settings(tol: float) -> SolverSettings:
 #: n <= ~128); above, its unblocked loops lose to LAPACK's blocked ones (kernel / numpy time
 #: 0.50 at n = 128, 0.8 at 160, 1.2 at 256). ``python tests/bench/kernel_range.py``, part 1.
 KERNEL_MAX_SCHUR = 64
-#: Up to SMALL_BATCH points per degree and family, and degree SMALL_DEGREE, the batched solve
-#: of a family is the full ``eig`` (the iteration's fixed cost is larger there: 0.13 against
-#: 0.37 ms for one point at n = 20, about equal at n = 40-45). Reached only by points the
-#: few-point path hands back. ``python tests/bench/tuning_crossovers.py``, part 1.
-SMALL_BATCH, SMALL_DEGREE = 4, 40
-#: Up to FEW_POINTS points of one degree n <= 30 the few-point path (:mod:`.few_points`) is
-#: used, above it the batched engine; its cost grows faster with n, so the limit falls as n^-3
-#: above n = 30 (:func:`few_points_limit`). ``python tests/bench/kernel_range.py``, part 2.
+#: Up to FEW_POINTS points of one degree n <= 30 the kernel solves them one lane at a time
+#: (``modal_points``, both families per point), above it 32 lanes at a time (``modal_lowest``,
+#: a family per call); the one-lane cost grows faster with n, so the limit falls as n^-3 above
+#: n = 30 (:func:`few_points_limit`). ``python tests/bench/kernel_range.py``, part 2.
 FEW_POINTS = 12
-#: Above this degree the batched engine answers even a single point: the dense pencils of the
-#: few-point numpy path cost ~336 (n - 1)^2 bytes each in its cache (88 MB at n = 512) and are
-#: slower there (4 points: n = 56 about equal, n = 128 2.4 times slower).
-#: ``python tests/bench/tuning_crossovers.py``, part 2.
+#: Above this degree 32 lanes answer even a single point (one lane: n = 56 about equal, slower
+#: above). ``python tests/bench/tuning_crossovers.py``, part 2.
 LEAN_MAX_DEGREE = 64
-#: Up to this size m the numpy few-point path takes the powers of M by squaring (a few matrix
-#: products), above it by products with the vectors: a squaring costs ~m^3, a step ~m^2 but
-#: ~1 us of call overhead. ``python tests/bench/tuning_crossovers.py``, part 3.
-SQUARING_MAX = 27
+#: Up to this many matrix entries (points m^2, m = n - 1 unknowns) the numpy reference applies
+#: (K - SHIFT)^{-1} as dense inverses (one batched product a step), above it through the Schur
+#: complement (~16 calls a step, less arithmetic): with a few points numpy's per-call cost
+#: decides (dense / Schur time 0.6-0.7 for 1-16 points at n = 22, 0.73 for 4 and 1.1 for 8
+#: at n = 40). ``python tests/bench/tuning_crossovers.py``, part 1.
+DENSE_ENTRIES = 8_000
 #: The cost model of degree pooling (:func:`.collocation.solve_degrees`): a batched solve of
 #: both families costs FIXED_COST seconds whatever its size plus POINT_COST (n/22)^2 a point;
-#: the few-point path has no fixed cost and costs LEAN_FACTOR times as much a point. Only the
-#: ratios decide. ``python -m pytest -m bench -k pooling_cost_model`` measures the first two
-#: (with the kernel 0.30-0.62 ms and 2.9-5.6 us); LEAN_FACTOR is the dense pencils' ratio
-#: (~8), conservative for the kernel's one-lane path (~3, ``tests/bench/kernel_range.py``).
+#: one lane (:func:`few_points_limit`) has no fixed cost and costs LEAN_FACTOR times as much a
+#: point. Only the ratios decide. ``python -m pytest -m bench -k pooling_cost_model`` measures
+#: the first two (with the kernel 0.30-0.62 ms and 2.9-5.6 us); LEAN_FACTOR is conservative for
+#: the kernel's one lane against its 32 (~3, ``tests/bench/kernel_range.py``).
 FIXED_COST, POINT_COST, LEAN_FACTOR = 0.5e-3, 4.6e-6, 8.0
 #: :func:`.stacked_inverse.stacked_inverse` (the numpy engine's Schur inverses) uses the block
 #: recursion for stacks of at least this many matrix entries (count k^2), LAPACK below: the
@@ -178,7 +174,7 @@ CHUNK = 1 << 12
 
 
 def few_points_limit(n: int) -> int:
-    """Most points of degree n handed to the few-point path (:mod:`.few_points`), none above
+    """Most points of degree n the kernel solves one lane at a time, none above
     :data:`LEAN_MAX_DEGREE`: FEW_POINTS up to n = 30, falling as n^-3 above (at least 4).
 
     >>> few_points_limit(22), few_points_limit(40), few_points_limit(66)
