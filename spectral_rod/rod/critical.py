@@ -162,14 +162,15 @@ def warn_unconverged(where: str, converged: NDArray[np.bool_], res: PointResults
 
 def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: object,
                full_output: object):
-    """The scalar fast path: p* (or its CriticalLoad) for one point given as Python or numpy
-    floats on the collocation or the large-twist route, or None wherever the general path must
-    answer (any other input, the increment route). A forced degree, or an estimate that misses tol (tol below the round-off
-    floor), stays here: warned and flagged as the general path does (one call must not cost
-    the array path's several times for it). The computation is the general path's for one
-    point, without its array bookkeeping: collocation by the driver's degree loop for one point
-    (:func:`spectral_rod.rod.collocation.driver.collocation_point`), the large-twist route
-    :func:`_one_characteristic`; ``python -m pytest -m bench`` measures both scalar loops."""
+    """The scalar fast path: p* (or its CriticalLoad) for one point given as Python or numpy floats
+    on the collocation or the large-twist route, or None wherever the general path must answer
+    (any other input, the increment route). A forced degree, or an estimate that misses tol (tol
+    below the round-off floor), stays here: warned and flagged as the general path does (one
+    call must not cost the array path's several times for it). The computation is the general
+    path's for one point, without its array bookkeeping: collocation by the driver's degree loop
+    for one point (:func:`spectral_rod.rod.collocation.driver.collocation_point`), the large-
+    twist route :func:`_one_characteristic`; ``python -m pytest -m bench`` measures both scalar
+    loops."""
     if not (isinstance(twist_angle, (float, int)) and isinstance(nu, (float, int))
             and isinstance(tol, float) and _lean_degree(n)
             and method in ("auto", "collocation", "characteristic")

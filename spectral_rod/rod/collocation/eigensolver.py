@@ -311,8 +311,7 @@ class _DenseShifted:
         shifted[:, e, e], shifted[:, s, s] = 1.0 / pt.r_e, pt.d_s
         shifted[:, pt.elim, pt.kept] = pt.a[:, :, None] * pt.g_es
         shifted[:, pt.kept, pt.elim] = pt.b[:, :, None] * pt.g_se
-        inverse = np.linalg.inv(shifted)  # LinAlgError if singular
-        return cls(np.stack((inverse, np.swapaxes(inverse, 1, 2))))
+        return cls(_inverse_pair(shifted))
 
     def take(self, idx: NDArray[np.int_]) -> _DenseShifted:
         """The points `idx` only."""
@@ -321,6 +320,23 @@ class _DenseShifted:
     def solve_pair(self, v: NDArray[np.float64]) -> NDArray[np.float64]:
         """As :meth:`_ShiftedModal.solve_pair`."""
         return np.matmul(self.pair, v[..., None])[..., 0]
+
+
+def _inverse_pair(mats: NDArray[np.float64]) -> NDArray[np.float64]:
+    """(M^{-1}, M^{-T}) stacked, (2, P, m, m), by LAPACK's pivoted LU (``dgetrf``, ``dgetri``
+    called directly: numpy.linalg.inv's wrapper costs several times their work at m ~ 20);
+    LinAlgError if some M is singular (SHIFT an eigenvalue)."""
+    from scipy.linalg.lapack import dgetrf, dgetri
+
+    pair = np.empty((2, *mats.shape))
+    for j, mat in enumerate(mats):
+        lu, piv, info = dgetrf(mat)
+        if info == 0:
+            inverse, info = dgetri(lu, piv, overwrite_lu=1)
+        if info != 0:
+            raise np.linalg.LinAlgError("K - SHIFT is singular at a point")
+        pair[0, j], pair[1, j] = inverse, inverse.T
+    return pair
 
 
 def _shifted(mf: ModalFamily, pt: ModalParts) -> _ShiftedModal | _DenseShifted:
@@ -526,6 +542,11 @@ def _rayleigh_sums(op: FamilyOperator, twist: NDArray[np.float64], nu: NDArray[n
     if dtype is np.longdouble and modal_kernel.available():
         hi, lo = modal_kernel.pencil_terms(*_term_matrices(op.n, op.family), right, left)
         terms = hi.astype(dtype) + lo.astype(dtype)
+    elif dtype is np.float64 and right.shape[0] * right.shape[1] ** 2 <= DENSE_ENTRIES:
+        # a few points: every term as a full (m, m) matrix, two calls instead of ~4 a block
+        pieces = _dense_terms(op.n, op.family)
+        px = (right @ pieces).reshape(right.shape[0], len(INST1), -1)
+        terms = np.einsum("pj,pij->pi", left, px)
     else:
         k1 = op.sizes[0]
         cols = (slice(0, k1), slice(k1, None))
@@ -537,6 +558,15 @@ def _rayleigh_sums(op: FamilyOperator, twist: NDArray[np.float64], nu: NDArray[n
             terms[:, idx] = np.einsum("pj,pij->pi", y[:, cols[e]], px)
     coef = _coefficients(twist.astype(dtype), nu.astype(dtype))
     return ((coef * terms).sum(axis=1) / terms[:, _MASS_TERMS].sum(axis=1)).astype(np.float64)
+
+
+@lru_cache(maxsize=128)
+def _dense_terms(n: int, family: str) -> NDArray[np.float64]:
+    """The terms P_i of :data:`INST1` as full (m, m) matrices, laid out (m, terms m) so that
+    x @ it gives every P_i x (for :func:`_rayleigh_sums` at a few points)."""
+    op = family_operator(n, family)
+    return np.ascontiguousarray(np.swapaxes(op.pieces, 1, 2).transpose(1, 0, 2).reshape(
+        op.pieces.shape[1], -1))
 
 
 @lru_cache(maxsize=128)
@@ -619,14 +649,20 @@ def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np
     vec = mf.right_vectors(z)
     # the eigenvalue from the O(1) pencil itself: the two-sided Rayleigh quotient (its error is
     # the product of the vectors' errors; K carries round-off ~ eps n^4 in its diagonal)
-    loose = loose_quotient(rtol, n)
-    good = np.flatnonzero(ok) if not loose else np.zeros(0, dtype=int)
-    lam[good] = pencil_rayleigh_quotient(op, twist[good], nu[good], mf.left_vectors(w[good]),
-                                         vec[good])
-    bad = np.flatnonzero(~(ok | above))
     tails = np.full(twist.size, np.inf)
-    resolved = np.flatnonzero(~above & np.isfinite(lam) & (ok | above))
-    tails[resolved] = mode_tails(op, vec[resolved])
+    if ok.all():  # the common case, without index arrays (a scalar call's cost is per call)
+        if not loose_quotient(rtol, n):
+            lam = pencil_rayleigh_quotient(op, twist, nu, mf.left_vectors(w), vec)
+        tails[:] = mode_tails(op, vec)
+        return lam, tails, vec
+    good = np.flatnonzero(ok)
+    if good.size and not loose_quotient(rtol, n):
+        lam[good] = pencil_rayleigh_quotient(op, twist[good], nu[good],
+                                             mf.left_vectors(w[good]), vec[good])
+    bad = np.flatnonzero(~(ok | above))
+    resolved = good[np.isfinite(lam[good])]
+    if resolved.size:
+        tails[resolved] = mode_tails(op, vec[resolved])
     if bad.size:  # the full eig with the rule decides
         if kernel_out is not None:
             kernel_out[bad] = False
