@@ -20,7 +20,8 @@ import itertools
 
 import numpy as np
 
-from spectral_rod.rod.collocation.driver import _solve_points
+from spectral_rod.rod.collocation.driver import pick_family
+from spectral_rod.rod.collocation.eigensolver import solve_points
 from spectral_rod.rod.collocation.resolution import TRUNCATION_SHARE, truncation_error
 
 TOLS = 10.0 ** -np.arange(2, 13)
@@ -32,7 +33,7 @@ def tail_parts() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     (degrees x points)."""
     om, nu = (a.ravel() for a in np.meshgrid(np.arange(50.0), [1.05, 1.5, 2.0, 4.0, 10.0, 100.0]))
     degrees = np.arange(8, 124, 2)
-    part = np.array([truncation_error(_solve_points(om, nu, np.full(om.size, n), 1e-14)[2])
+    part = np.array([truncation_error(pick_family(*solve_points(n, om, nu, 1e-14)[:2])[2])
                      for n in degrees])
     return om, degrees, part
 

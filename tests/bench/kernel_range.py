@@ -6,9 +6,9 @@
    iteration (the kernel switched off), per degree n and mode family, on random points
    (Omega(L) up to 1.8 (n - 16), nu in [1.1, 10]) at tol 1e-12, with the limit lifted; the
    ratio kernel / numpy time.
-2. ``tuning.few_points_limit``: the few-point path (the kernel one point at a time) against
-   the batched engine, ``_solve_points`` forced to either, on k random Figure 1 points at
-   degree n; the cheaper one.
+2. ``tuning.few_points_limit``: the kernel one point at a time (one lane) against 32 lanes,
+   ``eigensolver.solve_points`` forced to either, on k random Figure 1 points at degree n;
+   the cheaper one.
 3. The pencil's Rayleigh-quotient terms at |Omega(L)| > LONG_TWIST (``eigensolver._rayleigh_sums``
    in ``longdouble``): the kernel's double-double products against numpy's ``longdouble`` ones,
    us a point on 500 random points, n = 24, 44, 56.
@@ -24,10 +24,10 @@ from alternatives import minima
 
 from spectral_rod import load_figure1
 from spectral_rod._blas_threads import one_blas_thread
-from spectral_rod.rod.collocation import driver as C
 from spectral_rod.rod.collocation import eigensolver as E
 from spectral_rod.rod.collocation import modal_kernel
 from spectral_rod.rod.collocation.discretisation import family_operator
+from spectral_rod.rod.collocation.tuning import iteration_rtol
 
 
 def numpy_only(fn):
@@ -70,22 +70,23 @@ def few_points_crossover() -> None:
     d = load_figure1()
     tw_all, nv_all = np.abs(d["twist_angle"].to_numpy()), d["nu"].to_numpy()
     rng = np.random.default_rng(0)
-    limit = C.few_points_limit
-    print("few-point path / batched engine, us a point (Figure 1 points at degree n)")
+    limit = E.few_points_limit
+    rtol = iteration_rtol(1e-12)
+    print("one lane / 32 lanes, us a point (Figure 1 points at degree n)")
     try:
         for n in (16, 22, 30, 40, 56):
             for k in (8, 12, 16, 24, 32, 48):
                 idx = rng.choice(tw_all.size, k, replace=False)
-                tw, nv, deg = tw_all[idx], nv_all[idx], np.full(k, n)
+                tw, nv = tw_all[idx], nv_all[idx]
 
-                def solve(cap, tw=tw, nv=nv, deg=deg):
-                    C.few_points_limit = lambda n, cap=cap: cap
-                    C._solve_points(tw, nv, deg)
+                def solve(cap, n=n, tw=tw, nv=nv):
+                    E.few_points_limit = lambda _n, cap=cap: cap
+                    E.solve_points(n, tw, nv, rtol)
                 few, batched = minima([lambda: solve(10**6), lambda: solve(0)], 30)
                 print(f"  n = {n}, {k:2d} points: {few / k * 1e6:6.1f} / {batched / k * 1e6:6.1f}"
-                      f"  -> {'few-point' if few < batched else 'batched'}")
+                      f"  -> {'one lane' if few < batched else '32 lanes'}")
     finally:
-        C.few_points_limit = limit
+        E.few_points_limit = limit
 
 
 def extended_quotient() -> None:

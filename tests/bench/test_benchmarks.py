@@ -701,7 +701,8 @@ def test_pooling_cost_model(benchmark, bench_registry):
     # collocation.FIXED_COST and POINT_COST: a batched solve of 30 and of 300 points of one
     # degree gives the fixed cost and the cost a point; the model is used through their ratio
     from spectral_rod._blas_threads import one_blas_thread
-    from spectral_rod.rod.collocation.driver import FIXED_COST, POINT_COST, _solve_points
+    from spectral_rod.rod.collocation.driver import FIXED_COST, POINT_COST
+    from spectral_rod.rod.collocation.eigensolver import solve_points
 
     rng = np.random.default_rng(2)
     measured = {}
@@ -710,8 +711,7 @@ def test_pooling_cost_model(benchmark, bench_registry):
         for size in (30, 300):
             tw = rng.uniform(0, max(1.0, 1.8 * (n - 16)), size)
             nv = rng.uniform(1.1, 10.0, size)
-            deg = np.full(size, n)
-            solves.append(lambda tw=tw, nv=nv, deg=deg: _solve_points(tw, nv, deg))
+            solves.append(lambda n=n, tw=tw, nv=nv: solve_points(n, tw, nv, 1e-14))
         # The fixed cost is a difference of two timings, so both sizes are timed next to each
         # other in each round and the median over rounds is taken: with the minimum of each
         # size over all rounds, a change of load between them once measured 5.02 ms + 9.1 us at

@@ -27,34 +27,42 @@ The modules
 * :mod:`.discretisation` -- Eq. ``inst1`` declared term by term and its collocation pencil per
   mode family;
 * :mod:`.resolution` -- the a priori degree, the mode's coefficient tail and the error model;
-* :mod:`.eigensolver` -- the lowest physical eigenpair for batches (modal basis, Schur
-  complement, two-sided shift-and-invert iteration): the numpy reference of the kernel, and
-  the full ``eig`` with the physical-eigenvalue rule, the test reference and last resort;
+* :mod:`.eigensolver` -- the engine's entry points for points of one degree
+  (:func:`.eigensolver.solve_points`, :func:`.eigensolver.solve_point` for one point in Python
+  floats): both families' lowest physical eigenvalue (modal basis, Schur complement, two-sided
+  shift-and-invert iteration), by the C kernel where it is built, else by this module's numpy
+  reference of it; and the full ``eig`` with the physical-eigenvalue rule, the test reference,
+  which also decides where the iteration is rejected;
 * :mod:`.modal_kernel` -- the engine: that iteration in C, 32 points side by side or one point
-  at a time, and the pencil's Rayleigh-quotient terms in double-double; its contract is
-  ``_modal_kernel.h`` (structs, INFO returns, an ABI version checked at load);
+  at a time (one code, ``solve_group``), the pencil's Rayleigh quotient and the mode's tail; its
+  contract is ``_modal_kernel.h`` (structs, INFO returns, an ABI version checked at load);
   :func:`.modal_kernel.engine_info` reports what runs here;
-* :mod:`.few_points` -- the eigenvalue for one point or a few: the kernel one lane at a time,
-  or without it dense pencils in numpy (kept for the no-kernel scalar and small-batch rows);
 * :mod:`.stacked_inverse` -- the numpy reference's Schur inverses for large stacks;
 * :mod:`.tuning` -- every speed threshold and cost-model constant, and
   :func:`.tuning.solver_settings`, the one map from ``tol`` to the solver's settings;
-* :mod:`.collocation` -- the one driver: p* for any call shape with automatic resolution (its
-  degree loop; :func:`.collocation.collocation_point` is its one-point path).
+* :mod:`.driver` -- the one driver: p* for any call shape with automatic resolution, by one
+  degree loop written against a namespace (arrays, or one point in Python floats), and the
+  family rule :func:`.driver.pick_family`.
 
-Which engine answers (decided in :mod:`.collocation` by the constants of :mod:`.tuning`):
+Who decides what:
 
-==================================  ===================================  ======================
-call shape                          with the C kernel                    without it
-==================================  ===================================  ======================
-a scalar call, <= few_points_limit  kernel, one lane (``modal_points``)  dense pencils (numpy)
-  points of a degree (n <= 64)
-more points of a degree, n <= 128   kernel, 32 lanes (``modal_lowest``)  numpy reference
-n > 128 (Schur block > 64)          numpy reference                      numpy reference
-a point the kernel rejects          numpy reference (pivoted inverse)    --
-not converged, or <= 4 points of a  full ``eig`` with the rule           full ``eig``
-  degree <= 40 in the batched path
-==================================  ===================================  ======================
+==========================  ===========================================================
+decision                    owner
+==========================  ===========================================================
+the method per point        :mod:`spectral_rod.rod.router`
+validation, bounds, warning :mod:`spectral_rod.rod.critical` (calls the driver once)
+degree, raise, estimate     :func:`.driver._degree_loop` with the rules of :mod:`.resolution`
+which family is p*          :func:`.driver.pick_family`
+one lane or 32 lanes        :func:`.eigensolver.solve_points` (:func:`.tuning.few_points_limit`)
+kernel or numpy reference   :func:`.eigensolver.lowest_eigenpair` (built, KERNEL_MAX_SCHUR,
+                            a point the kernel rejects)
+dense or Schur (numpy)      :func:`.eigensolver._shifted` (:data:`.tuning.DENSE_ENTRIES`)
+converged or not            :func:`.eigensolver.converged` (C: ``solve_group``)
+the eigenvalue              :func:`.eigensolver.pencil_rayleigh_quotient` (C:
+                            ``pencil_quotient``; precision a parameter)
+the mode's tail             :func:`.resolution.mode_tails` (C: ``family_point``)
+the full ``eig``            where the iteration is rejected: the reference decides
+==========================  ===========================================================
 
 ``CriticalLoad.engine`` records per point whether the kernel computed it.
 """

@@ -1,15 +1,24 @@
-r"""The lowest physical eigenpair of the collocation pencil of Eq. ``inst1``, fast.
+r"""The lowest physical eigenpair of the collocation pencil of Eq. ``inst1``, fast: the engine's
+entry points (:func:`solve_points`, :func:`solve_point`) and its numpy reference.
 
 Only the lowest eigenvalue is needed and it is >= pi^2 (:mod:`spectral_rod.rod.families`). The
 uncoupled operators -d^2/ds^2 of each field are diagonalised once per degree
 (:class:`ModalFamily`); in that basis the family is K z = lambda z with K diagonal plus an
 Omega-proportional coupling, so K - SHIFT is inverted through a Schur complement of the smaller
-block, for all points of a degree at once (:class:`_ShiftedModal`). Shift-and-invert iteration
-on right and left vectors (:func:`lowest_eigenpair`, contraction 0.01-0.2 per step on
-Figure 1's range; run by the C kernel of :mod:`.modal_kernel` where it is built, this module's
-numpy code being its reference and fallback) gives the eigenvectors, and the eigenvalue is
-the two-sided Rayleigh quotient of the O(1) pencil (A, B) itself (error = product of the two
-vectors' errors).
+block, for all points of a degree at once (:class:`_ShiftedModal`; for a few points as dense
+inverses, :class:`_DenseShifted`). Shift-and-invert iteration on right and left vectors
+(:func:`lowest_eigenpair`, contraction 0.01-0.2 per step on Figure 1's range) gives the
+eigenvectors, and the eigenvalue is the two-sided Rayleigh quotient of the O(1) pencil (A, B)
+itself (error = product of the two vectors' errors).
+
+One algorithm, two implementations: the C kernel of :mod:`.modal_kernel` (the engine: 32
+points side by side, or one point at a time with the same code, ``solve_group``) and this
+module's numpy code (its executable reference, and the engine where the kernel is not built).
+Each rule has one numpy function mirroring the kernel's: the convergence test
+:func:`converged` (with :func:`_lanes_test`, C ``lanes_test``), the pencil's quotient
+:func:`pencil_rayleigh_quotient` (C ``pencil_quotient``, its precision a parameter) and the
+tail :func:`.resolution.mode_tails` (C ``family_point``); ``tests/test_modal_kernel.py``,
+``tests/test_engine_contract.py`` and ``tests/test_speed_paths.py`` compare the two.
 
 Choosing the physical eigenvalue (the rule)
 -------------------------------------------
