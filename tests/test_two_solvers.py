@@ -19,7 +19,7 @@ from spectral_rod.rod.characteristic import (
 )
 from spectral_rod.rod.characteristic_mode import boundary_determinant_4x4, characteristic_mode
 from spectral_rod.rod.collocation import collocation_family_load
-from spectral_rod.rod.collocation.eigensolver import solve_family
+from spectral_rod.rod.collocation.eigensolver import solve_family, solve_family_eig
 from spectral_rod.rod.critical import critical_load
 from spectral_rod.rod.crossings import family_crossing, family_slope
 
@@ -78,8 +78,9 @@ def test_family_root_of_a_pair_split_by_small_twist(twist, nu, p_max):
     """At nu near 4 the antisymmetric family's two lowest Euler loads (4 and nu) coincide, and a
     small twist splits them into two roots inside one scan step: the scan raised
     RootNotFoundError, or with p_max = 20 silently returned the next root, 16. The reference is
-    the family's collocation eigenvalue (another formulation)."""
-    lam, _, _ = solve_family(24, "antisymmetric", np.array([twist]), np.array([nu]))
+    the family's collocation eigenvalue (another formulation) by the full eig, which needs no
+    gap to the next eigenvalue (the iteration does)."""
+    lam, _, _ = solve_family_eig(24, "antisymmetric", np.array([twist]), np.array([nu]))
     r = family_critical_load("antisymmetric", twist, nu, p_max=p_max)
     assert float(r.p_star) == pytest.approx(lam[0] / math.pi**2, rel=1e-13)
     assert 1 <= r.p_star <= nu
@@ -119,7 +120,7 @@ def test_split_pair_root_is_linear_in_tiny_twist():
     to the O(Omega) correction (measured 1.7e-7 between 1e-6 and 1e-10)."""
     c = [(4 - family_critical_load("antisymmetric", om, 4.0, dps=80).p_star) / om
          for om in (1e-6, 1e-20, 1e-60)]
-    lam, _, _ = solve_family(24, "antisymmetric", np.array([1e-6]), np.array([4.0]))
+    lam, _, _ = solve_family_eig(24, "antisymmetric", np.array([1e-6]), np.array([4.0]))
     assert float(c[0]) == pytest.approx((4 - lam[0] / math.pi**2) / 1e-6, rel=1e-8)
     for ci in c[1:]:
         assert abs(ci / c[0] - 1) <= 1e-6
