@@ -445,8 +445,9 @@ def test_lean_loose_eigenvalue_is_the_discrete_eigenvalue_within_the_iteration_t
     the figure the docstring quotes, on Figure 1's and random points at their a priori degree
     and n = 64."""
     from spectral_rod import load_figure1
+    from spectral_rod.rod.collocation.arithmetic import FLOATS
     from spectral_rod.rod.collocation.eigensolver import solve_family_eig
-    from spectral_rod.rod.collocation.resolution import initial_degree_scalar
+    from spectral_rod.rod.collocation.resolution import initial_degree
 
     d = load_figure1()
     rng = np.random.default_rng(7)
@@ -454,7 +455,7 @@ def test_lean_loose_eigenvalue_is_the_discrete_eigenvalue_within_the_iteration_t
     nus = np.concatenate([d["nu"].to_numpy()[::40], 1 + 10 ** rng.uniform(-3, 2, 40)])
     worst, accepted, families = 0.0, 0, 0
     for tw, nu in zip(om, nus, strict=True):
-        for n in sorted({initial_degree_scalar(float(tw), 1e-6), 64}):
+        for n in sorted({initial_degree(float(tw), 1e-6, FLOATS), 64}):
             lam, tails, ok = solve_one(n, float(tw), float(nu), 1e-8)
             ref = [solve_family_eig(n, f, np.array([tw]), np.array([nu]))[0][0]
                    for f in ("symmetric", "antisymmetric")]

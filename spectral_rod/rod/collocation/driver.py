@@ -24,6 +24,7 @@ from numpy.typing import NDArray
 from spectral_rod._blas_threads import one_blas_thread
 from spectral_rod._validation import check_resolution, scalar_nu, scalar_twist
 from spectral_rod.rod.collocation import modal_kernel
+from spectral_rod.rod.collocation.arithmetic import FLOATS
 from spectral_rod.rod.collocation.discretisation import family_operator
 from spectral_rod.rod.collocation.eigensolver import (
     ISOLATION_GAP,
@@ -36,13 +37,10 @@ from spectral_rod.rod.collocation.resolution import (
     N_MAX,
     N_MIN,
     error_estimate,
-    error_estimate_scalar,
     initial_degree,
-    initial_degree_scalar,
     raised_degree,
     roundoff_floor,
     shortfall,
-    shortfall_scalar,
 )
 from spectral_rod.rod.collocation.tuning import (
     FEW_POINTS,
@@ -199,9 +197,9 @@ def collocation_point(twist: float, nu: float, tol: float, n: int | None = None
     """
     rtol, allowance = iteration_rtol(tol), iteration_allowance(tol)
     if n is None:
-        deg = initial_degree_scalar(twist, tol)
+        deg = initial_degree(twist, tol, FLOATS)
         # no raise where round-off alone decides (the array path's rule)
-        raise_degree = error_estimate_scalar(0.0, twist) < tol
+        raise_degree = roundoff_floor(twist, 0, FLOATS) < tol
     else:
         deg, raise_degree = n, False
     while True:  # the degree loop of _collocation_critical_load, for one point
@@ -215,11 +213,11 @@ def collocation_point(twist: float, nu: float, tol: float, n: int | None = None
         best, tail = pick_family_scalar(lam, tails)
         if not raise_degree:
             break
-        short = shortfall_scalar(tail, tol)
+        short = shortfall(tail, tol, FLOATS)
         if short <= 1.0 or deg >= N_MAX:
             break
-        deg = int(raised_degree(deg, short))
-    err = error_estimate_scalar(tail, twist, deg) + allowance
+        deg = raised_degree(deg, short, FLOATS)
+    err = error_estimate(tail, twist, deg, FLOATS) + allowance
     return PointResult(lam[best] / math.pi**2, deg, err, best, modal_kernel.engine_name(),
                        err <= tol)
 
