@@ -23,7 +23,8 @@ from spectral_rod._blas_threads import one_blas_thread
 from spectral_rod.numerics.sign_scan import bracketed_roots, lowest_root, lowest_roots
 from spectral_rod.rod.characteristic import characteristic_double_batch
 from spectral_rod.rod.collocation import modal_kernel
-from spectral_rod.rod.collocation.driver import _Arrays, _OnePoint, pick_family
+from spectral_rod.rod.collocation.arithmetic import ARRAYS, FLOATS
+from spectral_rod.rod.collocation.driver import pick_family
 from spectral_rod.rod.collocation.eigensolver import (
     solve_family,
     solve_family_eig,
@@ -430,8 +431,8 @@ def test_scalar_family_rule_is_the_array_rule(l0, rel, t0, t1):
     """pick_family in Python floats (the scalar path's namespace) and on arrays choose the same
     family and tail on ties (rel = 0), near-ties around TIE_REL and pairs around CLOSE_REL."""
     l1 = l0 * (1.0 + rel)
-    p, fam, tail = pick_family(np.array([[l0], [l1]]), np.array([[t0], [t1]]), _Arrays)
-    p1, best, tail_scalar = pick_family([l0, l1], [t0, t1], _OnePoint)
+    p, fam, tail = pick_family(np.array([[l0], [l1]]), np.array([[t0], [t1]]), ARRAYS)
+    p1, best, tail_scalar = pick_family([l0, l1], [t0, t1], FLOATS)
     assert (best, tail_scalar, p1) == (int(fam[0]), float(tail[0]), float(p[0]))
     assert p1 == [l0, l1][best] / np.pi**2
 
@@ -444,7 +445,7 @@ def test_lean_loose_eigenvalue_is_the_discrete_eigenvalue_within_the_iteration_t
     of the same pencil (LAPACK's QR algorithm, not the power iteration), on Figure 1's and
     random points at their a priori degree and n = 64."""
     from spectral_rod import load_figure1
-    from spectral_rod.rod.collocation.resolution import initial_degree_scalar
+    from spectral_rod.rod.collocation.resolution import initial_degree
 
     d = load_figure1()
     rng = np.random.default_rng(7)
@@ -452,7 +453,7 @@ def test_lean_loose_eigenvalue_is_the_discrete_eigenvalue_within_the_iteration_t
     nus = np.concatenate([d["nu"].to_numpy()[::40], 1 + 10 ** rng.uniform(-3, 2, 40)])
     worst, accepted, families = 0.0, 0, 0
     for tw, nu in zip(om, nus, strict=True):
-        for n in sorted({initial_degree_scalar(float(tw), 1e-6), 64}):
+        for n in sorted({initial_degree(float(tw), 1e-6, FLOATS), 64}):
             lam, tails, _ = solve_point(n, float(tw), float(nu), 1e-8)
             ref = [solve_family_eig(n, f, np.array([tw]), np.array([nu]))[0][0]
                    for f in ("symmetric", "antisymmetric")]

@@ -193,14 +193,15 @@ def collocation_crossing(twist_guess: float, nu: float, half_width: float = 0.15
     from scipy.optimize import brentq
 
     from spectral_rod.rod.collocation import collocation_family_load
-    from spectral_rod.rod.collocation.resolution import initial_degree_scalar, roundoff_floor
+    from spectral_rod.rod.collocation.arithmetic import FLOATS
+    from spectral_rod.rod.collocation.resolution import initial_degree, roundoff_floor
 
     half_width = check_real(half_width, "half_width", 0.0, 1.0, lo_open=True)
     twist_guess = check_real(twist_guess, "twist_guess", half_width, 200.0, lo_open=True)
     nu = scalar_nu(nu)
     # one fixed degree for the whole root search (a smooth difference for Brent): the a priori
     # degree of the collocation solver at its tightest tolerance, at the bracket's far end
-    n = initial_degree_scalar(twist_guess + half_width, TOL_RANGE[0])
+    n = initial_degree(twist_guess + half_width, TOL_RANGE[0], FLOATS)
 
     def diff(om: float) -> float:
         return (collocation_family_load(om, nu, FAMILIES[0], n)

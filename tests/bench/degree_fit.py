@@ -10,7 +10,7 @@ the search minimises that cost over ``need``^2, averaged over the points and the
 with at most 0.5 % of the points short at any tol (each raise is a second call, whose fixed
 cost a small batch feels: at 5.5 % short, 66 of Figure 1's points, the Figure 1 batch at tol
 1e-4 took 14 % longer). It prints the formula before this fit and the fit, per tol: the share
-of points short and the cost over the ideal. ``resolution._degree_formula``'s docstring quotes
+of points short and the cost over the ideal. ``resolution.initial_degree``'s docstring quotes
 what it prints (2026-12-05). A development tool, not a test (pytest does not collect it).
 """
 

@@ -17,7 +17,7 @@ converged where the whole estimate is <= tol. Inputs are validated by the caller
 The loop is written once against a namespace of its operations: :class:`_Arrays` for flat
 arrays (:func:`collocation_critical_load`) and :class:`_OnePoint` for one point in Python
 floats (:func:`collocation_point`, a scalar call: a batch of one without numpy's per-call
-cost).
+cost); the rules themselves are written against the arithmetic of :mod:`.arithmetic`.
 """
 
 from __future__ import annotations
@@ -31,6 +31,7 @@ from numpy.typing import NDArray
 from spectral_rod._blas_threads import one_blas_thread
 from spectral_rod._validation import check_resolution, scalar_nu, scalar_twist
 from spectral_rod.rod.collocation import modal_kernel
+from spectral_rod.rod.collocation.arithmetic import ARRAYS, FLOATS, Namespace
 from spectral_rod.rod.collocation.discretisation import family_operator
 from spectral_rod.rod.collocation.eigensolver import (
     ISOLATION_GAP,
@@ -44,13 +45,10 @@ from spectral_rod.rod.collocation.resolution import (
     N_MAX,
     N_MIN,
     error_estimate,
-    error_estimate_scalar,
     initial_degree,
-    initial_degree_scalar,
     raised_degree,
     roundoff_floor,
     shortfall,
-    shortfall_scalar,
 )
 from spectral_rod.rod.collocation.tuning import (
     FEW_POINTS,
@@ -151,15 +149,11 @@ class PointResult(NamedTuple):
 
 
 class _Arrays:
-    """The degree loop's operations on flat arrays of points (numpy); ``todo`` is an index
-    array."""
+    """How the degree loop holds flat arrays of points: the rules' arithmetic ``xp``
+    (:data:`.arithmetic.ARRAYS`), the set of points still to raise (``todo``: an index array),
+    and the engine called once per degree of the call."""
 
-    where, abs, minimum, maximum = np.where, np.abs, np.minimum, np.maximum
-    initial_degree = staticmethod(initial_degree)
-    error_estimate = staticmethod(error_estimate)
-    shortfall = staticmethod(shortfall)
-    roundoff_floor = staticmethod(roundoff_floor)
-    raised_degree = staticmethod(raised_degree)
+    xp = ARRAYS
     nonzero = staticmethod(np.flatnonzero)
 
     @staticmethod
@@ -209,26 +203,11 @@ class _Arrays:
 
 
 class _OnePoint:
-    """The degree loop's operations for one point in Python floats, without numpy's per-call
-    cost (the rules' scalar forms, tested against the array forms in
-    ``tests/test_speed_paths.py``); ``todo`` is a bool."""
+    """How the degree loop holds one point in Python floats, without numpy's per-call cost: the
+    rules' arithmetic ``xp`` (:data:`.arithmetic.FLOATS`), ``todo`` a bool, and the engine's
+    one-point entry (:func:`.eigensolver.solve_point`)."""
 
-    abs, minimum, maximum = abs, min, max
-    initial_degree = staticmethod(initial_degree_scalar)
-    error_estimate = staticmethod(error_estimate_scalar)
-    shortfall = staticmethod(shortfall_scalar)
-
-    @staticmethod
-    def where(cond, a, b):
-        return a if cond else b
-
-    @staticmethod
-    def roundoff_floor(tw: float) -> float:
-        return error_estimate_scalar(0.0, tw)  # a zero tail: the round-off part at n = 0
-
-    @staticmethod
-    def raised_degree(deg: int, short: float) -> int:
-        return int(raised_degree(deg, short))
+    xp = FLOATS
 
     @staticmethod
     def pooled(deg: int) -> int:
@@ -269,32 +248,35 @@ class _OnePoint:
             return solve_point(deg, tw, nu, rtol)
 
 
-def _degree_loop(xp, tw, nu, n: int | None, tol: float):
-    """The degree loop (module docstring) for points `tw` (|Omega|), `nu` in the namespace `xp`
-    (:class:`_Arrays` or :class:`_OnePoint`): p*, degree, error estimate, family index and
-    engine name per point."""
+def _degree_loop(points: type[_Arrays] | type[_OnePoint], tw, nu, n: int | None, tol: float):
+    """The degree loop (module docstring) for points `tw` (|Omega|), `nu` held as `points` holds
+    them (:class:`_Arrays` or :class:`_OnePoint`; the rules' arithmetic is its ``xp``): p*,
+    degree, error estimate, family index and engine name per point."""
+    xp = points.xp
     rtol = iteration_rtol(tol)
     if n is None:
-        deg = xp.pooled(xp.initial_degree(tw, tol))
-        may_raise = xp.roundoff_floor(tw) < tol  # no raise where round-off alone decides
+        deg = points.pooled(initial_degree(tw, tol, xp))
+        may_raise = roundoff_floor(tw, 0, xp) < tol  # no raise where round-off alone decides
     else:  # a forced degree is solved once
-        deg, may_raise = xp.full(tw, n), False
-    lam, tails, by_kernel = xp.solve(tw, nu, deg, rtol)
+        deg, may_raise = points.full(tw, n), False
+    lam, tails, by_kernel = points.solve(tw, nu, deg, rtol)
     p, fam, tail = pick_family(lam, tails, xp)
-    short = xp.shortfall(tail, tol)
-    todo = xp.nonzero(may_raise & (short > 1.0) & (deg < N_MAX))
-    while xp.size(todo):
-        deg = xp.put(deg, todo, xp.raised_degree(xp.take(deg, todo), xp.take(short, todo)))
-        lam, tails, kernel = xp.solve(xp.take(tw, todo), xp.take(nu, todo),
-                                      xp.take(deg, todo), rtol)
+    short = shortfall(tail, tol, xp)
+    todo = points.nonzero(may_raise & (short > 1.0) & (deg < N_MAX))
+    while points.size(todo):
+        deg = points.put(deg, todo, raised_degree(points.take(deg, todo),
+                                                  points.take(short, todo), xp))
+        lam, tails, kernel = points.solve(points.take(tw, todo), points.take(nu, todo),
+                                          points.take(deg, todo), rtol)
         sub = pick_family(lam, tails, xp)
-        p, fam, tail = (xp.put(old, todo, new) for old, new in zip((p, fam, tail), sub,
-                                                                   strict=True))
-        by_kernel = xp.put(by_kernel, todo, kernel)
-        short = xp.put(short, todo, xp.shortfall(sub[2], tol))
-        todo = xp.subset(todo, (xp.take(short, todo) > 1.0) & (xp.take(deg, todo) < N_MAX))
-    err = xp.error_estimate(tail, tw, deg) + iteration_allowance(tol)
-    return p, deg, err, fam, xp.engine_names(by_kernel)
+        p, fam, tail = (points.put(old, todo, new) for old, new in zip((p, fam, tail), sub,
+                                                                       strict=True))
+        by_kernel = points.put(by_kernel, todo, kernel)
+        short = points.put(short, todo, shortfall(sub[2], tol, xp))
+        todo = points.subset(todo, (points.take(short, todo) > 1.0)
+                             & (points.take(deg, todo) < N_MAX))
+    err = error_estimate(tail, tw, deg, xp) + iteration_allowance(tol)
+    return p, deg, err, fam, points.engine_names(by_kernel)
 
 
 def collocation_point(twist: float, nu: float, tol: float, n: int | None = None
@@ -309,18 +291,18 @@ def collocation_point(twist: float, nu: float, tol: float, n: int | None = None
     return PointResult(p, deg, err, fam, engine, err <= tol)
 
 
-def pick_family(lam, tails, xp=_Arrays):
+def pick_family(lam, tails, xp: Namespace = ARRAYS):
     """p*, family index and the tail that judges it, from both families' lambda and tails
-    (``lam[0]``, ``lam[1]``: arrays of points for ``xp`` = :class:`_Arrays`, floats for
-    :class:`_OnePoint`).
+    (``lam[0]``, ``lam[1]``: arrays of points for ``xp`` = :data:`.arithmetic.ARRAYS`, floats
+    for :data:`.arithmetic.FLOATS`).
 
     A tie to round-off (e.g. nu = 1 at zero twist: the Euler mode in either plane) goes to the
     symmetric family, whose mode is the planar one in the (u0) plane. If the two families are
     within CLOSE_REL of each other either could be lowest, and both must be resolved.
 
-    >>> pick_family([10.0, 10.0], [1e-9, 2e-9], _OnePoint)[1:]  # a tie: symmetric, larger tail
+    >>> pick_family([10.0, 10.0], [1e-9, 2e-9], FLOATS)[1:]  # a tie: symmetric, larger tail
     (0, 2e-09)
-    >>> pick_family([10.0, 9.0], [1e-9, 3e-9], _OnePoint)[1:]
+    >>> pick_family([10.0, 9.0], [1e-9, 3e-9], FLOATS)[1:]
     (1, 3e-09)
     """
     (l0, l1), (t0, t1) = lam, tails

@@ -25,15 +25,15 @@ import math
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from spectral_rod.rod.collocation.arithmetic import ARRAYS, FLOATS, Namespace
 from spectral_rod.rod.collocation.discretisation import FamilyOperator
 from spectral_rod.rod.collocation.tuning import TRUNCATION_SHARE
 
-__all__ = ["ERR_LINEAR", "ERR_QUADRATIC", "N_MAX", "N_MIN", "ROUNDOFF_DEGREE", "ROUNDOFF_TWIST",
-           "TRUNCATION_SHARE",
-           "error_estimate", "error_estimate_scalar", "initial_degree", "initial_degree_scalar",
-           "mode_tails", "raised_degree", "roundoff_floor", "shortfall", "shortfall_scalar",
-           "tail_for_tolerance", "tail_from_parts", "tail_parts", "tails_of", "truncation_error",
-           "truncation_error_scalar"]
+__all__ = ["ARRAYS", "ERR_LINEAR", "ERR_QUADRATIC", "FLOATS", "N_MAX", "N_MIN", "ROUNDOFF_DEGREE",
+           "ROUNDOFF_TWIST", "TRUNCATION_SHARE",
+           "error_estimate", "initial_degree", "mode_tails", "raised_degree", "roundoff_floor",
+           "shortfall", "tail_for_tolerance", "tail_from_parts", "tail_parts", "tails_of",
+           "truncation_error"]
 
 N_MIN, N_MAX = 8, 512
 EPS = float(np.finfo(float).eps)
@@ -45,9 +45,10 @@ ROUNDOFF_DEGREE = 64.0
 DEGREE_FIT = (5.0, 0.4, 0.3, 1.0)
 
 
-def initial_degree(twist_angle: NDArray[np.float64], tol: float) -> NDArray[np.int_]:
+def initial_degree(twist_angle: ArrayLike, tol: float, xp: Namespace = ARRAYS):
     """A priori Chebyshev degree for relative accuracy `tol`: the fit below at TRUNCATION_SHARE
-    tol (the module docstring says why).
+    tol (the module docstring says why); an int array (``xp`` = :data:`.arithmetic.ARRAYS`) or
+    an int for one point in Python floats (:data:`.arithmetic.FLOATS`).
 
     The critical mode is a sum of cos/sin(beta_k s) with beta_k <= sqrt(X_+) ~ |Omega| + pi
     (:func:`spectral_rod.critical_wavenumbers`); on x = 2 s - 1 that is frequency k ~ |Omega| / 2,
@@ -62,78 +63,48 @@ def initial_degree(twist_angle: NDArray[np.float64], tol: float) -> NDArray[np.i
     expected cost, ~n0^2 plus a second solve where n0 falls short, at 1.06-1.17 of the ideal
     and short at none of the 300 points at any tol; the a-posteriori check raises the degree
     where it is). ``nu`` does not enter: the needed degree varies by at most 2 over nu in
-    [1, 100].
+    [1, 100]. Big L is taken >= 3.5: a fit to tol <= 1e-4 falls short at looser ones, each
+    shortfall a second solve (``tests/bench/degree_fit.py`` prints the shortfalls per tol).
+
+    >>> initial_degree(3.0, 1e-12, FLOATS), initial_degree(np.array([3.0]), 1e-12).tolist()
+    (20, [20])
     """
-    om = np.abs(np.asarray(twist_angle, dtype=float))
-    x = _degree_formula(om, -math.log10(TRUNCATION_SHARE * tol), np.cbrt)
-    return np.clip(2 * np.ceil(x / 2).astype(int), N_MIN, N_MAX)
+    om = xp.abs(xp.asfloat(twist_angle))
+    big_l = max(-math.log10(TRUNCATION_SHARE * tol), 3.5)
+    c0, c1, c2, c3 = DEGREE_FIT
+    x = om / 2 + c0 + c1 * big_l + (c2 * big_l + c3) * xp.cbrt(1.0 + om)
+    return xp.clip(2 * xp.to_int(xp.ceil(x / 2)), N_MIN, N_MAX)
 
 
-def raised_degree(n, shortfall=np.inf):
+def raised_degree(n, shortfall, xp: Namespace = ARRAYS):
     """The next degree tried where the tail's part of the estimate misses its target by the
     factor `shortfall` (> 1; :func:`shortfall`): 2 higher per factor 10 of it, at most ~12 %
-    higher, even, <= N_MAX (works on ints and on integer arrays). The 2 per factor 10 is
-    empirical: a step of 2 divided the tail's part by 9.0 at least and 32 in the median
+    higher, even, <= N_MAX (an int array, or an int with ``xp`` = FLOATS). The 2 per factor 10
+    is empirical: a step of 2 divided the tail's part by 9.0 at least and 32 in the median
     (``tests/bench/degree_fit.py``, Omega(L) < 50, parts in [1e-14, 1e-3]); where it falls
-    short the loop raises again."""
-    n = np.asarray(n)
-    tens = np.ceil(np.log10(np.maximum(shortfall, 10.0)))
-    return np.minimum(N_MAX, n + 2 * np.minimum(tens, np.ceil(0.06 * n + 1)).astype(int))
+    short the loop raises again.
 
-
-def initial_degree_scalar(twist_angle: float, tol: float) -> int:
-    """:func:`initial_degree` for one point, in Python floats (the scalar path's)."""
-    x = _degree_formula(abs(twist_angle), -math.log10(TRUNCATION_SHARE * tol),
-                        lambda v: v ** (1.0 / 3.0))
-    return min(N_MAX, max(N_MIN, 2 * math.ceil(x / 2)))
-
-
-def _degree_formula(om, big_l: float, cbrt):
-    """n0 of :func:`initial_degree` before rounding (om = |Omega|, big_l = log10(1/t)).
-
-    big_l is taken >= 3.5: a fit to tol <= 1e-4 falls short at looser ones, each shortfall a
-    second solve (``tests/bench/degree_fit.py`` prints the shortfalls per tol).
+    >>> raised_degree(20, 50.0, FLOATS), raised_degree(np.array([20, 60]), np.inf).tolist()
+    (24, [26, 70])
     """
-    big_l = max(big_l, 3.5)
-    c0, c1, c2, c3 = DEGREE_FIT
-    k = cbrt(1.0 + om)
-    return om / 2 + c0 + c1 * big_l + (c2 * big_l + c3) * k
+    tens = xp.ceil(xp.log10(xp.maximum(shortfall, 10.0)))
+    return xp.minimum(N_MAX, n + 2 * xp.to_int(xp.minimum(tens, xp.ceil(0.06 * n + 1))))
 
 
-def shortfall(tail_value: ArrayLike, tol: float) -> NDArray[np.float64]:
+def shortfall(tail_value: ArrayLike, tol: float, xp: Namespace = ARRAYS):
     """The tail's part of the estimate over its target TRUNCATION_SHARE tol: the degree loop
     raises the degree where it is > 1 (while round-off alone does not decide)."""
-    return truncation_error(tail_value) / (TRUNCATION_SHARE * tol)
+    return truncation_error(tail_value, xp) / (TRUNCATION_SHARE * tol)
 
 
-def shortfall_scalar(tail_value: float, tol: float) -> float:
-    """:func:`shortfall` for one point, in Python floats (the scalar path's)."""
-    return truncation_error_scalar(tail_value) / (TRUNCATION_SHARE * tol)
-
-
-def truncation_error_scalar(tail_value: float) -> float:
-    """:func:`truncation_error` for one point, in Python floats (the same operations in the same
-    order: bit-equal)."""
-    t = tail_value
-    return max(ERR_LINEAR * t, ERR_QUADRATIC * (t * t))
-
-
-def truncation_error(tail_value: ArrayLike) -> NDArray[np.float64]:
+def truncation_error(tail_value: ArrayLike, xp: Namespace = ARRAYS):
     """The tail's part of :func:`error_estimate`: max(ERR_LINEAR tail, ERR_QUADRATIC tail^2)."""
-    t = np.asarray(tail_value, dtype=float)
-    return np.maximum(ERR_LINEAR * t, ERR_QUADRATIC * (t * t))
+    t = xp.asfloat(tail_value)
+    return xp.maximum(ERR_LINEAR * t, ERR_QUADRATIC * (t * t))
 
 
-def error_estimate_scalar(tail_value: float, twist_angle: float, n: int = 0) -> float:
-    """:func:`error_estimate` for one point, in Python floats (the scalar path's)."""
-    # the same operations in the same order as error_estimate (bit-equal)
-    q = n / ROUNDOFF_DEGREE
-    return truncation_error_scalar(tail_value) + EPS * (
-        ROUNDOFF_BASE + ROUNDOFF_TWIST * (twist_angle * twist_angle) + (q * q) * (q * q))
-
-
-def error_estimate(tail_value: ArrayLike, twist_angle: ArrayLike, n: ArrayLike = 0
-                   ) -> NDArray[np.float64]:
+def error_estimate(tail_value: ArrayLike, twist_angle: ArrayLike, n: ArrayLike = 0,
+                   xp: Namespace = ARRAYS):
     """Estimated relative error of p* from the mode's Chebyshev tail at degree `n` (see module
     docstring).
 
@@ -156,9 +127,10 @@ def error_estimate(tail_value: ArrayLike, twist_angle: ArrayLike, n: ArrayLike =
     converged. ``python tests/bench/hunt_forced_degree.py`` recomputes the error over the
     estimate at 1,000 random points and degrees. At the automatic degrees (n <= ~70 for
     |Omega| < 50) it adds at most 1.5 eps. With tail >= 1e-2 the mode is not resolved and the
-    estimate (>= 2e-2) only says so.
+    estimate (>= 2e-2) only says so. ``xp`` = FLOATS computes it for one point in Python floats
+    (the same operations in the same order: the same bits).
     """
-    return truncation_error(tail_value) + roundoff_floor(twist_angle, n)
+    return truncation_error(tail_value, xp) + roundoff_floor(twist_angle, n, xp)
 
 
 def tail_for_tolerance(tol: float) -> float:
@@ -181,11 +153,11 @@ def tail_for_tolerance(tol: float) -> float:
     return TRUNCATION_SHARE * check_tol(tol) / ERR_LINEAR
 
 
-def roundoff_floor(twist_angle: ArrayLike, n: ArrayLike = 0) -> NDArray[np.float64]:
+def roundoff_floor(twist_angle: ArrayLike, n: ArrayLike = 0, xp: Namespace = ARRAYS):
     """Round-off part of :func:`error_estimate` at degree `n`: eps (32 + 0.3 Omega^2 +
     (n / ROUNDOFF_DEGREE)^4), measured (see there); n = 0 gives the twist's part alone."""
-    om = np.asarray(twist_angle, dtype=float)
-    q = np.asarray(n) / ROUNDOFF_DEGREE
+    om = xp.asfloat(twist_angle)
+    q = xp.asfloat(n) / ROUNDOFF_DEGREE
     return EPS * (ROUNDOFF_BASE + ROUNDOFF_TWIST * (om * om) + (q * q) * (q * q))
 
 
