@@ -23,7 +23,7 @@ cost); the rules themselves are written against the arithmetic of :mod:`.arithme
 from __future__ import annotations
 
 import math
-from typing import NamedTuple, cast
+from typing import Any, NamedTuple, cast
 
 import numpy as np
 from numpy.typing import NDArray
@@ -248,9 +248,10 @@ class _OnePoint:
             return solve_point(deg, tw, nu, rtol)
 
 
-def _degree_loop(points: type[_Arrays] | type[_OnePoint], tw, nu, n: int | None, tol: float):
+def _degree_loop(points: Any, tw, nu, n: int | None, tol: float):
     """The degree loop (module docstring) for points `tw` (|Omega|), `nu` held as `points` holds
-    them (:class:`_Arrays` or :class:`_OnePoint`; the rules' arithmetic is its ``xp``): p*,
+    them (:class:`_Arrays` or :class:`_OnePoint`: one interface, two representations of the
+    points, hence typed Any; the rules' arithmetic is its ``xp``): p*,
     degree, error estimate, family index and engine name per point."""
     xp = points.xp
     rtol = iteration_rtol(tol)

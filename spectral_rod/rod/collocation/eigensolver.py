@@ -40,7 +40,7 @@ import ctypes
 import math
 from dataclasses import dataclass
 from functools import lru_cache
-from typing import NamedTuple, cast
+from typing import Any, NamedTuple, cast
 
 import numpy as np
 from numpy.typing import NDArray
@@ -206,7 +206,7 @@ class ModalParts(NamedTuple):
                              d_s=self.d_s[idx])
 
 
-def _coefficients(twist: NDArray[np.floating], nu: NDArray[np.floating]) -> NDArray[np.floating]:
+def _coefficients(twist: NDArray[np.floating], nu: NDArray[np.floating]) -> NDArray[Any]:
     """:func:`.discretisation.term_coefficients` (points, terms); one float64 point in Python
     floats (a few us instead of ~20 us of per-term numpy calls, for scalar calls)."""
     if twist.size == 1 and twist.dtype == nu.dtype == np.float64:
