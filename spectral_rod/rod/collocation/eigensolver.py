@@ -275,30 +275,37 @@ class _ShiftedModal:
         return _ShiftedModal(self.elim, self.kept, self.r_e[idx], self.a[idx], self.b[idx],
                              self.g_es, self.g_se, self.schur_inv[idx])
 
-    def _assemble(self, z_e: NDArray[np.float64], z_s: NDArray[np.float64]
-                  ) -> NDArray[np.float64]:
-        out = np.empty((z_e.shape[0], z_e.shape[1] + z_s.shape[1]))
+    def _assemble(self, z_e: NDArray[np.float64], z_s: NDArray[np.float64],
+                  out: NDArray[np.float64] | None = None) -> NDArray[np.float64]:
+        if out is None:
+            out = np.empty((z_e.shape[0], z_e.shape[1] + z_s.shape[1]))
         out[:, self.elim], out[:, self.kept] = z_e, z_s
         return out
 
-    def solve(self, v: NDArray[np.float64]) -> NDArray[np.float64]:
-        """(K - SHIFT)^{-1} v for each row v."""
+    def solve(self, v: NDArray[np.float64], out: NDArray[np.float64] | None = None
+              ) -> NDArray[np.float64]:
+        """(K - SHIFT)^{-1} v for each row v (into `out` if given)."""
         u = v[:, self.elim] * self.r_e
         z_s = (self.schur_inv @ (v[:, self.kept] - self.b * (u @ self.g_se.T))[:, :, None]
                )[:, :, 0]
-        return self._assemble(u - self.a * (z_s @ self.g_es.T) * self.r_e, z_s)
+        return self._assemble(u - self.a * (z_s @ self.g_es.T) * self.r_e, z_s, out)
 
-    def solve_transposed(self, v: NDArray[np.float64]) -> NDArray[np.float64]:
-        """(K - SHIFT)^{-T} v for each row v (its Schur complement is S^T)."""
+    def solve_transposed(self, v: NDArray[np.float64], out: NDArray[np.float64] | None = None
+                         ) -> NDArray[np.float64]:
+        """(K - SHIFT)^{-T} v for each row v (its Schur complement is S^T; into `out` if
+        given)."""
         u = v[:, self.elim] * self.r_e
         z_s = ((v[:, self.kept] - self.a * (u @ self.g_es))[:, None, :] @ self.schur_inv
                )[:, 0, :]
-        return self._assemble(u - self.b * (z_s @ self.g_se) * self.r_e, z_s)
+        return self._assemble(u - self.b * (z_s @ self.g_se) * self.r_e, z_s, out)
 
     def solve_pair(self, v: NDArray[np.float64]) -> NDArray[np.float64]:
         """((K - SHIFT)^{-1} v[0], (K - SHIFT)^{-T} v[1]) per point, v (2, P, m); as separate
         calls: a stored transpose S^{-T} would double the memory each step reads."""
-        return np.stack((self.solve(v[0]), self.solve_transposed(v[1])))
+        out = np.empty(v.shape)
+        self.solve(v[0], out[0])
+        self.solve_transposed(v[1], out[1])
+        return out
 
 
 @dataclass(frozen=True)
