@@ -50,6 +50,27 @@ def test_kernel_agrees_with_the_numpy_iteration(n, family, rtol):
         assert np.min(cos) >= 1 - 1e-8
 
 
+@pytest.mark.parametrize("n", [12, 22, 40])
+@pytest.mark.parametrize("family", ["symmetric", "antisymmetric"])
+def test_dense_and_schur_forms_of_the_numpy_iteration_agree(n, family):
+    # the numpy reference applies (K - SHIFT)^{-1} as dense LAPACK inverses for a few points
+    # and through the Schur complement for many: one iteration, the same eigenpairs to rounding
+    mf = E.modal_family(n, family)
+    twist, nu = _points(n, 4)
+    pt = E.modal_parts(mf, twist, nu)
+    start = E._start_vector(mf.lam1.size + mf.lam2.size)
+    first = E.first_check(E.POWER_RTOL, False)
+    dense = E._iterate(E._DenseShifted.from_parts(pt), start, E.POWER_RTOL, None, first,
+                       E.POWER_STEPS)
+    schur = E._iterate(E._ShiftedModal.from_parts(mf, pt), start, E.POWER_RTOL, None, first,
+                       E.POWER_STEPS)
+    assert dense[3].all() and schur[3].all()
+    scale = max(E.POWER_RTOL, 1e-16 * (n / 4.0) ** 4)  # K's round-off, as above
+    assert np.max(np.abs(dense[0] / schur[0] - 1)) <= 50 * scale
+    for got, ref in zip(dense[1:3], schur[1:3], strict=True):
+        assert np.min(np.abs(np.einsum("ij,ij->i", got, ref))) >= 1 - 1e-8
+
+
 @needs_kernel
 def test_kernel_ceiling_marks_the_same_points_above():
     d = load_figure1()
