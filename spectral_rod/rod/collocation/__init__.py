@@ -46,23 +46,23 @@ The modules
 
 Who decides what:
 
-==========================  ===========================================================
-decision                    owner
-==========================  ===========================================================
-the method per point        :mod:`spectral_rod.rod.router`
-validation, bounds, warning :mod:`spectral_rod.rod.critical` (calls the driver once)
-degree, raise, estimate     :func:`.driver._degree_loop` with the rules of :mod:`.resolution`
-which family is p*          :func:`.driver.pick_family`
-one lane or 32 lanes        :func:`.eigensolver.solve_points` (:func:`.tuning.few_points_limit`)
-kernel or numpy reference   :func:`.eigensolver.lowest_eigenpair` (built, KERNEL_MAX_SCHUR,
-                            a point the kernel rejects)
-dense or Schur (numpy)      :func:`.eigensolver._shifted` (:data:`.tuning.DENSE_ENTRIES`)
-converged or not            :func:`.eigensolver.converged` (C: ``solve_group``)
-the eigenvalue              :func:`.eigensolver.pencil_rayleigh_quotient` (C:
-                            ``pencil_quotient``; precision a parameter)
-the mode's tail             :func:`.resolution.mode_tails` (C: ``family_point``)
-the full ``eig``            where the iteration is rejected: the reference decides
-==========================  ===========================================================
+============================  ===========================================================
+decision                      owner
+============================  ===========================================================
+the method per point          :mod:`spectral_rod.rod.router`
+validation, bounds, warning   :mod:`spectral_rod.rod.critical` (calls the driver once)
+degree, raise, estimate       :func:`.driver._degree_loop` with the rules of :mod:`.resolution`
+which family is p*            :func:`.driver.pick_family`
+one lane or 32 lanes          :func:`.eigensolver.solve_points` (:func:`.tuning.few_points_limit`)
+kernel or numpy reference     :func:`.eigensolver.lowest_eigenpair` (built, KERNEL_MAX_SCHUR,
+                              a point the kernel rejects)
+dense or Schur (numpy)        :func:`.eigensolver._shifted` (:data:`.tuning.DENSE_ENTRIES`)
+converged or not              :func:`.eigensolver.converged` (C: ``solve_group``)
+the eigenvalue                :func:`.eigensolver.pencil_rayleigh_quotient` (C:
+                              ``pencil_quotient``; precision a parameter)
+the mode's tail               :func:`.resolution.mode_tails` (C: ``family_point``)
+the full ``eig``              where the iteration is rejected: the reference decides
+============================  ===========================================================
 
 ``CriticalLoad.engine`` records per point whether the kernel computed it.
 """
