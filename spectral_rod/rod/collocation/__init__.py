@@ -27,6 +27,8 @@ The modules
 * :mod:`.discretisation` -- Eq. ``inst1`` declared term by term and its collocation pencil per
   mode family;
 * :mod:`.resolution` -- the a priori degree, the mode's coefficient tail and the error model;
+* :mod:`.arithmetic` -- the operations those rules are written against, for arrays and for one
+  point in Python floats;
 * :mod:`.eigensolver` -- the engine's entry points for points of one degree
   (:func:`.eigensolver.solve_points`, :func:`.eigensolver.solve_point` for one point in Python
   floats): both families' lowest physical eigenvalue (modal basis, Schur complement, two-sided
