@@ -169,11 +169,11 @@ class _Arrays:
         return todo.size
 
     @staticmethod
-    def take(a, todo):
+    def take(a: NDArray, todo: NDArray[np.int_]) -> NDArray:
         return a[..., todo]
 
     @staticmethod
-    def put(a, todo, value):
+    def put(a: NDArray, todo: NDArray[np.int_], value: Any) -> NDArray:
         a[..., todo] = value
         return a
 
@@ -224,11 +224,11 @@ class _OnePoint:
     size = nonzero
 
     @staticmethod
-    def take(a, todo):
+    def take(a: Any, todo: bool) -> Any:
         return a
 
     @staticmethod
-    def put(a, todo, value):
+    def put(a: Any, todo: bool, value: Any) -> Any:
         return value
 
     @staticmethod
@@ -248,7 +248,8 @@ class _OnePoint:
             return solve_point(deg, tw, nu, rtol)
 
 
-def _degree_loop(points: Any, tw, nu, n: int | None, tol: float):
+def _degree_loop(points: Any, tw: Any, nu: Any, n: int | None, tol: float
+                 ) -> tuple[Any, Any, Any, Any, Any]:
     """The degree loop (module docstring) for points `tw` (|Omega|), `nu` held as `points` holds
     them (:class:`_Arrays` or :class:`_OnePoint`: one interface, two representations of the
     points, hence typed Any; the rules' arithmetic is its ``xp``): p*,
@@ -292,7 +293,7 @@ def collocation_point(twist: float, nu: float, tol: float, n: int | None = None
     return PointResult(p, deg, err, fam, engine, err <= tol)
 
 
-def pick_family(lam, tails, xp: Namespace = ARRAYS):
+def pick_family(lam: Any, tails: Any, xp: Namespace = ARRAYS) -> tuple[Any, Any, Any]:
     """p*, family index and the tail that judges it, from both families' lambda and tails
     (``lam[0]``, ``lam[1]``: arrays of points for ``xp`` = :data:`.arithmetic.ARRAYS`, floats
     for :data:`.arithmetic.FLOATS`).
