@@ -145,15 +145,17 @@ KERNEL_MAX_SCHUR = 64
 #: a family per call); the one-lane cost grows faster with n, so the limit falls as n^-3 above
 #: n = 30 (:func:`few_points_limit`). ``python tests/bench/kernel_range.py``, part 2.
 FEW_POINTS = 12
-#: Above this degree 32 lanes answer even a single point (one lane: n = 56 about equal, slower
-#: above). ``python tests/bench/tuning_crossovers.py``, part 2.
+#: Above this degree 32 lanes answer even a single point. One lane stays the faster for 4
+#: points up to n = 128 (one lane / 32 lanes 0.57 at n = 40, 0.67 at 64, 0.81 at 128), so the
+#: limit is conservative: it bounds where degree pooling treats a solve as free of fixed cost.
+#: ``python tests/bench/tuning_crossovers.py``, part 2.
 LEAN_MAX_DEGREE = 64
 #: Up to this many matrix entries (points m^2, m = n - 1 unknowns) the numpy reference applies
 #: (K - SHIFT)^{-1} as dense inverses (one batched product a step), above it through the Schur
 #: complement (~16 calls a step, less arithmetic): with a few points numpy's per-call cost
-#: decides (dense / Schur time 0.6-0.7 for 1-16 points at n = 22, 0.73 for 4 and 1.1 for 8
-#: at n = 40). ``python tests/bench/tuning_crossovers.py``, part 1.
-DENSE_ENTRIES = 8_000
+#: decides (dense / Schur time 0.52-0.83 up to 12,168 entries, 0.94 at 17,672, 1.49 at
+#: 24,336). ``python tests/bench/tuning_crossovers.py``, part 1.
+DENSE_ENTRIES = 16_000
 #: The cost model of degree pooling (:func:`.collocation.solve_degrees`): a batched solve of
 #: both families costs FIXED_COST seconds whatever its size plus POINT_COST (n/22)^2 a point;
 #: one lane (:func:`few_points_limit`) has no fixed cost and costs LEAN_FACTOR times as much a
