@@ -213,7 +213,7 @@ def collocation_point(twist: float, nu: float, tol: float, n: int | None = None
         best, tail = pick_family_scalar(lam, tails)
         if not raise_degree:
             break
-        short = shortfall(tail, tol, FLOATS)
+        short = shortfall(tail, tol, deg, FLOATS)
         if short <= 1.0 or deg >= N_MAX:
             break
         deg = raised_degree(deg, short, FLOATS)
@@ -278,7 +278,7 @@ def _collocation_critical_load(tw: NDArray[np.float64], nu: NDArray[np.float64],
     p, fam, tails = _solve_points(tw, nu, deg, tol, by_kernel)
     # raise the degree where the tail's part of the estimate misses its share of tol, unless
     # round-off alone decides
-    short = shortfall(tails, tol)
+    short = shortfall(tails, tol, deg)
     todo = np.flatnonzero((short > 1.0) & (deg < N_MAX) & (roundoff_floor(tw) < tol))
     while todo.size:
         deg[todo] = raised_degree(deg[todo], short[todo])
@@ -286,7 +286,7 @@ def _collocation_critical_load(tw: NDArray[np.float64], nu: NDArray[np.float64],
         p[todo], fam[todo], tails[todo] = _solve_points(tw[todo], nu[todo], deg[todo], tol,
                                                         used)
         by_kernel[todo] = used
-        short[todo] = shortfall(tails[todo], tol)
+        short[todo] = shortfall(tails[todo], tol, deg[todo])
         todo = todo[(short[todo] > 1.0) & (deg[todo] < N_MAX)]
     return CollocationResult(p, deg, error_estimate(tails, tw, deg) + allowance, fam,
                              _engine_names(by_kernel))
