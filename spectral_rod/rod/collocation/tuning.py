@@ -48,7 +48,7 @@ __all__ = ["BLOCK_ENTRIES", "CALIBRATED_TOL", "CHUNK", "FEW_POINTS", "FIRST_CHEC
 #: the estimate lands just below tol the error itself can come close to it (at tol 1e-12 the
 #: default's sampled errors must stay <= 1e-13), so the tail is held to a tenth there. Above
 #: TIGHT_TOL it is LOOSE_SHARE: the estimate is a calibrated bound there (the error at most
-#: 0.43 of its tail part on the calibration grid, ``python tests/bench/tol_model_fit.py``), and a
+#: 0.88 of its tail part on the calibration grid, ``python tests/bench/tol_model_fit.py``), and a
 #: tenth would deliver errors ~1e3-1e4 below tol; the rest of tol is the iteration's allowance
 #: (0.01 tol) and round-off. ``python tests/bench/accuracy_at_tol.py`` measures what each tol
 #: delivers; ``python tests/bench/hunt_tol.py`` hunts for misses at every tol. TIGHT_TOL keeps
