@@ -55,8 +55,9 @@ LOOSE_L_OFFSET, LOOSE_L_MIN = 1.0, 1.0
 
 def initial_degree(twist_angle: ArrayLike, tol: float, xp: Namespace = ARRAYS):
     """A priori Chebyshev degree for relative accuracy `tol`: the fit below at t =
-    truncation_share(tol) tol (the module docstring says why); an int array (``xp`` = :data:`.arithmetic.ARRAYS`) or
-    an int for one point in Python floats (:data:`.arithmetic.FLOATS`).
+    truncation_share(tol) tol (the module docstring says why); an int array (``xp`` =
+    :data:`.arithmetic.ARRAYS`) or an int for one point in Python floats
+    (:data:`.arithmetic.FLOATS`).
 
     The critical mode is a sum of cos/sin(beta_k s) with beta_k <= sqrt(X_+) ~ |Omega| + pi
     (:func:`spectral_rod.critical_wavenumbers`); on x = 2 s - 1 that is frequency k ~ |Omega| / 2,
@@ -158,8 +159,8 @@ def error_estimate(tail_value: ArrayLike, twist_angle: ArrayLike, n: ArrayLike,
     explicit n = 512 at tol 1e-14 erred by up to 14x the estimate (1.7e-13) while reported
     converged. ``python tests/bench/hunt_forced_degree.py`` recomputes the error over the
     estimate at 1,000 random points and degrees. At the automatic degrees (n <= ~70 for
-    |Omega| < 50) it adds at most 1.5 eps. ``xp`` = FLOATS computes it for one point in Python floats
-    (the same operations in the same order: the same bits).
+    |Omega| < 50) it adds at most 1.5 eps. ``xp`` = FLOATS computes it for one point in Python
+    floats (the same operations in the same order: the same bits).
     """
     return truncation_error(tail_value, n, xp) + roundoff_floor(twist_angle, n, xp)
 

@@ -36,8 +36,8 @@ from typing import NamedTuple
 
 __all__ = ["BLOCK_ENTRIES", "CALIBRATED_TOL", "CHUNK", "FEW_POINTS", "FIRST_CHECK", "FIXED_COST",
            "KERNEL_MAX_SCHUR", "LEAN_FACTOR", "LEAN_MAX_DEGREE", "LONG_TWIST", "LOOSE_DEGREE",
-           "LOOSE_FIRST_CHECK", "LOOSE_RTOL", "POINT_COST", "POWER_RTOL", "POWER_STEPS",
-           "LOOSE_SHARE", "SMALL_BATCH", "SMALL_DEGREE", "SQUARING_MAX", "TIGHT_TOL",
+           "LOOSE_FIRST_CHECK", "LOOSE_RTOL", "LOOSE_SHARE", "POINT_COST", "POWER_RTOL",
+           "POWER_STEPS", "SMALL_BATCH", "SMALL_DEGREE", "SQUARING_MAX", "TIGHT_TOL",
            "TRUNCATION_SHARE", "SolverSettings", "few_points_limit", "first_check",
            "iteration_allowance", "iteration_rtol", "loose_quotient", "power_steps",
            "solver_settings", "truncation_share"]
