@@ -272,8 +272,8 @@ def _trade_text(trade: pd.DataFrame) -> str:
              f"{max(r.batch_max_rel_error, r.scalar_max_rel_error) / r.tol:.1e} tol"
              for r in trade.itertuples() if r.tol > TRADE_TOLS[-1]]
     return ("The degree falls with tol as far as the error model lets the estimate certify "
-            "it, so that each tol delivers errors a few orders below itself at most; in this "
-            "run: " + "; ".join(parts) + ".")
+            "it (the degree groups pooled, driver.solve_degrees); in this run, against the "
+            "tightest tol: " + "; ".join(parts) + ".")
 
 
 def _cost_markdown(cost: pd.DataFrame) -> str:
