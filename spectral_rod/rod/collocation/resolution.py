@@ -78,7 +78,7 @@ def initial_degree(twist_angle: ArrayLike, tol: float, xp: Namespace = ARRAYS):
     Above TIGHT_TOL the tail part's target is LOOSE_SHARE tol and its quadratic term
     ERR_QUADRATIC (n tail)^2 (:func:`truncation_error`) decides: there L = log10(1/t) -
     LOOSE_L_OFFSET, at least LOOSE_L_MIN (the same four constants; ``tests/bench/degree_fit.py``,
-    the loose tols 1e-2..1e-9: short at no point of the grid at tol 1e-2..1e-8, cost 1.06-1.16
+    the loose tols 1e-2..1e-9: short at no point of the grid at tol 1e-2..1e-8, cost 1.07-1.16
     of the ideal). At tol <= TIGHT_TOL the degree is that of the fit.
 
     >>> initial_degree(3.0, 1e-12, FLOATS), initial_degree(np.array([3.0]), 1e-12).tolist()
