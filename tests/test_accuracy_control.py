@@ -55,22 +55,68 @@ def test_tol_met_on_dense_grid(reference):
                 (1e-4, 1e-8, 1e-12))
 
 
-@pytest.mark.parametrize("tol", [1e-12, 1e-8, 1e-4])
+#: A loose tol delivers errors within this factor of itself on the random sample below (issue
+#: 37: the degree falls with tol; measured largest error / tol there: printed by the test).
+DELIVERY_FACTOR = 300.0
+
+
+def _random_points(size: int, seed: int) -> tuple[np.ndarray, np.ndarray]:
+    rng = np.random.default_rng(seed)
+    tw, nv = rng.uniform(0.0, 50.0, size), 10.0 ** rng.uniform(0.0, 4.0, size)
+    nv[: size // 10] = 1.0 + 10.0 ** rng.uniform(-3.0, 0.0, size // 10)
+    return tw, nv
+
+
+@pytest.mark.parametrize("tol", [1e-12, 1e-10])
 def test_error_is_a_tenth_of_tol_on_random_points(tol):
-    # the degree holds the tail's part of the estimate to TRUNCATION_SHARE tol (resolution's
-    # docstring): before, at tol 1e-12, 226 of the 20,000 collocation points of a 200 x 200 map
-    # erred by 1.0-1.6e-13 (Omega(L) > 30), ~1 % of points like these. Reference: the
-    # characteristic equation in double precision (its error <= eps (8 + |Omega|), 1.3e-14).
+    # up to tuning.TIGHT_TOL the degree holds the tail's part of the estimate to a tenth of tol
+    # (resolution's docstring): without it, at tol 1e-12, 226 of the 20,000 collocation points
+    # of a 200 x 200 map erred by 1.0-1.6e-13 (Omega(L) > 30), ~1 % of points like these.
+    # Reference: the characteristic equation in double precision (its error <= eps (8 +
+    # |Omega|), 1.3e-14).
     from spectral_rod.rod.characteristic import double_error_estimate
 
-    rng = np.random.default_rng(20261205)
-    tw, nv = rng.uniform(0.0, 50.0, 1500), 10.0 ** rng.uniform(0.0, 4.0, 1500)
-    nv[:150] = 1.0 + 10.0 ** rng.uniform(-3.0, 0.0, 150)
+    tw, nv = _random_points(1500, 20261205)
     res = critical_load(tw, nv, tol=tol, full_output=True)
     ref = critical_load(tw, nv, tol=1e-12, method="characteristic")
     err = np.abs(res.p_star / ref - 1) - double_error_estimate(tw)
     assert set(res.method) <= {"collocation", "increment"} and res.converged.all()
     assert err.max() <= 0.1 * tol, (tw[np.argmax(err)], nv[np.argmax(err)], err.max())
+
+
+def _loose_tol_evidence(tol: float, tw: np.ndarray, nv: np.ndarray, ref: np.ndarray
+                        ) -> tuple[float, float, int]:
+    """Largest error / estimate, largest error / tol of forced collocation at `tol`, and its
+    silent misses (error > tol while converged)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ConvergenceWarning)
+        res = collocation_load(tw, nv, tol=tol, full_output=True)
+    err = np.abs(res.p_star / ref - 1)
+    return (float(np.max(err / res.error_estimate)), float(np.max(err[res.converged]) / tol),
+            int(np.sum((err > tol) & res.converged)))
+
+
+@pytest.mark.parametrize("tol", [1e-2, 1e-4, 1e-6, 1e-8])
+def test_loose_tol_is_met_honestly_and_closely(tol, monkeypatch):
+    # issue 37 item 3: above tuning.TIGHT_TOL the degree falls with tol, as far as the error
+    # model allows: the estimate bounds the error, no point converged with an error above tol,
+    # and the error is within DELIVERY_FACTOR of tol (it was 1e4-1e5 below it). 400 random
+    # points, Omega(L) < 50 and nu up to 1e4; tests/bench/hunt_tol.py hunts 2,000 to Omega(L)
+    # 800. Reference: the characteristic equation in double precision (an independent
+    # formulation; its error <= 1.3e-14 is far below these tols' errors).
+    from spectral_rod.rod.collocation import resolution
+
+    tw, nv = _random_points(400, 37)
+    ref = critical_load(tw, nv, method="characteristic")
+    over_estimate, over_tol, silent = _loose_tol_evidence(tol, tw, nv, ref)
+    print(f"tol {tol:g}: error / estimate <= {over_estimate:.3g}, error / tol <= {over_tol:.3g}")
+    assert over_estimate <= 1.0 and silent == 0 and over_tol >= 1.0 / DELIVERY_FACTOR
+    # the quadratic term carries the bound: at tol 1e-2 a tenth of it leaves errors above the
+    # estimate (the evidence this test can fail on; at tighter tols the raised degree hides it
+    # on this sample)
+    if tol == 1e-2:
+        monkeypatch.setattr(resolution, "ERR_QUADRATIC", resolution.ERR_QUADRATIC / 10)
+        assert _loose_tol_evidence(tol, tw, nv, ref)[0] > 1.0
 
 
 def test_estimate_covers_the_eigen_iteration_above_the_default_tol(reference):
@@ -146,11 +192,16 @@ def test_round_off_floor_warns_instead_of_returning_silently():
 
 
 def test_error_estimate_model():
-    # linear in the tail for a resolved mode, quadratic (pessimistic) for a poorly resolved one
-    lin = error_estimate(1e-8, 0.0) - roundoff_floor(0.0)
-    assert error_estimate(2e-8, 0.0) - roundoff_floor(0.0) == pytest.approx(2 * lin)
-    quad = error_estimate(1e-2, 0.0) - roundoff_floor(0.0)
-    assert error_estimate(2e-2, 0.0) - roundoff_floor(0.0) == pytest.approx(4 * quad)
+    # linear in the tail for a resolved mode, plus a term quadratic in (n tail) that decides at
+    # loose tols, and inf where the mode is not resolved
+    from spectral_rod.rod.collocation.resolution import ERR_LINEAR, ERR_QUADRATIC, TAIL_UNRESOLVED
+
+    lin = error_estimate(1e-8, 0.0, 0) - roundoff_floor(0.0, 0)
+    assert lin == pytest.approx(ERR_LINEAR * 1e-8)
+    assert error_estimate(2e-8, 0.0, 0) - roundoff_floor(0.0) == pytest.approx(2 * lin)
+    quad = error_estimate(1e-2, 0.0, 20) - roundoff_floor(0.0, 20)
+    assert quad == pytest.approx(ERR_LINEAR * 1e-2 + ERR_QUADRATIC * 0.2**2)
+    assert np.isinf(error_estimate(TAIL_UNRESOLVED, 0.0, 20))
 
 
 @pytest.mark.parametrize("twist, nu, n", [(6.5, 2.5, 16), (17.0, 1.05, 24)])

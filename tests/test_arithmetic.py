@@ -35,12 +35,12 @@ def test_initial_degree_is_one_rule(twist, tol):
 @settings(max_examples=400, deadline=None)
 @given(tails, twists, degrees, tols)
 def test_estimate_shortfall_and_raise_are_one_rule(tail, twist, n, tol):
-    assert truncation_error(tail, FLOATS) == truncation_error(np.array([tail]))[0]
+    assert truncation_error(tail, n, FLOATS) == truncation_error(np.array([tail]), n)[0]
     assert roundoff_floor(twist, n, FLOATS) == roundoff_floor(np.array([twist]), n)[0]
     assert error_estimate(tail, twist, n, FLOATS) == \
         error_estimate(np.array([tail]), np.array([twist]), np.array([n]))[0]
-    short = shortfall(tail, tol, FLOATS)
-    assert short == shortfall(np.array([tail]), tol)[0]
+    short = shortfall(tail, tol, n, FLOATS)
+    assert short == shortfall(np.array([tail]), tol, n)[0]
     if short > 1.0:
         raised = raised_degree(n, short, FLOATS)
         assert type(raised) is int
@@ -48,8 +48,9 @@ def test_estimate_shortfall_and_raise_are_one_rule(tail, twist, n, tol):
         assert n < raised <= N_MAX or n == N_MAX
 
 def test_a_changed_rule_is_seen():
-    """The comparison can fail: a namespace whose maximum is min gives other estimates."""
+    """The comparison can fail: a namespace whose where picks the other branch gives other
+    estimates."""
     import types
 
-    wrong = types.SimpleNamespace(**{**vars(FLOATS), "maximum": min})
-    assert truncation_error(1e-3, wrong) != truncation_error(np.array([1e-3]))[0]
+    wrong = types.SimpleNamespace(**{**vars(FLOATS), "where": lambda c, a, b: b if c else a})
+    assert truncation_error(1e-3, 16, wrong) != truncation_error(np.array([1e-3]), 16)[0]

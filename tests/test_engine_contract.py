@@ -224,7 +224,7 @@ def test_one_lane_kernel_matches_the_numpy_reference(n):
     assert ok.all()
     round_off = np.finfo(float).eps * (32 + 0.3 * tw**2)
     assert np.max(np.abs(lam[:, 0] / ref[0][0] - 1) / round_off) <= 1.0
-    est, ref_est = error_estimate(tail[:, 0], tw), error_estimate(ref[0][1], tw)
+    est, ref_est = error_estimate(tail[:, 0], tw, n), error_estimate(ref[0][1], tw, n)
     assert np.max(np.abs(est / ref_est - 1)) <= 1e-3
     both = np.isfinite(tail[:, 1]) & np.isfinite(ref[1][1])  # antisymmetric resolved by both
     assert np.max(np.abs(lam[both, 1] / ref[1][0][both] - 1) / round_off[both], initial=0) <= 1.0

@@ -168,9 +168,9 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
     below the round-off floor), stays here: warned and flagged as the general path does (one
     call must not cost the array path's several times for it). The computation is the general
     path's for one point, without its array bookkeeping: collocation by the driver's degree loop
-    for one point (:func:`spectral_rod.rod.collocation.driver.collocation_point`), the large-
-    twist route :func:`_one_characteristic`; ``python -m pytest -m bench`` measures both scalar
-    loops."""
+    for one point (:func:`spectral_rod.rod.collocation.driver.collocation_point`), the
+    large-twist route :func:`_one_characteristic`; ``python -m pytest -m bench`` measures both
+    scalar loops."""
     if not (isinstance(twist_angle, (float, int)) and isinstance(nu, (float, int))
             and isinstance(tol, float) and _lean_degree(n)
             and method in ("auto", "collocation", "characteristic")

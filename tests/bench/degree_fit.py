@@ -4,7 +4,7 @@
 
 On a grid (Omega(L) = 0, 1, ..., 49; nu in {1.05, 1.5, 2, 4, 10, 100}) the mode's tail at every
 even degree 8..122 gives, for tol = 1e-2, ..., 1e-12, the degree ``need`` from which on the
-tail's part of the estimate stays <= TRUNCATION_SHARE tol (what the degree loop asks for). A
+tail's part of the estimate stays <= truncation_share(tol) tol (what the degree loop asks for). A
 formula n0 costs about n0^2 a point, plus a second solve at the raised degree where n0 < need;
 the search minimises that cost over ``need``^2, averaged over the points and then over the tols,
 with at most 0.5 % of the points short at any tol (each raise is a second call, whose fixed
@@ -22,7 +22,8 @@ import numpy as np
 
 from spectral_rod.rod.collocation.driver import pick_family
 from spectral_rod.rod.collocation.eigensolver import solve_points
-from spectral_rod.rod.collocation.resolution import TRUNCATION_SHARE, truncation_error
+from spectral_rod.rod.collocation.resolution import _big_l, truncation_error
+from spectral_rod.rod.collocation.tuning import truncation_share
 
 TOLS = 10.0 ** -np.arange(2, 13)
 LIMIT = 0.005  # the largest share of points short of `need` at any tol
@@ -33,7 +34,7 @@ def tail_parts() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     (degrees x points)."""
     om, nu = (a.ravel() for a in np.meshgrid(np.arange(50.0), [1.05, 1.5, 2.0, 4.0, 10.0, 100.0]))
     degrees = np.arange(8, 124, 2)
-    part = np.array([truncation_error(pick_family(*solve_points(n, om, nu, 1e-14)[:2])[2])
+    part = np.array([truncation_error(pick_family(*solve_points(n, om, nu, 1e-14)[:2])[2], n)
                      for n in degrees])
     return om, degrees, part
 
@@ -42,7 +43,7 @@ def needed_degrees(degrees: np.ndarray, part: np.ndarray) -> np.ndarray:
     """The needed degree per tol and point (tols x points)."""
     need = []
     for tol in TOLS:
-        short = part > TRUNCATION_SHARE * tol
+        short = part > truncation_share(tol) * tol
         last = np.where(short.any(0), short.shape[0] - 1 - np.argmax(short[::-1], axis=0), -1)
         need.append(degrees[np.minimum(last + 1, degrees.size - 1)])
     return np.array(need)
@@ -56,8 +57,9 @@ def step_gain(part: np.ndarray) -> np.ndarray:
     return now[sel] / after[sel]
 
 
-#: L = log10(1/t) >= 3.5, t = TRUNCATION_SHARE tol, per tol (a column).
-BIG_L = np.maximum(-np.log10(TRUNCATION_SHARE * TOLS), 3.5)[:, None]
+#: L per tol (a column): log10(1/t) >= 3.5, t = truncation_share(tol) tol, at tol <= TIGHT_TOL;
+#: less LOOSE_L_OFFSET, >= LOOSE_L_MIN, above (resolution._big_l).
+BIG_L = np.array([_big_l(float(tol)) for tol in TOLS])[:, None]
 
 
 def fitted_degrees(om: np.ndarray, fit) -> np.ndarray:
@@ -100,7 +102,8 @@ def main() -> None:
     gain = step_gain(part)
     print(f"a step of 2 divides the tail's part by {gain.min():.1f} at least, median "
           f"{np.median(gain):.0f} ({gain.size} steps)")
-    report("before (at t = TRUNCATION_SHARE tol)", previous(om), need)
+    report("at the tols' L (resolution._big_l)", fitted_degrees(om, (5.0, 0.4, 0.3, 1.0)), need)
+    report("before (at t = truncation_share(tol) tol)", previous(om), need)
     grid = itertools.product(np.arange(-2.0, 8.01, 0.5), np.arange(-0.5, 1.01, 0.1),
                              np.arange(0.0, 0.81, 0.05), np.arange(-1.0, 2.01, 0.25))
     best = min(grid, key=lambda fit: objective(fitted_degrees(om, fit), need))

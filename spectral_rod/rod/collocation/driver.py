@@ -5,10 +5,10 @@ For each point: an a priori degree from the mode's wavenumber (in an array call,
 groups may be pooled at a higher degree of the call where that is cheaper,
 :func:`solve_degrees`), the lowest eigenvalue of both mode families at that degree
 (:func:`.eigensolver.solve_points`, the engine), the family rule (:func:`pick_family`), the
-error estimate from the
-computed mode's Chebyshev coefficients (:mod:`.resolution`), plus, above the default tol, the
-eigenvalue iteration's allowance (:func:`.eigensolver.iteration_allowance`); where the estimate's
-tail part misses a tenth of the tolerance (:func:`.resolution.shortfall`) the degree is raised,
+error estimate from the computed mode's Chebyshev coefficients (:mod:`.resolution`), plus,
+above the default tol, the eigenvalue iteration's allowance
+(:func:`.tuning.iteration_allowance`); where the estimate's tail part misses its share of the
+tolerance (:func:`.tuning.truncation_share`; :func:`.resolution.shortfall`) the degree is raised,
 by 2 per factor 10 short and at most ~12 % (:func:`.resolution.raised_degree`), until it is met or
 n = :data:`N_MAX` (no raise where the round-off floor alone exceeds the tolerance); a point is
 converged where the whole estimate is <= tol. Inputs are validated by the caller
@@ -263,7 +263,7 @@ def _degree_loop(points: Any, tw: Any, nu: Any, n: int | None, tol: float
         deg, may_raise = points.full(tw, n), False
     lam, tails, by_kernel = points.solve(tw, nu, deg, rtol)
     p, fam, tail = pick_family(lam, tails, xp)
-    short = shortfall(tail, tol, xp)
+    short = shortfall(tail, tol, deg, xp)
     todo = points.nonzero(may_raise & (short > 1.0) & (deg < N_MAX))
     while points.size(todo):
         deg = points.put(deg, todo, raised_degree(points.take(deg, todo),
@@ -274,7 +274,7 @@ def _degree_loop(points: Any, tw: Any, nu: Any, n: int | None, tol: float
         p, fam, tail = (points.put(old, todo, new) for old, new in zip((p, fam, tail), sub,
                                                                        strict=True))
         by_kernel = points.put(by_kernel, todo, kernel)
-        short = points.put(short, todo, shortfall(sub[2], tol, xp))
+        short = points.put(short, todo, shortfall(sub[2], tol, points.take(deg, todo), xp))
         todo = points.subset(todo, (points.take(short, todo) > 1.0)
                              & (points.take(deg, todo) < N_MAX))
     err = error_estimate(tail, tw, deg, xp) + iteration_allowance(tol)

@@ -8,8 +8,9 @@ an edit of this module only.
 
 What ``tol`` sets (:func:`solver_settings`)
 --------------------------------------------
-* the tail target ``TRUNCATION_SHARE tol``: the degree holds the tail's part of the error
-  estimate to it (:func:`.resolution.initial_degree`, :func:`.resolution.shortfall`);
+* the tail target ``truncation_share(tol) tol``: the degree holds the tail's part of the error
+  estimate to it (:func:`.resolution.initial_degree`, :func:`.resolution.shortfall`): a tenth
+  (TRUNCATION_SHARE) up to TIGHT_TOL, LOOSE_SHARE above (:func:`truncation_share`);
 * the iteration's ``rtol = max(0.01 tol, POWER_RTOL)``: the accepted first-order error bound of
   the eigenvalue iteration (:func:`iteration_rtol`);
 * the ``allowance`` the iteration may add beyond the calibrated error model, ``rtol`` less the
@@ -18,13 +19,11 @@ What ``tol`` sets (:func:`solver_settings`)
   eigenvalue is the modal quotient instead of the pencil's (:func:`loose_quotient`);
 * the first convergence check: step FIRST_CHECK, LOOSE_FIRST_CHECK from LOOSE_RTOL on, at most
   4 where a ceiling may stop the iteration (:func:`first_check`);
-* the numpy engine's power steps for a few points: 8 from LOOSE_RTOL on, else 16
-  (:func:`power_steps`);
 * the extended-precision quotient: above |Omega| = LONG_TWIST unless the quotient is loose.
 
 >>> s = solver_settings(1e-4)
->>> s.tail_target, round(s.iteration_rtol, 12), round(s.allowance, 12), s.loose_rtol, s.power_steps
-(1e-05, 1e-06, 1e-06, True, 8)
+>>> s.tail_target, round(s.iteration_rtol, 12), round(s.allowance, 12), s.loose_rtol
+(9e-05, 1e-06, 1e-06, True)
 >>> solver_settings(1e-12).allowance
 0.0
 """
@@ -35,17 +34,23 @@ from typing import NamedTuple
 
 __all__ = ["BLOCK_ENTRIES", "CALIBRATED_TOL", "CHUNK", "DENSE_ENTRIES", "FEW_POINTS", "FIRST_CHECK",
            "FIXED_COST", "KERNEL_MAX_SCHUR", "LEAN_FACTOR", "LEAN_MAX_DEGREE", "LONG_TWIST",
-           "LOOSE_DEGREE", "LOOSE_FIRST_CHECK", "LOOSE_RTOL", "POINT_COST", "POWER_RTOL",
-           "POWER_STEPS", "TRUNCATION_SHARE", "SolverSettings",
+           "LOOSE_DEGREE", "LOOSE_FIRST_CHECK", "LOOSE_RTOL", "LOOSE_SHARE", "POINT_COST",
+           "POWER_RTOL", "POWER_STEPS", "TIGHT_TOL", "TRUNCATION_SHARE", "SolverSettings",
            "few_points_limit", "first_check", "iteration_allowance", "iteration_rtol",
-           "loose_quotient", "power_steps", "solver_settings"]
+           "loose_quotient", "solver_settings", "truncation_share"]
 
 # --- what tol sets -------------------------------------------------------------------------
 
-#: The share of tol the degree holds the tail's part of the estimate to: where the estimate
-#: lands just below tol the error itself can come close to it, so the tail is held to a tenth.
-#: ``python tests/bench/accuracy_at_tol.py`` measures what each tol delivers with it.
-TRUNCATION_SHARE = 0.1
+#: The share of tol the degree holds the tail's part of the estimate to, up to TIGHT_TOL: where
+#: the estimate lands just below tol the error itself can come close to it (at tol 1e-12 the
+#: default's sampled errors must stay <= 1e-13), so the tail is held to a tenth there. Above
+#: TIGHT_TOL it is LOOSE_SHARE: the estimate is a calibrated bound there (the error at most
+#: 0.88 of its tail part on the calibration grid, ``python tests/bench/tol_model_fit.py``), and a
+#: tenth would deliver errors ~1e3-1e4 below tol; the rest of tol is the iteration's allowance
+#: (0.01 tol) and round-off. ``python tests/bench/accuracy_at_tol.py`` measures what each tol
+#: delivers; ``python tests/bench/hunt_tol.py`` hunts for misses at every tol. TIGHT_TOL keeps
+#: the degrees of tol <= 1e-10 as they were fitted and measured.
+TRUNCATION_SHARE, LOOSE_SHARE, TIGHT_TOL = 0.1, 0.9, 1e-10
 #: The eigenvalue iteration's smallest accepted first-order error bound (relative), its step
 #: cap, and the step of its first convergence check (then every 2 steps; a check costs about a
 #: step). ``python tests/bench/work_per_point.py`` prints the steps taken.
@@ -67,6 +72,16 @@ LONG_TWIST = 10.0
 #: default of :func:`spectral_rod.critical_load`): the iteration error at its iteration_rtol
 #: (1e-14) is inside the model's measured round-off part.
 CALIBRATED_TOL = 1e-12
+
+
+def truncation_share(tol: float) -> float:
+    """The share of `tol` the degree holds the tail's part of the error estimate to:
+    TRUNCATION_SHARE up to TIGHT_TOL, LOOSE_SHARE above (their comment says why).
+
+    >>> truncation_share(1e-12), truncation_share(1e-4)
+    (0.1, 0.9)
+    """
+    return TRUNCATION_SHARE if tol <= TIGHT_TOL else LOOSE_SHARE
 
 
 def iteration_rtol(tol: float) -> float:
@@ -108,30 +123,23 @@ def first_check(rtol: float, ceiling: bool) -> int:
     return min(first, 4) if ceiling else first
 
 
-def power_steps(rtol: float) -> int:
-    """Power steps k of the numpy engine's dense pencils for a few points
-    (:mod:`.few_points`): 8 (3 squarings) from LOOSE_RTOL on, else 16 (4)."""
-    return 8 if rtol >= LOOSE_RTOL else 16
-
-
 class SolverSettings(NamedTuple):
     """What a requested tol sets (module docstring): the tail target, the iteration's rtol, the
     allowance added to the error estimate, whether the modal quotient is accepted (up to
-    LOOSE_DEGREE), the first check's step, and the dense pencils' power steps."""
+    LOOSE_DEGREE) and the first check's step."""
 
     tail_target: float
     iteration_rtol: float
     allowance: float
     loose_rtol: bool
     first_check: int
-    power_steps: int
 
 
 def solver_settings(tol: float) -> SolverSettings:
     """Every setting of the collocation solver that follows from `tol` (module docstring)."""
     rtol = iteration_rtol(tol)
-    return SolverSettings(TRUNCATION_SHARE * tol, rtol, iteration_allowance(tol),
-                          rtol >= LOOSE_RTOL, first_check(rtol, False), power_steps(rtol))
+    return SolverSettings(truncation_share(tol) * tol, rtol, iteration_allowance(tol),
+                          rtol >= LOOSE_RTOL, first_check(rtol, False))
 
 
 # --- which engine answers a call shape -------------------------------------------------------
