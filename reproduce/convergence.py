@@ -268,8 +268,8 @@ def _trade_text(trade: pd.DataFrame) -> str:
     loop's cost over the tightest tol's and the largest error over tol."""
     last = f"{TRADE_TOLS[-1]:g}"
     parts = [f"tol {r.tol:g}: batch {r.batch_cost_ratio:.2f}, scalar calls "
-             f"{r.scalar_cost_ratio:.2f} of the cost at tol {last}, largest error "
-             f"{max(r.batch_max_rel_error, r.scalar_max_rel_error) / r.tol:.1e} tol"
+             f"{r.scalar_cost_ratio:.2f} of the cost at tol {last}, largest error over tol "
+             f"{max(r.batch_max_rel_error, r.scalar_max_rel_error) / r.tol:.1e}"
              for r in trade.itertuples() if r.tol > TRADE_TOLS[-1]]
     return ("The degree falls with tol as far as the error model lets the estimate certify "
             "it (the degree groups pooled, driver.solve_degrees); in this run, against the "
