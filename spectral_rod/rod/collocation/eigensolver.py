@@ -207,10 +207,15 @@ class ModalParts(NamedTuple):
 
 
 def _coefficients(twist: NDArray[np.floating], nu: NDArray[np.floating]) -> NDArray[Any]:
-    """:func:`.discretisation.term_coefficients` (points, terms); one float64 point in Python
-    floats (a few us instead of ~20 us of per-term numpy calls, for scalar calls)."""
+    """:func:`.discretisation.term_coefficients` (points, terms); one point in scalars (Python
+    floats, or numpy ``longdouble`` scalars: the same operations, a few us instead of ~20 us
+    of per-term array calls, for scalar calls)."""
     if twist.size == 1 and twist.dtype == nu.dtype == np.float64:
         return term_coefficients(float(twist[0]), float(nu[0]))[None]
+    if twist.size == 1:
+        kind = np.result_type(twist, nu, 1.0).type
+        om, nv = kind(twist.reshape(-1)[0]), kind(nu.reshape(-1)[0])
+        return np.array([[t.coefficient(om, nv) for t in INST1]], dtype=kind)
     return term_coefficients(twist, nu)
 
 
@@ -554,11 +559,15 @@ def _rayleigh_sums(op: FamilyOperator, twist: NDArray[np.float64], nu: NDArray[n
     In extended precision the products are the C kernel's double-double ones where it is
     installed (:func:`.modal_kernel.pencil_terms`; this function 0.4-1.6 µs a point at n = 24-56
     with them against 2.8-14 µs with numpy's ``longdouble`` products,
-    ``tests/bench/kernel_range.py``), summed in ``dtype``."""
-    if dtype is np.longdouble and modal_kernel.available():
-        hi, lo = modal_kernel.pencil_terms(*_term_matrices(op.n, op.family), right, left)
+    ``tests/bench/kernel_range.py``), without it for a few points (:data:`.tuning.DENSE_ENTRIES`)
+    the split products of :func:`_split_terms` (as accurate, in a few BLAS calls), else numpy's
+    ``longdouble`` products; summed in ``dtype``."""
+    few = right.shape[0] * right.shape[1] ** 2 <= DENSE_ENTRIES
+    if dtype is np.longdouble and (few or modal_kernel.available()):
+        hi, lo = (modal_kernel.pencil_terms(*_term_matrices(op.n, op.family), right, left)
+                  if modal_kernel.available() else _split_terms(op.n, op.family, right, left))
         terms = hi.astype(dtype) + lo.astype(dtype)
-    elif dtype is np.float64 and right.shape[0] * right.shape[1] ** 2 <= DENSE_ENTRIES:
+    elif dtype is np.float64 and few:
         # a few points: every term as a full (m, m) matrix, two calls instead of ~4 a block
         pieces = _dense_terms(op.n, op.family)
         px = (right @ pieces).reshape(right.shape[0], len(INST1), -1)
@@ -583,6 +592,58 @@ def _dense_terms(n: int, family: str) -> NDArray[np.float64]:
     op = family_operator(n, family)
     return np.ascontiguousarray(np.swapaxes(op.pieces, 1, 2).transpose(1, 0, 2).reshape(
         op.pieces.shape[1], -1))
+
+
+def _split_bits(m: int) -> int:
+    """Bits kept in the leading part of each factor of :func:`_split_terms`: a sum of m^2
+    products of three such parts is exact in double where 3 bits + 2 log2(m) <= 53."""
+    return (53 - 2 * math.ceil(math.log2(max(m, 2)))) // 3
+
+
+def _split(v: NDArray[np.float64], bits: int) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """v = v1 + v2 exactly, per row: v1 is v rounded to a multiple of 2^(E - bits), with
+    2^E > max |row| (at most 2^bits such units), v2 the rest (|v2| <= 2^(E - bits - 1))."""
+    unit = np.ldexp(1.0, np.frexp(np.abs(v).max(axis=-1, keepdims=True))[1] - bits)
+    v1 = np.rint(v / unit) * unit
+    return v1, v - v1
+
+
+@lru_cache(maxsize=128)
+def _split_pieces(n: int, family: str) -> tuple[NDArray[np.float64], NDArray[np.float64], int]:
+    """:func:`_dense_terms` split as P = P1 + P2 exactly, each term's block P1_i rounded to a
+    multiple of its own 2^(E_i - bits) (:func:`_split_bits`), and the bits."""
+    pieces = _dense_terms(n, family)
+    m = pieces.shape[0]
+    bits = _split_bits(m)
+    blocks = pieces.reshape(m, len(INST1), -1)
+    unit = np.ldexp(1.0, np.frexp(np.abs(blocks).max(axis=(0, 2)))[1] - bits)[:, None]
+    lead = (np.rint(blocks / unit) * unit).reshape(pieces.shape)
+    lead.setflags(write=False)
+    return lead, pieces - lead, bits
+
+
+def _split_terms(n: int, family: str, right: NDArray[np.float64], left: NDArray[np.float64]
+                 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """The bilinear forms y^T P_i x of :func:`_rayleigh_sums` as hi + lo (points, terms), to
+    double-double accuracy from BLAS products in double (the numpy engine's form of the
+    kernel's :func:`.modal_kernel.pencil_terms`): with x = x1 + x2, y = y1 + y2 and
+    P_i = P1_i + P2_i split exactly (:func:`_split`, :func:`_split_pieces`), hi = y1^T P1_i x1
+    is exact in double (every product and partial sum is a multiple of one unit below 2^53
+    of them), and lo = y2^T P_i x + y1^T (P2_i x + P1_i x2), whose parts are 2^-bits of the
+    whole, carries an error ~2^-bits m eps |y| |P_i| |x| (bits = 13-14 at n = 24-64: below
+    the ~m 2^-64 |y| |P_i| |x| of ``longdouble`` sums). ``tests/test_modal_kernel.py`` compares
+    the quotient with 50-digit sums."""
+    lead, rest, bits = _split_pieces(n, family)
+    points, m = right.shape
+    x1, x2 = _split(right, bits)
+    y1, y2 = _split(left, bits)
+    prod = np.stack((x1, right, x2)) @ lead  # P1 x1, P1 x, P1 x2, rows (terms m)
+    px2 = right @ rest
+    shape = (points, len(INST1), m)
+    hi = np.einsum("ptj,pj->pt", prod[0].reshape(shape), y1)
+    lo = (np.einsum("ptj,pj->pt", (prod[1] + px2).reshape(shape), y2)
+          + np.einsum("ptj,pj->pt", (px2 + prod[2]).reshape(shape), y1))
+    return hi, lo
 
 
 @lru_cache(maxsize=128)
@@ -779,8 +840,157 @@ def solve_point(n: int, twist: float, nu: float, rtol: float
             loose_quotient(rtol, n))
         if _accepted(status)[0]:
             return lam1[0].tolist(), tails1[0].tolist(), True
+    elif not modal_kernel.available() and (n - 1) ** 2 <= DENSE_ENTRIES:
+        lean = _numpy_point(n, twist, nu, rtol)
+        if lean is not None:
+            return lean[0], lean[1], False
     sol = solve_points(n, np.array([twist]), np.array([nu]), rtol)
     return sol.lam[:, 0].tolist(), sol.tails[:, 0].tolist(), bool(sol.by_kernel[0])
+
+
+class _PointFamily(NamedTuple):
+    """A family at degree n laid out for the numpy reference's one-point path
+    (:func:`_numpy_point`): the modal unknowns in the order (eliminated block, Schur block) of
+    :class:`ModalParts`, as the kernel's ``family_point`` holds them."""
+
+    op: FamilyOperator
+    lam_e: NDArray[np.float64]  # Lambda of the eliminated block
+    lam_s: NDArray[np.float64]  # Lambda of the Schur block
+    equations: tuple[int, int]  # the equations (0: omega1) of the e and s blocks
+    coupling_e: NDArray[np.float64]  # (m, m): G_es in the (e, s) corner, zeros elsewhere
+    coupling_s: NDArray[np.float64]  # (m, m): G_se in the (s, e) corner
+    start: NDArray[np.float64]  # the start vector, right and left, (2 m,)
+    right: NDArray[np.float64]  # c = right @ z
+    left: NDArray[np.float64]  # y = w @ left
+
+
+@lru_cache(maxsize=64)
+def _point_family(n: int, family: str) -> _PointFamily:
+    """:class:`_PointFamily` of (n, family), built once from :func:`modal_family`."""
+    mf = modal_family(n, family)
+    k1, m = mf.lam1.size, mf.lam1.size + mf.lam2.size
+    order = np.arange(m) if mf.schur == 2 else np.r_[np.arange(k1, m), np.arange(k1)]
+    k_e = k1 if mf.schur == 2 else m - k1
+    g_es, g_se = (mf.g12, mf.g21) if mf.schur == 2 else (mf.g21, mf.g12)
+    coupling_e, coupling_s = np.zeros((m, m)), np.zeros((m, m))
+    coupling_e[:k_e, k_e:], coupling_s[k_e:, :k_e] = g_es, g_se
+    right, left = np.zeros((m, m)), np.zeros((m, m))
+    right[:k1, :k1], right[k1:, k1:] = mf.u1, mf.u2
+    left[:k1, :k1], left[k1:, k1:] = mf.left1, mf.left2
+    start = _start_vector(m)[order]
+    lams = (mf.lam1, mf.lam2) if mf.schur == 2 else (mf.lam2, mf.lam1)
+    return _PointFamily(mf.op, lams[0], lams[1], (0, 1) if mf.schur == 2 else (1, 0),
+                        coupling_e, coupling_s, np.concatenate((start, start)),
+                        np.ascontiguousarray(right[:, order]), np.ascontiguousarray(left[order]))
+
+
+def _point_inverse(pf: _PointFamily, coef: list[float]) -> NDArray[np.float64] | None:
+    """((K - SHIFT)^{-1}, (K - SHIFT)^{-T}) of one point as one block-diagonal (2 m, 2 m)
+    matrix, so that a step of right and left vectors is one product (the operator of
+    :class:`_DenseShifted`, by LAPACK's pivoted LU); None where K - SHIFT is singular."""
+    from scipy.linalg.lapack import dgetrf, dgetri
+
+    (s1, z1, c1), (s2, z2, c2) = MODAL_TERMS
+    own2, own0, cpl = (coef[s1], coef[s2]), (coef[z1], coef[z2]), (coef[c1], coef[c2])
+    qe, qs = pf.equations
+    shifted = 2.0 * cpl[qe] * pf.coupling_e + 2.0 * cpl[qs] * pf.coupling_s  # d/ds = 2 d/dx
+    shifted.flat[::shifted.shape[0] + 1] = np.concatenate(
+        (own0[qe] - own2[qe] * pf.lam_e, own0[qs] - own2[qs] * pf.lam_s)) - SHIFT
+    lu, piv, info = dgetrf(shifted)
+    if info == 0:
+        inverse, info = dgetri(lu, piv, overwrite_lu=1)
+    if info != 0:
+        return None
+    m = inverse.shape[0]
+    pair = np.zeros((2 * m, 2 * m))
+    pair[:m, :m], pair[m:, m:] = inverse, inverse.T
+    return pair
+
+
+def _point_iterate(pair: NDArray[np.float64], start: NDArray[np.float64], rtol: float,
+                   ceiling: float | None, first: int, max_steps: int
+                   ) -> tuple[float, NDArray[np.float64], int]:
+    """:func:`_iterate` for one point, right and left vectors as one (2 m,) vector: lambda,
+    the unit vectors (2, m) and the kernel's status code. The test is :func:`_lanes_test`'s
+    from one Gram product: with K x = SHIFT x + p (p the step's input), rq = SHIFT + y.p / y.x
+    and the residuals are p - (rq - SHIFT) x and q - (rq - SHIFT) y up to the vectors' scales,
+    so |r| |l| / |y.x| needs no normalisation (the vectors are normalised at each test)."""
+    m = start.size // 2
+    v = start
+    for step in range(1, max_steps + 1):
+        prev, v = v, pair @ v
+        if step < first or step % 2:
+            continue
+        both = np.concatenate((v, prev)).reshape(4, m)
+        (xx, _, _, _), (yx, yy, yp, _) = (both[:2] @ both.T).tolist()
+        mu = yp / yx if yx else math.nan
+        rq = SHIFT + mu
+        res = both[2:] - mu * both[:2]
+        rx, ry = np.einsum("ij,ij->i", res, res).tolist()
+        bound = math.sqrt(rx * ry) / abs(yx) if yx else math.nan
+        conv = converged(rq, bound, rtol, math)
+        high = not conv and ceiling is not None and rq - 100.0 * bound > ceiling
+        unit = both[:2] * np.array([[_inverse_norm(xx)], [_inverse_norm(yy)]])
+        if conv or high or step + 2 > max_steps:
+            status = (modal_kernel.CONVERGED if conv else modal_kernel.ABOVE if high
+                      else modal_kernel.NOT_CONVERGED)
+            return rq, unit, status
+        v = unit.reshape(-1)
+    raise AssertionError("unreachable: the last step is a test")  # max_steps >= first
+
+
+def _inverse_norm(square: float) -> float:
+    """1 / sqrt(square), nan for a zero vector (as numpy's 1 / 0 * 0)."""
+    return 1.0 / math.sqrt(square) if square > 0.0 else math.nan
+
+
+def _point_family_solve(n: int, family: str, coef: list[float], extended: bool, twist: float,
+                        nu: float, rtol: float, ceiling: float | None, first: int
+                        ) -> tuple[float, float, int]:
+    """One family at one point by the numpy reference, as the kernel's ``family_point``:
+    lambda, the tail (inf unless converged) and the status code; `extended`: the pencil's
+    quotient is summed in extended precision (:func:`_extended`)."""
+    pf = _point_family(n, family)
+    pair = _point_inverse(pf, coef)
+    if pair is None:
+        return math.nan, math.inf, modal_kernel.NOT_CONVERGED
+    lam, unit, status = _point_iterate(pair, pf.start, rtol, ceiling, first, POWER_STEPS)
+    if status != modal_kernel.CONVERGED:
+        return lam, math.inf, status
+    vec = pf.right @ unit[0]
+    coefficients = np.abs(pf.op.tail_rows @ vec)
+    last, other = float(coefficients[:4].max()), float(coefficients[4:].max())
+    if not (math.isfinite(last) and math.isfinite(other)):
+        return lam, math.inf, modal_kernel.NOT_CONVERGED
+    scale = max(last, other)
+    tail = last / scale if scale > 0.0 else math.inf
+    if not loose_quotient(rtol, n):
+        dtype = np.longdouble if extended else np.float64
+        lam = float(_rayleigh_sums(pf.op, np.array([twist]), np.array([nu]),
+                                   (unit[1] @ pf.left)[None], vec[None], dtype)[0])
+        if not lam >= SHIFT:  # a nan quotient is not an answer
+            return lam, tail, modal_kernel.NOT_CONVERGED
+    return lam, tail, status
+
+
+def _numpy_point(n: int, twist: float, nu: float, rtol: float
+                 ) -> tuple[list[float], list[float]] | None:
+    """:func:`solve_point` by the numpy reference without a batch's arrays (the kernel's
+    ``modal_points`` on one point, in numpy): the symmetric family, then the antisymmetric one
+    until shown above (1 + CLOSE_REL) times it, its first test at step <= 4; None where a
+    family is not accepted (:func:`solve_points` then decides, with the full ``eig``)."""
+    coef = term_coefficients(twist, nu).tolist()
+    ext = bool(_extended(twist, n, rtol))
+    first = first_check(rtol, False)
+    lam0, tail0, status0 = _point_family_solve(n, FAMILIES[0], coef, ext, twist, nu, rtol, None,
+                                               first)
+    if status0 != modal_kernel.CONVERGED:
+        return None
+    lam1, tail1, status1 = _point_family_solve(n, FAMILIES[1], coef, ext, twist, nu, rtol,
+                                               lam0 * (1 + CLOSE_REL), min(first, 4))
+    if status1 not in (modal_kernel.CONVERGED, modal_kernel.ABOVE):
+        return None
+    return [lam0, lam1], [tail0, tail1]
 
 
 def _solve_lanes(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol: float
