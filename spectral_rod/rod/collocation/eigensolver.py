@@ -630,9 +630,9 @@ def _split_terms(n: int, family: str, right: NDArray[np.float64], left: NDArray[
     P_i = P1_i + P2_i split exactly (:func:`_split`, :func:`_split_pieces`), hi = y1^T P1_i x1
     is exact in double (every product and partial sum is a multiple of one unit below 2^53
     of them), and lo = y2^T P_i x + y1^T (P2_i x + P1_i x2), whose parts are 2^-bits of the
-    whole, carries an error ~2^-bits m eps |y| |P_i| |x| (bits = 13-14 at n = 24-64: below
-    the ~m 2^-64 |y| |P_i| |x| of ``longdouble`` sums). ``tests/test_modal_kernel.py`` compares
-    the quotient with 50-digit sums."""
+    whole, carries an error within 4 2^-bits m eps sum |y| |P_i| |x| (bits = 13-14 at
+    n = 24-64: below the ~m 2^-64 sum |y| |P_i| |x| of ``longdouble`` sums).
+    ``tests/test_modal_kernel.py`` compares the terms and the quotient with 50-digit sums."""
     lead, rest, bits = _split_pieces(n, family)
     points, m = right.shape
     x1, x2 = _split(right, bits)
