@@ -71,11 +71,13 @@ def test_dense_and_schur_forms_of_the_numpy_iteration_agree(n, family):
         assert np.min(np.abs(np.einsum("ij,ij->i", got, ref))) >= 1 - 1e-8
 
 
-@pytest.mark.parametrize("n", [12, 22, 40])
+@pytest.mark.parametrize("n", [12, 22, 40, 56])
 @pytest.mark.parametrize("family", ["symmetric", "antisymmetric"])
 def test_one_point_iteration_agrees_with_the_batched_numpy_iteration(n, family):
-    # the numpy reference's one-point path (one block-diagonal inverse, the test from one Gram
+    # the numpy reference's one-point path (one block-diagonal inverse, whole up to
+    # POINT_SCHUR_DEGREE and through the Schur complement above; the test from one Gram
     # product) against its batched iteration on the same points: the same eigenpair to rounding
+    assert (n <= E.POINT_SCHUR_DEGREE) == (n <= 40)
     mf = E.modal_family(n, family)
     pf = E._point_family(n, family)
     twist, nu = _points(n, 6)

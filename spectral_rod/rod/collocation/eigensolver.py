@@ -60,6 +60,7 @@ from spectral_rod.rod.collocation.tuning import (
     KERNEL_MAX_SCHUR,
     LEAN_MAX_DEGREE,
     LONG_TWIST,
+    POINT_SCHUR_DEGREE,
     POWER_RTOL,
     POWER_STEPS,
     few_points_limit,
@@ -541,6 +542,7 @@ def pencil_rayleigh_quotient(op: FamilyOperator, twist: NDArray[np.float64],
 
 #: The terms of INST1 whose blocks are B's (the own field, order 0): y^T B x is their sum.
 _MASS_TERMS = [i for i, t in enumerate(INST1) if t.field == t.equation and t.order == 0]
+_MASS_INDEX = np.array(_MASS_TERMS)
 
 
 @lru_cache(maxsize=128)
@@ -582,7 +584,7 @@ def _rayleigh_sums(op: FamilyOperator, twist: NDArray[np.float64], nu: NDArray[n
             px = (x[:, cols[f]] @ blocks).reshape(x.shape[0], len(idx), -1)
             terms[:, idx] = np.einsum("pj,pij->pi", y[:, cols[e]], px)
     coef = _coefficients(twist.astype(dtype), nu.astype(dtype))
-    return ((coef * terms).sum(axis=1) / terms[:, _MASS_TERMS].sum(axis=1)).astype(np.float64)
+    return ((coef * terms).sum(axis=1) / terms[:, _MASS_INDEX].sum(axis=1)).astype(np.float64)
 
 
 @lru_cache(maxsize=128)
@@ -602,9 +604,11 @@ def _split_bits(m: int) -> int:
 
 def _split(v: NDArray[np.float64], bits: int) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """v = v1 + v2 exactly, per row: v1 is v rounded to a multiple of 2^(E - bits), with
-    2^E > max |row| (at most 2^bits such units), v2 the rest (|v2| <= 2^(E - bits - 1))."""
-    unit = np.ldexp(1.0, np.frexp(np.abs(v).max(axis=-1, keepdims=True))[1] - bits)
-    v1 = np.rint(v / unit) * unit
+    2^E > max |row| (at most 2^bits such units), v2 the rest (|v2| <= 2^(E - bits - 1)).
+    The rounding is the addition of sigma = 1.5 2^(E + 52 - bits), whose binade has that unit
+    as its spacing, and its exact subtraction."""
+    sigma = np.ldexp(0.75, np.frexp(np.abs(v).max(axis=-1, keepdims=True))[1] + (53 - bits))
+    v1 = (v + sigma) - sigma
     return v1, v - v1
 
 
@@ -635,15 +639,17 @@ def _split_terms(n: int, family: str, right: NDArray[np.float64], left: NDArray[
     ``tests/test_modal_kernel.py`` compares the terms and the quotient with 50-digit sums."""
     lead, rest, bits = _split_pieces(n, family)
     points, m = right.shape
-    x1, x2 = _split(right, bits)
-    y1, y2 = _split(left, bits)
-    prod = np.stack((x1, right, x2)) @ lead  # P1 x1, P1 x, P1 x2, rows (terms m)
+    (x1, y1), (x2, y2) = (part.reshape(2, points, m) for part in
+                          _split(np.concatenate((right, left)), bits))
+    # P1 x1, P1 x, P1 x2 (rows: terms m) in one product (concatenate: cheaper than stack)
+    prod = (np.concatenate((x1, right, x2)) @ lead).reshape(3, points, -1)
     px2 = right @ rest
     shape = (points, len(INST1), m)
-    hi = np.einsum("ptj,pj->pt", prod[0].reshape(shape), y1)
-    lo = (np.einsum("ptj,pj->pt", (prod[1] + px2).reshape(shape), y2)
-          + np.einsum("ptj,pj->pt", (px2 + prod[2]).reshape(shape), y1))
-    return hi, lo
+    # (P1 x1, P2 x + P1 x2) . y1 in one product, a stack of (terms, m) @ (m, 1) per point
+    by_y1 = (np.concatenate((prod[0], px2 + prod[2])).reshape(2, *shape)
+             @ y1[:, :, None])[..., 0]
+    lo = by_y1[1] + ((prod[1] + px2).reshape(shape) @ y2[:, :, None])[..., 0]
+    return by_y1[0], lo
 
 
 @lru_cache(maxsize=128)
@@ -857,8 +863,8 @@ class _PointFamily(NamedTuple):
     lam_e: NDArray[np.float64]  # Lambda of the eliminated block
     lam_s: NDArray[np.float64]  # Lambda of the Schur block
     equations: tuple[int, int]  # the equations (0: omega1) of the e and s blocks
-    coupling_e: NDArray[np.float64]  # (m, m): G_es in the (e, s) corner, zeros elsewhere
-    coupling_s: NDArray[np.float64]  # (m, m): G_se in the (s, e) corner
+    g_es: NDArray[np.float64]
+    g_se: NDArray[np.float64]
     start: NDArray[np.float64]  # the start vector, right and left, (2 m,)
     right: NDArray[np.float64]  # c = right @ z
     left: NDArray[np.float64]  # y = w @ left
@@ -870,40 +876,67 @@ def _point_family(n: int, family: str) -> _PointFamily:
     mf = modal_family(n, family)
     k1, m = mf.lam1.size, mf.lam1.size + mf.lam2.size
     order = np.arange(m) if mf.schur == 2 else np.r_[np.arange(k1, m), np.arange(k1)]
-    k_e = k1 if mf.schur == 2 else m - k1
     g_es, g_se = (mf.g12, mf.g21) if mf.schur == 2 else (mf.g21, mf.g12)
-    coupling_e, coupling_s = np.zeros((m, m)), np.zeros((m, m))
-    coupling_e[:k_e, k_e:], coupling_s[k_e:, :k_e] = g_es, g_se
     right, left = np.zeros((m, m)), np.zeros((m, m))
     right[:k1, :k1], right[k1:, k1:] = mf.u1, mf.u2
     left[:k1, :k1], left[k1:, k1:] = mf.left1, mf.left2
     start = _start_vector(m)[order]
     lams = (mf.lam1, mf.lam2) if mf.schur == 2 else (mf.lam2, mf.lam1)
     return _PointFamily(mf.op, lams[0], lams[1], (0, 1) if mf.schur == 2 else (1, 0),
-                        coupling_e, coupling_s, np.concatenate((start, start)),
+                        g_es, g_se, np.concatenate((start, start)),
                         np.ascontiguousarray(right[:, order]), np.ascontiguousarray(left[order]))
 
 
 def _point_inverse(pf: _PointFamily, coef: list[float]) -> NDArray[np.float64] | None:
     """((K - SHIFT)^{-1}, (K - SHIFT)^{-T}) of one point as one block-diagonal (2 m, 2 m)
-    matrix, so that a step of right and left vectors is one product (the operator of
-    :class:`_DenseShifted`, by LAPACK's pivoted LU); None where K - SHIFT is singular."""
+    matrix, so that a step of right and left vectors is one product. K - SHIFT =
+    [[D_e - SHIFT, a G_es], [b G_se, D_s - SHIFT]] (:class:`_ShiftedModal`) is inverted by
+    LAPACK's pivoted LU, whole up to degree :data:`.tuning.POINT_SCHUR_DEGREE` (fewer numpy
+    calls), above it through its Schur complement S (a quarter of the LU's work):
+
+        (K - SHIFT)^{-1} = [[R + a b Y G_se R, -a Y], [-b S^{-1} G_se R, S^{-1}]],
+        R = (D_e - SHIFT)^{-1},  Y = R G_es S^{-1}.
+
+    None where the matrix inverted is singular (SHIFT an eigenvalue)."""
     from scipy.linalg.lapack import dgetrf, dgetri
 
     (s1, z1, c1), (s2, z2, c2) = MODAL_TERMS
     own2, own0, cpl = (coef[s1], coef[s2]), (coef[z1], coef[z2]), (coef[c1], coef[c2])
     qe, qs = pf.equations
-    shifted = 2.0 * cpl[qe] * pf.coupling_e + 2.0 * cpl[qs] * pf.coupling_s  # d/ds = 2 d/dx
-    shifted.flat[::shifted.shape[0] + 1] = np.concatenate(
-        (own0[qe] - own2[qe] * pf.lam_e, own0[qs] - own2[qs] * pf.lam_s)) - SHIFT
-    lu, piv, info = dgetrf(shifted)
+    a, b = 2.0 * cpl[qe], 2.0 * cpl[qs]  # d/ds = 2 d/dx
+    d_e = own0[qe] - own2[qe] * pf.lam_e - SHIFT
+    d_s = own0[qs] - own2[qs] * pf.lam_s - SHIFT
+    k_e, k_s = pf.g_es.shape
+    m = k_e + k_s
+    if pf.op.n <= POINT_SCHUR_DEGREE:
+        shifted = np.zeros((m, m))
+        shifted[:k_e, k_e:], shifted[k_e:, :k_e] = a * pf.g_es, b * pf.g_se
+        shifted.flat[::m + 1] = np.concatenate((d_e, d_s))
+        lu, piv, info = dgetrf(shifted, overwrite_a=1)
+        if info == 0:
+            inverse, info = dgetri(lu, piv, overwrite_lu=1)
+        if info != 0:
+            return None
+        pair = np.zeros((2 * m, 2 * m))
+        pair[:m, :m], pair[m:, m:] = inverse, inverse.T
+        return pair
+    r = 1.0 / d_e
+    g_r = pf.g_se * r  # G_se R
+    schur = (-a * b) * (g_r @ pf.g_es)
+    schur.flat[::k_s + 1] += d_s
+    lu, piv, info = dgetrf(schur, overwrite_a=1)
     if info == 0:
-        inverse, info = dgetri(lu, piv, overwrite_lu=1)
+        schur_inv, info = dgetri(lu, piv, overwrite_lu=1)
     if info != 0:
         return None
-    m = inverse.shape[0]
     pair = np.zeros((2 * m, 2 * m))
-    pair[:m, :m], pair[m:, m:] = inverse, inverse.T
+    y = (r[:, None] * pf.g_es) @ schur_inv
+    pair[:k_e, :k_e] = (a * b) * (y @ g_r)
+    pair.flat[:(2 * m + 1) * k_e:2 * m + 1] += r
+    pair[:k_e, k_e:m] = -a * y
+    pair[k_e:m, :k_e] = -b * (schur_inv @ g_r)
+    pair[k_e:m, k_e:m] = schur_inv
+    pair[m:, m:] = pair[:m, :m].T
     return pair
 
 

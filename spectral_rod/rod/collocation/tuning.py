@@ -35,8 +35,8 @@ from typing import NamedTuple
 
 __all__ = ["BLOCK_ENTRIES", "CALIBRATED_TOL", "CHUNK", "DENSE_ENTRIES", "FEW_POINTS", "FIRST_CHECK",
            "FIXED_COST", "KERNEL_MAX_SCHUR", "LEAN_FACTOR", "LEAN_MAX_DEGREE", "LONG_TWIST",
-           "LOOSE_DEGREE", "LOOSE_FIRST_CHECK", "LOOSE_RTOL", "POINT_COST", "POWER_RTOL",
-           "POWER_STEPS", "TRUNCATION_SHARE", "SolverSettings",
+           "LOOSE_DEGREE", "LOOSE_FIRST_CHECK", "LOOSE_RTOL", "POINT_COST",
+           "POINT_SCHUR_DEGREE", "POWER_RTOL", "POWER_STEPS", "TRUNCATION_SHARE", "SolverSettings",
            "few_points_limit", "first_check", "iteration_allowance", "iteration_rtol",
            "loose_quotient", "power_steps", "solver_settings"]
 
@@ -156,6 +156,12 @@ LEAN_MAX_DEGREE = 64
 #: decides (dense / Schur time 0.52-0.83 up to 12,168 entries, 0.94 at 17,672, 1.49 at
 #: 24,336). ``python tests/bench/tuning_crossovers.py``, part 1.
 DENSE_ENTRIES = 16_000
+#: The numpy reference's one-point path (:func:`.eigensolver.solve_point` without the kernel)
+#: inverts K - SHIFT whole up to this degree, through its Schur complement above: the whole
+#: LU costs fewer numpy calls, the Schur complement a quarter of the arithmetic (Schur / whole
+#: time 1.60 at n = 16, 1.09 at 34, 1.01 at 40, 0.97 at 44, 0.80 at 56, 0.73 at 64).
+#: ``python tests/bench/tuning_crossovers.py``, part 4.
+POINT_SCHUR_DEGREE = 42
 #: The cost model of degree pooling (:func:`.collocation.solve_degrees`): a batched solve of
 #: both families costs FIXED_COST seconds whatever its size plus POINT_COST (n/22)^2 a point;
 #: one lane (:func:`few_points_limit`) has no fixed cost and costs LEAN_FACTOR times as much a
