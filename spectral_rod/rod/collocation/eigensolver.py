@@ -18,7 +18,12 @@ Each rule has one numpy function mirroring the kernel's: the convergence test
 :func:`converged` (with :func:`_lanes_test`, C ``lanes_test``), the pencil's quotient
 :func:`pencil_rayleigh_quotient` (C ``pencil_quotient``, its precision a parameter) and the
 tail :func:`.resolution.mode_tails` (C ``family_point``); ``tests/test_modal_kernel.py``,
-``tests/test_engine_contract.py`` and ``tests/test_speed_paths.py`` compare the two.
+``tests/test_engine_contract.py`` and ``tests/test_speed_paths.py`` compare the two. A scalar
+call without the kernel takes the numpy reference's one-point form of ``modal_points``
+(:func:`solve_point`): (K - SHIFT)^{-1} and its transpose as one block-diagonal matrix, so that
+a step is one product, the same test from one Gram product (:func:`_point_iterate`), and the
+pencil's quotient above LONG_TWIST from exact split BLAS products (:func:`_split_terms`) rather
+than ``longdouble`` loops.
 
 Choosing the physical eigenvalue (the rule)
 -------------------------------------------
@@ -829,10 +834,12 @@ def solve_points(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rt
 
 def solve_point(n: int, twist: float, nu: float, rtol: float
                 ) -> tuple[list[float], list[float], bool]:
-    """:func:`solve_points` for one point given as Python floats, without a batch's arrays
-    where the kernel is installed (a scalar call's cost is mostly numpy's per-call overhead):
-    lambda and the tail of both families as lists [symmetric, antisymmetric], and whether the
-    kernel computed them.
+    """:func:`solve_points` for one point given as Python floats, without a batch's arrays (a
+    scalar call's cost is mostly numpy's per-call overhead): by the kernel's ``modal_points``
+    up to LEAN_MAX_DEGREE, or without the kernel by its numpy form (:func:`_numpy_point`) up to
+    DENSE_ENTRIES matrix entries; lambda and the tail of both families as lists [symmetric,
+    antisymmetric], and whether the kernel computed them. A point either does not accept goes
+    to :func:`solve_points`.
 
     >>> lam, tails, _ = solve_point(22, 3.0, 1.5, 1e-14)
     >>> round(min(lam) / 9.869604401089358, 9)
