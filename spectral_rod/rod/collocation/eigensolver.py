@@ -20,7 +20,7 @@ Each rule has one numpy function mirroring the kernel's: the convergence test
 tail :func:`.resolution.mode_tails` (C ``family_point``); ``tests/test_modal_kernel.py``,
 ``tests/test_engine_contract.py`` and ``tests/test_speed_paths.py`` compare the two. A scalar
 call without the kernel takes the numpy reference's one-point form of ``modal_points``
-(:func:`solve_point`): (K - SHIFT)^{-1} and its transpose as one block-diagonal matrix, so that
+(:func:`_numpy_point`): (K - SHIFT)^{-1} and its transpose as one block-diagonal matrix, so that
 a step is one product, the same test from one Gram product (:func:`_point_iterate`), and the
 pencil's quotient above LONG_TWIST from exact split BLAS products (:func:`_split_terms`) rather
 than ``longdouble`` loops.
@@ -607,12 +607,16 @@ def _split_bits(m: int) -> int:
     return (53 - 2 * math.ceil(math.log2(max(m, 2)))) // 3
 
 
-def _split(v: NDArray[np.float64], bits: int) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """v = v1 + v2 exactly, per row: v1 is v rounded to a multiple of 2^(E - bits), with
-    2^E > max |row| (at most 2^bits such units), v2 the rest (|v2| <= 2^(E - bits - 1)).
-    The rounding is the addition of sigma = 1.5 2^(E + 52 - bits), whose binade has that unit
-    as its spacing, and its exact subtraction."""
-    sigma = np.ldexp(0.75, np.frexp(np.abs(v).max(axis=-1, keepdims=True))[1] + (53 - bits))
+def _split(v: NDArray[np.float64], sizes: tuple[int, int], bits: int
+           ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """v = v1 + v2 exactly, per row and field (the two column blocks of `sizes`): v1 is v
+    rounded to a multiple of 2^(E - bits), with 2^E > the field's max |v| (at most 2^bits such
+    units), v2 the rest (|v2| <= 2^(E - bits - 1)): per field, so that a small field (omega2
+    at large nu) keeps its own relative accuracy. The rounding is the addition of
+    sigma = 1.5 2^(E + 52 - bits), whose binade has that unit as its spacing, and its exact
+    subtraction."""
+    top = np.maximum.reduceat(np.abs(v), (0, sizes[0]), axis=-1)
+    sigma = np.repeat(np.ldexp(0.75, np.frexp(top)[1] + (53 - bits)), sizes, axis=-1)
     v1 = (v + sigma) - sigma
     return v1, v - v1
 
@@ -635,17 +639,19 @@ def _split_terms(n: int, family: str, right: NDArray[np.float64], left: NDArray[
                  ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """The bilinear forms y^T P_i x of :func:`_rayleigh_sums` as hi + lo (points, terms), to
     double-double accuracy from BLAS products in double (the numpy engine's form of the
-    kernel's :func:`.modal_kernel.pencil_terms`): with x = x1 + x2, y = y1 + y2 and
-    P_i = P1_i + P2_i split exactly (:func:`_split`, :func:`_split_pieces`), hi = y1^T P1_i x1
-    is exact in double (every product and partial sum is a multiple of one unit below 2^53
-    of them), and lo = y2^T P_i x + y1^T (P2_i x + P1_i x2), whose parts are 2^-bits of the
-    whole, carries an error within 4 2^-bits m eps sum |y| |P_i| |x| (bits = 13-14 at
-    n = 24-64: below the ~m 2^-64 sum |y| |P_i| |x| of ``longdouble`` sums).
-    ``tests/test_modal_kernel.py`` compares the terms and the quotient with 50-digit sums."""
+    kernel's :func:`.modal_kernel.pencil_terms`): with x = x1 + x2, y = y1 + y2 (per field)
+    and P_i = P1_i + P2_i split exactly (:func:`_split`, :func:`_split_pieces`),
+    hi = y1^T P1_i x1 is exact in double (P_i couples one field of y to one of x, so every
+    product and partial sum is a multiple of one unit, below 2^53 of them), and
+    lo = y2^T P_i x + y1^T (P2_i x + P1_i x2), whose parts are 2^-bits of the whole, carries
+    an error within 4 2^-bits m eps sum |y| |P_i| |x| (bits = 13-14 at n = 24-64: below the
+    ~m 2^-64 sum |y| |P_i| |x| of ``longdouble`` sums). ``tests/test_modal_kernel.py`` compares
+    the terms and the quotient with 50-digit sums."""
     lead, rest, bits = _split_pieces(n, family)
     points, m = right.shape
     (x1, y1), (x2, y2) = (part.reshape(2, points, m) for part in
-                          _split(np.concatenate((right, left)), bits))
+                          _split(np.concatenate((right, left)), family_operator(n, family).sizes,
+                                 bits))
     # P1 x1, P1 x, P1 x2 (rows: terms m) in one product (concatenate: cheaper than stack)
     prod = (np.concatenate((x1, right, x2)) @ lead).reshape(3, points, -1)
     px2 = right @ rest
@@ -808,13 +814,20 @@ def solve_points(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rt
     """Both families' lowest eigenvalue and tail at flat arrays of points of degree n, by the
     engine: the C kernel one lane at a time up to :func:`.tuning.few_points_limit` points
     (``modal_points``), else 32 lanes a family (:func:`solve_family`); without the kernel the
-    numpy reference (:func:`solve_family`). The symmetric family first, the antisymmetric one
+    numpy reference (:func:`solve_family`; one point up to DENSE_ENTRIES matrix entries by its
+    one-point form of ``modal_points``, :func:`_numpy_point`, so that a scalar call and a
+    one-element array get the same bits). The symmetric family first, the antisymmetric one
     then only until it is shown above (1 + CLOSE_REL) times the symmetric eigenvalue. Points
-    the one-lane kernel does not accept are solved by :func:`solve_family`."""
+    the one-lane forms do not accept are solved by :func:`solve_family`."""
     lam, tails = np.empty((2, twist.size)), np.empty((2, twist.size))
     by_kernel = np.zeros(twist.size, dtype=bool)
     rest = np.arange(twist.size)
-    if modal_kernel.available() and twist.size <= few_points_limit(n):
+    if twist.size == 1 and not modal_kernel.available() and (n - 1) ** 2 <= DENSE_ENTRIES:
+        lean = _numpy_point(n, float(twist[0]), float(nu[0]), rtol)
+        if lean is not None:
+            return PointsSolution(np.array(lean[0])[:, None], np.array(lean[1])[:, None],
+                                  by_kernel)
+    elif modal_kernel.available() and twist.size <= few_points_limit(n):
         lam1, tails1, status = _solve_lanes(n, twist, nu, rtol)
         lam[:], tails[:] = lam1.T, tails1.T
         by_kernel = _accepted(status)
@@ -834,12 +847,11 @@ def solve_points(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rt
 
 def solve_point(n: int, twist: float, nu: float, rtol: float
                 ) -> tuple[list[float], list[float], bool]:
-    """:func:`solve_points` for one point given as Python floats, without a batch's arrays (a
-    scalar call's cost is mostly numpy's per-call overhead): by the kernel's ``modal_points``
-    up to LEAN_MAX_DEGREE, or without the kernel by its numpy form (:func:`_numpy_point`) up to
-    DENSE_ENTRIES matrix entries; lambda and the tail of both families as lists [symmetric,
-    antisymmetric], and whether the kernel computed them. A point either does not accept goes
-    to :func:`solve_points`.
+    """:func:`solve_points` for one point given as Python floats, without a batch's arrays
+    where the kernel is installed (a scalar call's cost is mostly numpy's per-call overhead):
+    lambda and the tail of both families as lists [symmetric, antisymmetric], and whether the
+    kernel computed them. Without the kernel :func:`solve_points` answers (its one-point form,
+    :func:`_numpy_point`).
 
     >>> lam, tails, _ = solve_point(22, 3.0, 1.5, 1e-14)
     >>> round(min(lam) / 9.869604401089358, 9)
@@ -853,10 +865,6 @@ def solve_point(n: int, twist: float, nu: float, rtol: float
             loose_quotient(rtol, n))
         if _accepted(status)[0]:
             return lam1[0].tolist(), tails1[0].tolist(), True
-    elif not modal_kernel.available() and (n - 1) ** 2 <= DENSE_ENTRIES:
-        lean = _numpy_point(n, twist, nu, rtol)
-        if lean is not None:
-            return lean[0], lean[1], False
     sol = solve_points(n, np.array([twist]), np.array([nu]), rtol)
     return sol.lam[:, 0].tolist(), sol.tails[:, 0].tolist(), bool(sol.by_kernel[0])
 
