@@ -110,6 +110,11 @@ def block_entries(rng: np.random.Generator) -> None:
             row.append((count * k * k, best_ratio(lambda a=a: _blocks(a),
                                                   lambda a=a: np.linalg.inv(a))))
         print(f"   k = {k:2d}: " + "  ".join(f"{e:>7,} entries {r:5.2f}" for e, r in row))
+    row = []
+    for k in (64, 128, 255):  # one matrix, as a scalar call above the kernel's range
+        a = rng.standard_normal((1, k, k)) + 4.0 * np.sqrt(k) * np.eye(k)
+        row.append((k, best_ratio(lambda a=a: _blocks(a), lambda a=a: np.linalg.inv(a))))
+    print("   one matrix: " + "  ".join(f"k = {k}: {r:5.2f}" for k, r in row))
 
 
 def _blocks(a: np.ndarray) -> np.ndarray:

@@ -175,10 +175,11 @@ FIXED_COST, POINT_COST, LEAN_FACTOR = 0.5e-3, 4.6e-6, 8.0
 #: recursion for stacks of at least this many matrix entries (count k^2), LAPACK below: the
 #: recursion's cost is mostly numpy calls per stack, LAPACK's a call per matrix. On the
 #: reference machine (numpy 2, OpenBLAS 0.3.31) LAPACK was the faster at every measured stack
-#: (blocks / LAPACK 1.13-2.37 for k = 6..20 and 100..1,200 matrices, 0.96-1.26 at k = 28), so
-#: the limit lies above the measured range (940,800 entries); the Figure 1 batch without the
-#: kernel took 0.93 of its time with it there. ``tests/test_stacked_inverse.py`` checks the
-#: accuracy; ``python tests/bench/tuning_crossovers.py``, part 3, times the two.
+#: (blocks / LAPACK 1.13-2.37 for k = 6..20 and 100..1,200 matrices, 0.96-1.26 at k = 28; 1.9-10
+#: for one matrix of k = 64..255, the degrees above the kernel's range), so the limit lies
+#: above the measured range (940,800 entries); the Figure 1 batch without the kernel took 0.93
+#: of its time with it there. ``tests/test_stacked_inverse.py`` checks the accuracy;
+#: ``python tests/bench/tuning_crossovers.py``, part 3, times the two.
 BLOCK_ENTRIES = 1_000_000
 #: Points :func:`spectral_rod.critical_load` solves together at most: bounds the memory of a
 #: large call (the batched engine holds ~k^2 doubles per point and family, the large-twist scan
