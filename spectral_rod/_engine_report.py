@@ -8,7 +8,7 @@ and ``python -m reproduce`` records its ``summary`` line in its report's environ
 The engine is the batched eigen-solver's compiled kernel
 (:mod:`spectral_rod.rod.collocation.modal_kernel`) where it was built at install and loads, and its
 numpy code otherwise (same algorithm, results equal to rounding; ~5 times slower on a batch and
-~9 times on a scalar call, by ``python -m pytest -m bench`` with and without the kernel).
+~4 times on a scalar call, by ``python -m pytest -m bench`` with and without the kernel).
 Where the kernel module offers ``engine_info()``, its entries are reported as they are; the
 instruction-set variant is otherwise the best of the kernel's ``target_clones`` levels
 (x86-64-v4, -v3, default) whose features ``/proc/cpuinfo`` lists, which is the one the loader

@@ -71,6 +71,75 @@ def test_dense_and_schur_forms_of_the_numpy_iteration_agree(n, family):
         assert np.min(np.abs(np.einsum("ij,ij->i", got, ref))) >= 1 - 1e-8
 
 
+@pytest.mark.parametrize("n", [12, 22, 40, 56])
+@pytest.mark.parametrize("family", ["symmetric", "antisymmetric"])
+def test_one_point_iteration_agrees_with_the_batched_numpy_iteration(n, family):
+    # the numpy reference's one-point path (one block-diagonal inverse, whole up to
+    # POINT_SCHUR_DEGREE and through the Schur complement above; the test from one Gram
+    # product) against its batched iteration on the same points: the same eigenpair to rounding
+    assert (n <= E.POINT_SCHUR_DEGREE) == (n <= 40)
+    mf = E.modal_family(n, family)
+    pf = E._point_family(n, family)
+    twist, nu = _points(n, 6)
+    first = E.first_check(E.POWER_RTOL, False)
+    ref = _numpy_pair(mf, twist, nu, E.POWER_RTOL)
+    scale = max(E.POWER_RTOL, 1e-16 * (n / 4.0) ** 4)  # K's round-off, as above
+    for j in range(twist.size):
+        coef = E.term_coefficients(float(twist[j]), float(nu[j])).tolist()
+        lam, unit, status = E._point_iterate(E._point_inverse(pf, coef), pf.start,
+                                             E.POWER_RTOL, None, first, E.POWER_STEPS)
+        assert status == modal_kernel.CONVERGED and ref[3][j]
+        assert abs(lam / ref[0][j] - 1) <= 50 * scale
+        for got, want in ((pf.right @ unit[0], mf.right_vectors(ref[1][j:j + 1])[0]),
+                          (unit[1] @ pf.left, mf.left_vectors(ref[2][j:j + 1])[0])):
+            cos = abs(got @ want) / (np.linalg.norm(got) * np.linalg.norm(want))
+            assert cos >= 1 - 1e-8
+
+
+@pytest.mark.parametrize("n", [24, 40, 56])
+@pytest.mark.parametrize("family", ["symmetric", "antisymmetric"])
+def test_split_products_match_fifty_digit_sums(n, family, monkeypatch):
+    # the numpy engine's extended-precision terms for a few points (exact split BLAS products,
+    # eigensolver._split_terms) against 50-digit sums of the same forms, where the pencil's
+    # quotient cancels to ~lambda/Omega^2, nu up to 90 (omega2 small beside omega1); and a
+    # double sum misses it (the test can fail)
+    import mpmath as mp
+
+    monkeypatch.setattr(modal_kernel, "_library", lambda: None)  # the numpy engine's sums
+    mf = E.modal_family(n, family)
+    twist, nu = np.linspace(20.5, 49.5, 5), np.linspace(1.0, 90.0, 5)
+    _, z, w, ok, _ = E._iterate(E._DenseShifted.from_parts(E.modal_parts(mf, twist, nu)),
+                                E._start_vector(mf.lam1.size + mf.lam2.size), E.POWER_RTOL,
+                                None, E.first_check(E.POWER_RTOL, False), E.POWER_STEPS)
+    x, y = mf.right_vectors(z[ok]), mf.left_vectors(w[ok])
+    hi, lo = E._split_terms(n, family, x, y)
+    got = E._rayleigh_sums(mf.op, twist[ok], nu[ok], y, x, np.longdouble)
+    double = E._rayleigh_sums(mf.op, twist[ok], nu[ok], y, x, np.float64)
+    pieces = mf.op.pieces
+    worst_double = 0.0
+    with mp.workdps(50):
+        for i in range(x.shape[0]):
+            xi = [mp.mpf(float(v)) for v in x[i]]
+            yi = [mp.mpf(float(v)) for v in y[i]]
+            terms = [mp.fsum(yi[r] * mp.mpf(float(p[r, c])) * xi[c]
+                             for r in range(p.shape[0]) for c in range(p.shape[1]) if p[r, c])
+                     for p in pieces]
+            # each term within 4 2^-bits m eps sum |y| |P_i| |x| (_split_terms' docstring: the
+            # low part's three sums in double)
+            sizes = np.abs(y[i]) @ np.abs(pieces) @ np.abs(x[i])
+            bound = 4 * 2.0 ** -E._split_bits(n - 1) * (n - 1) * np.finfo(float).eps * sizes
+            for t, h, low, b in zip(terms, hi[i], lo[i], bound, strict=True):
+                assert abs(mp.mpf(float(h)) + mp.mpf(float(low)) - t) <= b
+            om, nv_i = mp.mpf(float(twist[ok][i])), mp.mpf(float(nu[ok][i]))
+            coef = [t.coefficient(om, nv_i) for t in E.INST1]
+            exact = (mp.fsum(c * t for c, t in zip(coef, terms, strict=True))
+                     / mp.fsum(terms[j] for j in E._MASS_TERMS))
+            # the coefficients in longdouble carry ~1e-19 Omega^2: the result rounds to double
+            assert abs(float(got[i] / exact) - 1) <= 4 * np.finfo(float).eps
+            worst_double = max(worst_double, abs(float(double[i] / exact) - 1))
+    assert worst_double > 4 * np.finfo(float).eps
+
+
 @needs_kernel
 def test_kernel_ceiling_marks_the_same_points_above():
     d = load_figure1()

@@ -11,7 +11,9 @@
    the cheaper one.
 3. The pencil's Rayleigh-quotient terms at |Omega(L)| > LONG_TWIST (``eigensolver._rayleigh_sums``
    in ``longdouble``): the kernel's double-double products against numpy's ``longdouble`` ones,
-   us a point on 500 random points, n = 24, 44, 56.
+   us a point on 500 random points, n = 24, 44, 56; and for one point (a scalar call) the
+   kernel's, the numpy engine's split products (``eigensolver._split_terms``, its choice up to
+   ``tuning.DENSE_ENTRIES``) and ``longdouble`` products, us a call.
 
 Minima of interleaved rounds on one BLAS thread. The docstrings of those constants quote what
 it prints (2026-12-05). A development tool, not a test (pytest does not collect it).
@@ -105,6 +107,29 @@ def extended_quotient() -> None:
 
             t_dd, t_ld = minima([terms, numpy_only(terms)], 7)
             print(f"  n = {n}, {family:<13}: {t_dd / 500 * 1e6:5.2f} / {t_ld / 500 * 1e6:5.2f}")
+    print("one point, us a call: double-double (kernel) / split products / longdouble")
+    for n in (24, 44, 56):
+        op = family_operator(n, "symmetric")
+        m = op.sizes[0] + op.sizes[1]
+        tw, nv = rng.uniform(20, 50, 1), rng.uniform(1, 100, 1)
+        x, y = rng.standard_normal((1, m)), rng.standard_normal((1, m))
+
+        def one(op=op, tw=tw, nv=nv, x=x, y=y):
+            return E._rayleigh_sums(op, tw, nv, y, x, np.longdouble)
+
+        split = numpy_only(one)
+
+        def longdouble(fn=split):
+            limit = E.DENSE_ENTRIES
+            E.DENSE_ENTRIES = 0  # the longdouble products, as for many points
+            try:
+                return fn()
+            finally:
+                E.DENSE_ENTRIES = limit
+
+        times = minima([lambda fn=fn: [fn() for _ in range(100)]
+                        for fn in (one, split, longdouble)], 7)
+        print(f"  n = {n}: " + " / ".join(f"{t / 100 * 1e6:5.1f}" for t in times))
 
 
 if __name__ == "__main__":

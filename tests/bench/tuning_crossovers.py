@@ -1,5 +1,5 @@
-"""The crossovers behind three constants of ``spectral_rod/rod/collocation/tuning.py`` that no
-other script measures: DENSE_ENTRIES, LEAN_MAX_DEGREE and BLOCK_ENTRIES.
+"""The crossovers behind four constants of ``spectral_rod/rod/collocation/tuning.py`` that no
+other script measures: DENSE_ENTRIES, LEAN_MAX_DEGREE, BLOCK_ENTRIES and POINT_SCHUR_DEGREE.
 
     python tests/bench/tuning_crossovers.py
 
@@ -15,6 +15,9 @@ for and move each constant to where its ratio crosses 1.
    ``few_points_limit`` forced), 4 points at n = 40..128.
 3. BLOCK_ENTRIES: ``stacked_inverse`` by blocks (checked) / ``numpy.linalg.inv``, per stack of
    `count` matrices k x k; the threshold is the entries count k^2 where it crosses 1.
+4. POINT_SCHUR_DEGREE: the one-point numpy path's inverse of K - SHIFT
+   (``eigensolver._point_inverse``) through the Schur complement / whole, n = 16..64, the
+   symmetric family at Omega(L) = 0.9 n, nu = 3; the threshold is the degree where it crosses 1.
 """
 
 from __future__ import annotations
@@ -107,6 +110,11 @@ def block_entries(rng: np.random.Generator) -> None:
             row.append((count * k * k, best_ratio(lambda a=a: _blocks(a),
                                                   lambda a=a: np.linalg.inv(a))))
         print(f"   k = {k:2d}: " + "  ".join(f"{e:>7,} entries {r:5.2f}" for e, r in row))
+    row = []
+    for k in (64, 128, 255):  # one matrix, as a scalar call above the kernel's range
+        a = rng.standard_normal((1, k, k)) + 4.0 * np.sqrt(k) * np.eye(k)
+        row.append((k, best_ratio(lambda a=a: _blocks(a), lambda a=a: np.linalg.inv(a))))
+    print("   one matrix: " + "  ".join(f"k = {k}: {r:5.2f}" for k, r in row))
 
 
 def _blocks(a: np.ndarray) -> np.ndarray:
@@ -118,12 +126,35 @@ def _blocks(a: np.ndarray) -> np.ndarray:
         S.BLOCK_ENTRIES = limit
 
 
+def point_schur_degree() -> None:
+    print(f"4. one point's inverse: Schur complement / whole (POINT_SCHUR_DEGREE = "
+          f"{tuning.POINT_SCHUR_DEGREE})")
+    row = []
+    limit = E.POINT_SCHUR_DEGREE
+    for n in (16, 22, 28, 34, 40, 44, 48, 56, 64):
+        pf = E._point_family(n, "symmetric")
+        coef = E.term_coefficients(0.9 * n, 3.0).tolist()
+
+        def inverse(schur: bool, pf=pf, coef=coef) -> None:
+            E.POINT_SCHUR_DEGREE = 0 if schur else 10**6
+            try:
+                for _ in range(50):
+                    E._point_inverse(pf, coef)
+            finally:
+                E.POINT_SCHUR_DEGREE = limit
+
+        ratio = best_ratio(lambda f=inverse: f(True), lambda f=inverse: f(False))
+        row.append(f"n = {n}: {ratio:.2f}")
+    print("   " + "  ".join(row))
+
+
 def main() -> None:
     rng = np.random.default_rng(7)
     with one_blas_thread():
         dense_entries(rng)
         lean_max_degree(rng)
         block_entries(rng)
+        point_schur_degree()
 
 
 if __name__ == "__main__":

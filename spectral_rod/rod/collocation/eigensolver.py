@@ -18,7 +18,12 @@ Each rule has one numpy function mirroring the kernel's: the convergence test
 :func:`converged` (with :func:`_lanes_test`, C ``lanes_test``), the pencil's quotient
 :func:`pencil_rayleigh_quotient` (C ``pencil_quotient``, its precision a parameter) and the
 tail :func:`.resolution.mode_tails` (C ``family_point``); ``tests/test_modal_kernel.py``,
-``tests/test_engine_contract.py`` and ``tests/test_speed_paths.py`` compare the two.
+``tests/test_engine_contract.py`` and ``tests/test_speed_paths.py`` compare the two. A scalar
+call without the kernel takes the numpy reference's one-point form of ``modal_points``
+(:func:`_numpy_point`): (K - SHIFT)^{-1} and its transpose as one block-diagonal matrix, so that
+a step is one product, the same test from one Gram product (:func:`_point_iterate`), and the
+pencil's quotient above LONG_TWIST from exact split BLAS products (:func:`_split_terms`) rather
+than ``longdouble`` loops.
 
 Choosing the physical eigenvalue (the rule)
 -------------------------------------------
@@ -60,6 +65,7 @@ from spectral_rod.rod.collocation.tuning import (
     KERNEL_MAX_SCHUR,
     LEAN_MAX_DEGREE,
     LONG_TWIST,
+    POINT_SCHUR_DEGREE,
     POWER_RTOL,
     POWER_STEPS,
     few_points_limit,
@@ -207,10 +213,15 @@ class ModalParts(NamedTuple):
 
 
 def _coefficients(twist: NDArray[np.floating], nu: NDArray[np.floating]) -> NDArray[Any]:
-    """:func:`.discretisation.term_coefficients` (points, terms); one float64 point in Python
-    floats (a few us instead of ~20 us of per-term numpy calls, for scalar calls)."""
+    """:func:`.discretisation.term_coefficients` (points, terms); one point in scalars (Python
+    floats, or numpy ``longdouble`` scalars: the same operations, a few us instead of ~20 us
+    of per-term array calls, for scalar calls)."""
     if twist.size == 1 and twist.dtype == nu.dtype == np.float64:
         return term_coefficients(float(twist[0]), float(nu[0]))[None]
+    if twist.size == 1:
+        kind = np.result_type(twist, nu, 1.0).type
+        om, nv = kind(twist.reshape(-1)[0]), kind(nu.reshape(-1)[0])
+        return np.array([[t.coefficient(om, nv) for t in INST1]], dtype=kind)
     return term_coefficients(twist, nu)
 
 
@@ -536,6 +547,7 @@ def pencil_rayleigh_quotient(op: FamilyOperator, twist: NDArray[np.float64],
 
 #: The terms of INST1 whose blocks are B's (the own field, order 0): y^T B x is their sum.
 _MASS_TERMS = [i for i, t in enumerate(INST1) if t.field == t.equation and t.order == 0]
+_MASS_INDEX = np.array(_MASS_TERMS)
 
 
 @lru_cache(maxsize=128)
@@ -554,11 +566,15 @@ def _rayleigh_sums(op: FamilyOperator, twist: NDArray[np.float64], nu: NDArray[n
     In extended precision the products are the C kernel's double-double ones where it is
     installed (:func:`.modal_kernel.pencil_terms`; this function 0.4-1.6 µs a point at n = 24-56
     with them against 2.8-14 µs with numpy's ``longdouble`` products,
-    ``tests/bench/kernel_range.py``), summed in ``dtype``."""
-    if dtype is np.longdouble and modal_kernel.available():
-        hi, lo = modal_kernel.pencil_terms(*_term_matrices(op.n, op.family), right, left)
+    ``tests/bench/kernel_range.py``), without it for a few points (:data:`.tuning.DENSE_ENTRIES`)
+    the split products of :func:`_split_terms` (as accurate, in a few BLAS calls), else numpy's
+    ``longdouble`` products; summed in ``dtype``."""
+    few = right.shape[0] * right.shape[1] ** 2 <= DENSE_ENTRIES
+    if dtype is np.longdouble and (few or modal_kernel.available()):
+        hi, lo = (modal_kernel.pencil_terms(*_term_matrices(op.n, op.family), right, left)
+                  if modal_kernel.available() else _split_terms(op.n, op.family, right, left))
         terms = hi.astype(dtype) + lo.astype(dtype)
-    elif dtype is np.float64 and right.shape[0] * right.shape[1] ** 2 <= DENSE_ENTRIES:
+    elif dtype is np.float64 and few:
         # a few points: every term as a full (m, m) matrix, two calls instead of ~4 a block
         pieces = _dense_terms(op.n, op.family)
         px = (right @ pieces).reshape(right.shape[0], len(INST1), -1)
@@ -573,7 +589,7 @@ def _rayleigh_sums(op: FamilyOperator, twist: NDArray[np.float64], nu: NDArray[n
             px = (x[:, cols[f]] @ blocks).reshape(x.shape[0], len(idx), -1)
             terms[:, idx] = np.einsum("pj,pij->pi", y[:, cols[e]], px)
     coef = _coefficients(twist.astype(dtype), nu.astype(dtype))
-    return ((coef * terms).sum(axis=1) / terms[:, _MASS_TERMS].sum(axis=1)).astype(np.float64)
+    return ((coef * terms).sum(axis=1) / terms[:, _MASS_INDEX].sum(axis=1)).astype(np.float64)
 
 
 @lru_cache(maxsize=128)
@@ -583,6 +599,68 @@ def _dense_terms(n: int, family: str) -> NDArray[np.float64]:
     op = family_operator(n, family)
     return np.ascontiguousarray(np.swapaxes(op.pieces, 1, 2).transpose(1, 0, 2).reshape(
         op.pieces.shape[1], -1))
+
+
+def _split_bits(m: int) -> int:
+    """Bits kept in the leading part of each factor of :func:`_split_terms`: a sum of m^2
+    products of three such parts is exact in double where 3 bits + 2 log2(m) <= 53."""
+    return (53 - 2 * math.ceil(math.log2(max(m, 2)))) // 3
+
+
+def _split(v: NDArray[np.float64], sizes: tuple[int, int], bits: int
+           ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """v = v1 + v2 exactly, per row and field (the two column blocks of `sizes`): v1 is v
+    rounded to a multiple of 2^(E - bits), with 2^E > the field's max |v| (at most 2^bits such
+    units), v2 the rest (|v2| <= 2^(E - bits - 1)): per field, so that a small field (omega2
+    at large nu) keeps its own relative accuracy. The rounding is the addition of
+    sigma = 1.5 2^(E + 52 - bits), whose binade has that unit as its spacing, and its exact
+    subtraction."""
+    top = np.maximum.reduceat(np.abs(v), (0, sizes[0]), axis=-1)
+    sigma = np.repeat(np.ldexp(0.75, np.frexp(top)[1] + (53 - bits)), sizes, axis=-1)
+    v1 = (v + sigma) - sigma
+    return v1, v - v1
+
+
+@lru_cache(maxsize=128)
+def _split_pieces(n: int, family: str) -> tuple[NDArray[np.float64], NDArray[np.float64], int]:
+    """:func:`_dense_terms` split as P = P1 + P2 exactly, each term's block P1_i rounded to a
+    multiple of its own 2^(E_i - bits) (:func:`_split_bits`), and the bits."""
+    pieces = _dense_terms(n, family)
+    m = pieces.shape[0]
+    bits = _split_bits(m)
+    blocks = pieces.reshape(m, len(INST1), -1)
+    unit = np.ldexp(1.0, np.frexp(np.abs(blocks).max(axis=(0, 2)))[1] - bits)[:, None]
+    lead = (np.rint(blocks / unit) * unit).reshape(pieces.shape)
+    lead.setflags(write=False)
+    return lead, pieces - lead, bits
+
+
+def _split_terms(n: int, family: str, right: NDArray[np.float64], left: NDArray[np.float64]
+                 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """The bilinear forms y^T P_i x of :func:`_rayleigh_sums` as hi + lo (points, terms), to
+    double-double accuracy from BLAS products in double (the numpy engine's form of the
+    kernel's :func:`.modal_kernel.pencil_terms`): with x = x1 + x2, y = y1 + y2 (per field)
+    and P_i = P1_i + P2_i split exactly (:func:`_split`, :func:`_split_pieces`),
+    hi = y1^T P1_i x1 is exact in double (P_i couples one field of y to one of x, so every
+    product and partial sum is a multiple of one unit, below 2^53 of them), and
+    lo = y2^T P_i x + y1^T (P2_i x + P1_i x2), whose parts are 2^-bits of the whole, carries
+    an error within 4 2^-bits m eps sum |y| |P_i| |x| (bits = 13-14 at n = 24-64: below the
+    ~m 2^-64 sum |y| |P_i| |x| of ``longdouble`` sums). ``tests/test_modal_kernel.py`` compares
+    the terms and the quotient with 50-digit sums."""
+    lead, rest, bits = _split_pieces(n, family)
+    points, m = right.shape
+    (x1, y1), (x2, y2) = (part.reshape(2, points, m) for part in
+                          _split(np.concatenate((right, left)), family_operator(n, family).sizes,
+                                 bits))
+    # P1 x1, P1 x, P1 x2 (rows: terms m) in one product (concatenate: cheaper than stack)
+    prod = (np.concatenate((x1, right, x2)) @ lead).reshape(3, points, -1)
+    px2 = right @ rest
+    shape = (points, len(INST1), m)
+    # (P1 x1, P2 x + P1 x2) . y1 in one product, a stack of (terms, m) @ (m, 1) per point
+    by_y1 = (np.concatenate((prod[0], px2 + prod[2])).reshape(2, *shape)
+             @ y1[:, :, None])[..., 0]
+    lo = by_y1[1] + ((prod[1] + px2).reshape(shape) @ y2[:, :, None])[..., 0]
+    return by_y1[0], lo
 
 
 @lru_cache(maxsize=128)
@@ -736,13 +814,20 @@ def solve_points(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rt
     """Both families' lowest eigenvalue and tail at flat arrays of points of degree n, by the
     engine: the C kernel one lane at a time up to :func:`.tuning.few_points_limit` points
     (``modal_points``), else 32 lanes a family (:func:`solve_family`); without the kernel the
-    numpy reference (:func:`solve_family`). The symmetric family first, the antisymmetric one
+    numpy reference (:func:`solve_family`; one point up to DENSE_ENTRIES matrix entries by its
+    one-point form of ``modal_points``, :func:`_numpy_point`, so that a scalar call and a
+    one-element array get the same bits). The symmetric family first, the antisymmetric one
     then only until it is shown above (1 + CLOSE_REL) times the symmetric eigenvalue. Points
-    the one-lane kernel does not accept are solved by :func:`solve_family`."""
+    the one-lane forms do not accept are solved by :func:`solve_family`."""
     lam, tails = np.empty((2, twist.size)), np.empty((2, twist.size))
     by_kernel = np.zeros(twist.size, dtype=bool)
     rest = np.arange(twist.size)
-    if modal_kernel.available() and twist.size <= few_points_limit(n):
+    if twist.size == 1 and not modal_kernel.available() and (n - 1) ** 2 <= DENSE_ENTRIES:
+        lean = _numpy_point(n, float(twist[0]), float(nu[0]), rtol)
+        if lean is not None:
+            return PointsSolution(np.array(lean[0])[:, None], np.array(lean[1])[:, None],
+                                  by_kernel)
+    elif modal_kernel.available() and twist.size <= few_points_limit(n):
         lam1, tails1, status = _solve_lanes(n, twist, nu, rtol)
         lam[:], tails[:] = lam1.T, tails1.T
         by_kernel = _accepted(status)
@@ -765,7 +850,8 @@ def solve_point(n: int, twist: float, nu: float, rtol: float
     """:func:`solve_points` for one point given as Python floats, without a batch's arrays
     where the kernel is installed (a scalar call's cost is mostly numpy's per-call overhead):
     lambda and the tail of both families as lists [symmetric, antisymmetric], and whether the
-    kernel computed them.
+    kernel computed them. Without the kernel :func:`solve_points` answers (its one-point form,
+    :func:`_numpy_point`).
 
     >>> lam, tails, _ = solve_point(22, 3.0, 1.5, 1e-14)
     >>> round(min(lam) / 9.869604401089358, 9)
@@ -781,6 +867,178 @@ def solve_point(n: int, twist: float, nu: float, rtol: float
             return lam1[0].tolist(), tails1[0].tolist(), True
     sol = solve_points(n, np.array([twist]), np.array([nu]), rtol)
     return sol.lam[:, 0].tolist(), sol.tails[:, 0].tolist(), bool(sol.by_kernel[0])
+
+
+class _PointFamily(NamedTuple):
+    """A family at degree n laid out for the numpy reference's one-point path
+    (:func:`_numpy_point`): the modal unknowns in the order (eliminated block, Schur block) of
+    :class:`ModalParts`, as the kernel's ``family_point`` holds them."""
+
+    op: FamilyOperator
+    lam_e: NDArray[np.float64]  # Lambda of the eliminated block
+    lam_s: NDArray[np.float64]  # Lambda of the Schur block
+    equations: tuple[int, int]  # the equations (0: omega1) of the e and s blocks
+    g_es: NDArray[np.float64]
+    g_se: NDArray[np.float64]
+    start: NDArray[np.float64]  # the start vector, right and left, (2 m,)
+    right: NDArray[np.float64]  # c = right @ z
+    left: NDArray[np.float64]  # y = w @ left
+
+
+@lru_cache(maxsize=64)
+def _point_family(n: int, family: str) -> _PointFamily:
+    """:class:`_PointFamily` of (n, family), built once from :func:`modal_family`."""
+    mf = modal_family(n, family)
+    k1, m = mf.lam1.size, mf.lam1.size + mf.lam2.size
+    order = np.arange(m) if mf.schur == 2 else np.r_[np.arange(k1, m), np.arange(k1)]
+    g_es, g_se = (mf.g12, mf.g21) if mf.schur == 2 else (mf.g21, mf.g12)
+    right, left = np.zeros((m, m)), np.zeros((m, m))
+    right[:k1, :k1], right[k1:, k1:] = mf.u1, mf.u2
+    left[:k1, :k1], left[k1:, k1:] = mf.left1, mf.left2
+    start = _start_vector(m)[order]
+    lams = (mf.lam1, mf.lam2) if mf.schur == 2 else (mf.lam2, mf.lam1)
+    return _PointFamily(mf.op, lams[0], lams[1], (0, 1) if mf.schur == 2 else (1, 0),
+                        g_es, g_se, np.concatenate((start, start)),
+                        np.ascontiguousarray(right[:, order]), np.ascontiguousarray(left[order]))
+
+
+def _point_inverse(pf: _PointFamily, coef: list[float]) -> NDArray[np.float64] | None:
+    """((K - SHIFT)^{-1}, (K - SHIFT)^{-T}) of one point as one block-diagonal (2 m, 2 m)
+    matrix, so that a step of right and left vectors is one product. K - SHIFT =
+    [[D_e - SHIFT, a G_es], [b G_se, D_s - SHIFT]] (:class:`_ShiftedModal`) is inverted by
+    LAPACK's pivoted LU, whole up to degree :data:`.tuning.POINT_SCHUR_DEGREE` (fewer numpy
+    calls), above it through its Schur complement S (a quarter of the LU's work):
+
+        (K - SHIFT)^{-1} = [[R + a b Y G_se R, -a Y], [-b S^{-1} G_se R, S^{-1}]],
+        R = (D_e - SHIFT)^{-1},  Y = R G_es S^{-1}.
+
+    None where the matrix inverted is singular (SHIFT an eigenvalue)."""
+    from scipy.linalg.lapack import dgetrf, dgetri
+
+    (s1, z1, c1), (s2, z2, c2) = MODAL_TERMS
+    own2, own0, cpl = (coef[s1], coef[s2]), (coef[z1], coef[z2]), (coef[c1], coef[c2])
+    qe, qs = pf.equations
+    a, b = 2.0 * cpl[qe], 2.0 * cpl[qs]  # d/ds = 2 d/dx
+    d_e = own0[qe] - own2[qe] * pf.lam_e - SHIFT
+    d_s = own0[qs] - own2[qs] * pf.lam_s - SHIFT
+    k_e, k_s = pf.g_es.shape
+    m = k_e + k_s
+    if pf.op.n <= POINT_SCHUR_DEGREE:
+        shifted = np.zeros((m, m))
+        shifted[:k_e, k_e:], shifted[k_e:, :k_e] = a * pf.g_es, b * pf.g_se
+        shifted.flat[::m + 1] = np.concatenate((d_e, d_s))
+        lu, piv, info = dgetrf(shifted, overwrite_a=1)
+        if info == 0:
+            inverse, info = dgetri(lu, piv, overwrite_lu=1)
+        if info != 0:
+            return None
+        pair = np.zeros((2 * m, 2 * m))
+        pair[:m, :m], pair[m:, m:] = inverse, inverse.T
+        return pair
+    r = 1.0 / d_e
+    g_r = pf.g_se * r  # G_se R
+    schur = (-a * b) * (g_r @ pf.g_es)
+    schur.flat[::k_s + 1] += d_s
+    lu, piv, info = dgetrf(schur, overwrite_a=1)
+    if info == 0:
+        schur_inv, info = dgetri(lu, piv, overwrite_lu=1)
+    if info != 0:
+        return None
+    pair = np.zeros((2 * m, 2 * m))
+    y = (r[:, None] * pf.g_es) @ schur_inv
+    pair[:k_e, :k_e] = (a * b) * (y @ g_r)
+    pair.flat[:(2 * m + 1) * k_e:2 * m + 1] += r
+    pair[:k_e, k_e:m] = -a * y
+    pair[k_e:m, :k_e] = -b * (schur_inv @ g_r)
+    pair[k_e:m, k_e:m] = schur_inv
+    pair[m:, m:] = pair[:m, :m].T
+    return pair
+
+
+def _point_iterate(pair: NDArray[np.float64], start: NDArray[np.float64], rtol: float,
+                   ceiling: float | None, first: int, max_steps: int
+                   ) -> tuple[float, NDArray[np.float64], int]:
+    """:func:`_iterate` for one point, right and left vectors as one (2 m,) vector: lambda,
+    the unit vectors (2, m) and the kernel's status code. The test is :func:`_lanes_test`'s
+    from one Gram product: with K x = SHIFT x + p (p the step's input), rq = SHIFT + y.p / y.x
+    and the residuals are p - (rq - SHIFT) x and q - (rq - SHIFT) y up to the vectors' scales,
+    so |r| |l| / |y.x| needs no normalisation (the vectors are normalised at each test)."""
+    m = start.size // 2
+    v = start
+    for step in range(1, max_steps + 1):
+        prev, v = v, pair @ v
+        if step < first or step % 2:
+            continue
+        both = np.concatenate((v, prev)).reshape(4, m)
+        (xx, _, _, _), (yx, yy, yp, _) = (both[:2] @ both.T).tolist()
+        mu = yp / yx if yx else math.nan
+        rq = SHIFT + mu
+        res = both[2:] - mu * both[:2]
+        rx, ry = np.einsum("ij,ij->i", res, res).tolist()
+        bound = math.sqrt(rx * ry) / abs(yx) if yx else math.nan
+        conv = converged(rq, bound, rtol, math)
+        high = not conv and ceiling is not None and rq - 100.0 * bound > ceiling
+        unit = both[:2] * np.array([[_inverse_norm(xx)], [_inverse_norm(yy)]])
+        if conv or high or step + 2 > max_steps:
+            status = (modal_kernel.CONVERGED if conv else modal_kernel.ABOVE if high
+                      else modal_kernel.NOT_CONVERGED)
+            return rq, unit, status
+        v = unit.reshape(-1)
+    raise AssertionError("unreachable: the last step is a test")  # max_steps >= first
+
+
+def _inverse_norm(square: float) -> float:
+    """1 / sqrt(square), nan for a zero vector (as numpy's 1 / 0 * 0)."""
+    return 1.0 / math.sqrt(square) if square > 0.0 else math.nan
+
+
+def _point_family_solve(n: int, family: str, coef: list[float], extended: bool, twist: float,
+                        nu: float, rtol: float, ceiling: float | None, first: int
+                        ) -> tuple[float, float, int]:
+    """One family at one point by the numpy reference, as the kernel's ``family_point``:
+    lambda, the tail (inf unless converged) and the status code; `extended`: the pencil's
+    quotient is summed in extended precision (:func:`_extended`)."""
+    pf = _point_family(n, family)
+    pair = _point_inverse(pf, coef)
+    if pair is None:
+        return math.nan, math.inf, modal_kernel.NOT_CONVERGED
+    lam, unit, status = _point_iterate(pair, pf.start, rtol, ceiling, first, POWER_STEPS)
+    if status != modal_kernel.CONVERGED:
+        return lam, math.inf, status
+    vec = pf.right @ unit[0]
+    coefficients = np.abs(pf.op.tail_rows @ vec)
+    last, other = float(coefficients[:4].max()), float(coefficients[4:].max())
+    if not (math.isfinite(last) and math.isfinite(other)):
+        return lam, math.inf, modal_kernel.NOT_CONVERGED
+    scale = max(last, other)
+    tail = last / scale if scale > 0.0 else math.inf
+    if not loose_quotient(rtol, n):
+        dtype = np.longdouble if extended else np.float64
+        lam = float(_rayleigh_sums(pf.op, np.array([twist]), np.array([nu]),
+                                   (unit[1] @ pf.left)[None], vec[None], dtype)[0])
+        if not lam >= SHIFT:  # a nan quotient is not an answer
+            return lam, tail, modal_kernel.NOT_CONVERGED
+    return lam, tail, status
+
+
+def _numpy_point(n: int, twist: float, nu: float, rtol: float
+                 ) -> tuple[list[float], list[float]] | None:
+    """:func:`solve_point` by the numpy reference without a batch's arrays (the kernel's
+    ``modal_points`` on one point, in numpy): the symmetric family, then the antisymmetric one
+    until shown above (1 + CLOSE_REL) times it, its first test at step <= 4; None where a
+    family is not accepted (:func:`solve_points` then decides, with the full ``eig``)."""
+    coef = term_coefficients(twist, nu).tolist()
+    ext = bool(_extended(twist, n, rtol))
+    first = first_check(rtol, False)
+    lam0, tail0, status0 = _point_family_solve(n, FAMILIES[0], coef, ext, twist, nu, rtol, None,
+                                               first)
+    if status0 != modal_kernel.CONVERGED:
+        return None
+    lam1, tail1, status1 = _point_family_solve(n, FAMILIES[1], coef, ext, twist, nu, rtol,
+                                               lam0 * (1 + CLOSE_REL), min(first, 4))
+    if status1 not in (modal_kernel.CONVERGED, modal_kernel.ABOVE):
+        return None
+    return [lam0, lam1], [tail0, tail1]
 
 
 def _solve_lanes(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol: float

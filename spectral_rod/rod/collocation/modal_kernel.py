@@ -231,7 +231,7 @@ def warn_if_missing() -> None:
     _warned = True
     reason = _loaded()[1] or "not loaded"
     warnings.warn(
-        f"spectral_rod runs its numpy engine, 5-9 times slower than the C kernel (the kernel "
+        f"spectral_rod runs its numpy engine, 2-5 times slower than the C kernel (the kernel "
         f"is {reason}). To get it, install a C compiler (e.g. gcc) and reinstall the "
         f"package (pip install --force-reinstall --no-deps .), unset {DISABLE_ENV}; "
         f"spectral_rod.rod.collocation.modal_kernel.engine_info() shows the engine",

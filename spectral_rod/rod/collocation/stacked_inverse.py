@@ -20,15 +20,13 @@ singular.
 :func:`stacked_inverse` checks every result anyway (one product with a fixed probe vector) and
 redoes any matrix whose backward error is not small by LAPACK, with partial pivoting.
 
-The numpy engine needs it: without it the Figure 1 batch on the numpy engine (the benchmark row
-"one call, all 1,201 Figure 1 points" with ``SPECTRAL_ROD_NO_KERNEL=1``) takes ~1.08 times as
-long with LAPACK's inverse alone, close to that row's floor of 20 times the baseline. Above
-:data:`.tuning.BLOCK_ENTRIES` entries per stack it is faster than ``numpy.linalg.inv``
-(0.58-0.80 of its time from k = 10 and a few hundred matrices on, the check included; at 100
-matrices of k <= 12 slower, hence the threshold). On the engine's own Schur complements
-(n = 8..128, both families, 400 random points each, Omega(L) up to 50, nu up to 1e4, condition
-numbers up to 5e8) it agreed with LAPACK's inverse to <= 4.3e-14 relative, with backward errors
-<= 5.5e-16 (``tests/test_stacked_inverse.py`` holds n = 16..128 to 1e-12).
+Whether it pays depends on the machine's numpy and LAPACK: it is used from
+:data:`.tuning.BLOCK_ENTRIES` entries per stack on, where ``python
+tests/bench/tuning_crossovers.py`` (part 3) puts the crossover with ``numpy.linalg.inv`` (the
+check included; the constant's comment gives the measured ratios). On the engine's own Schur
+complements (n = 8..128, both families, 400 random points each, Omega(L) up to 50, nu up to
+1e4, condition numbers up to 5e8) it agreed with LAPACK's inverse to <= 4.3e-14 relative, with
+backward errors <= 5.5e-16 (``tests/test_stacked_inverse.py`` holds n = 16..128 to 1e-12).
 """
 
 from __future__ import annotations
@@ -103,7 +101,7 @@ def _small_inverse(a: NDArray[np.float64]) -> NDArray[np.float64]:
 def uses_blocks(k: int, count: int) -> bool:
     """Whether :func:`stacked_inverse` inverts `count` matrices of size k by blocks.
 
-    >>> uses_blocks(10, 100), uses_blocks(10, 300), uses_blocks(27, 40)
+    >>> uses_blocks(10, 9_999), uses_blocks(10, 10_000), uses_blocks(28, 1_300)
     (False, True, True)
     """
     return count * k * k >= BLOCK_ENTRIES

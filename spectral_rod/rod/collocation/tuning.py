@@ -35,7 +35,8 @@ from typing import NamedTuple
 __all__ = ["BLOCK_ENTRIES", "CALIBRATED_TOL", "CHUNK", "DENSE_ENTRIES", "FEW_POINTS", "FIRST_CHECK",
            "FIXED_COST", "KERNEL_MAX_SCHUR", "LEAN_FACTOR", "LEAN_MAX_DEGREE", "LONG_TWIST",
            "LOOSE_DEGREE", "LOOSE_FIRST_CHECK", "LOOSE_RTOL", "LOOSE_SHARE", "POINT_COST",
-           "POWER_RTOL", "POWER_STEPS", "TIGHT_TOL", "TRUNCATION_SHARE", "SolverSettings",
+           "POINT_SCHUR_DEGREE", "POWER_RTOL", "POWER_STEPS", "TIGHT_TOL", "TRUNCATION_SHARE",
+           "SolverSettings",
            "few_points_limit", "first_check", "iteration_allowance", "iteration_rtol",
            "loose_quotient", "solver_settings", "truncation_share"]
 
@@ -162,8 +163,16 @@ LEAN_MAX_DEGREE = 64
 #: (K - SHIFT)^{-1} as dense inverses (one batched product a step), above it through the Schur
 #: complement (~16 calls a step, less arithmetic): with a few points numpy's per-call cost
 #: decides (dense / Schur time 0.52-0.83 up to 12,168 entries, 0.94 at 17,672, 1.49 at
-#: 24,336). ``python tests/bench/tuning_crossovers.py``, part 1.
+#: 24,336). ``python tests/bench/tuning_crossovers.py``, part 1. The same bound admits a
+#: scalar call to the numpy reference's one-point path (n <= 127) and the pencil quotient's
+#: split products (:func:`.eigensolver._split_terms`).
 DENSE_ENTRIES = 16_000
+#: The numpy reference's one-point path (:func:`.eigensolver.solve_point` without the kernel)
+#: inverts K - SHIFT whole up to this degree, through its Schur complement above: the whole
+#: LU costs fewer numpy calls, the Schur complement a quarter of the arithmetic (Schur / whole
+#: time 1.60 at n = 16, 1.09 at 34, 1.01 at 40, 0.97 at 44, 0.80 at 56, 0.73 at 64).
+#: ``python tests/bench/tuning_crossovers.py``, part 4.
+POINT_SCHUR_DEGREE = 42
 #: The cost model of degree pooling (:func:`.collocation.solve_degrees`): a batched solve of
 #: both families costs FIXED_COST seconds whatever its size plus POINT_COST (n/22)^2 a point;
 #: one lane (:func:`few_points_limit`) has no fixed cost and costs LEAN_FACTOR times as much a
@@ -173,10 +182,14 @@ DENSE_ENTRIES = 16_000
 FIXED_COST, POINT_COST, LEAN_FACTOR = 0.5e-3, 4.6e-6, 8.0
 #: :func:`.stacked_inverse.stacked_inverse` (the numpy engine's Schur inverses) uses the block
 #: recursion for stacks of at least this many matrix entries (count k^2), LAPACK below: the
-#: recursion's cost is mostly numpy calls per stack, LAPACK's a call per matrix.
-#: ``tests/test_stacked_inverse.py`` checks the accuracy;
-#: ``python tests/bench/tuning_crossovers.py``, part 4, times the two.
-BLOCK_ENTRIES = 25_000
+#: recursion's cost is mostly numpy calls per stack, LAPACK's a call per matrix. On the
+#: reference machine (numpy 2, OpenBLAS 0.3.31) LAPACK was the faster at every measured stack
+#: (blocks / LAPACK 1.13-2.37 for k = 6..20 and 100..1,200 matrices, 0.96-1.26 at k = 28; 1.9-10
+#: for one matrix of k = 64..255, the degrees above the kernel's range), so the limit lies
+#: above the measured range (940,800 entries); the Figure 1 batch without the kernel took 0.93
+#: of its time with it there. ``tests/test_stacked_inverse.py`` checks the accuracy;
+#: ``python tests/bench/tuning_crossovers.py``, part 3, times the two.
+BLOCK_ENTRIES = 1_000_000
 #: Points :func:`spectral_rod.critical_load` solves together at most: bounds the memory of a
 #: large call (the batched engine holds ~k^2 doubles per point and family, the large-twist scan
 #: ~20 grid columns of 257 doubles per point); ``tests/test_safety.py`` measures the peak.
