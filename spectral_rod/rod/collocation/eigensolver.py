@@ -57,7 +57,7 @@ from spectral_rod.rod.collocation.discretisation import (
     family_operator,
     term_coefficients,
 )
-from spectral_rod.rod.collocation.resolution import mode_tails
+from spectral_rod.rod.collocation.resolution import mode_tails, tail_from_parts, tail_parts
 from spectral_rod.rod.collocation.stacked_inverse import BACKWARD_TOL, stacked_inverse
 from spectral_rod.rod.collocation.tuning import (
     CALIBRATED_TOL,
@@ -1006,12 +1006,10 @@ def _point_family_solve(n: int, family: str, coef: list[float], extended: bool, 
     if status != modal_kernel.CONVERGED:
         return lam, math.inf, status
     vec = pf.right @ unit[0]
-    coefficients = np.abs(pf.op.tail_rows @ vec)
-    last, other = float(coefficients[:4].max()), float(coefficients[4:].max())
-    if not (math.isfinite(last) and math.isfinite(other)):
+    parts = tail_parts(pf.op.tail_rows @ vec)  # the tail's one definition (:mod:`.resolution`)
+    if not np.isfinite(parts).all():
         return lam, math.inf, modal_kernel.NOT_CONVERGED
-    scale = max(last, other)
-    tail = last / scale if scale > 0.0 else math.inf
+    tail = float(tail_from_parts(parts))
     if not loose_quotient(rtol, n):
         dtype = np.longdouble if extended else np.float64
         lam = float(_rayleigh_sums(pf.op, np.array([twist]), np.array([nu]),
