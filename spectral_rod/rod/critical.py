@@ -8,7 +8,7 @@ flagged: a tolerance that is not met gives a :class:`spectral_rod.ConvergenceWar
 
 Bounds: the true p* lies in [1, (1 + nu)/2] (:mod:`spectral_rod.rod.families`), so every computed
 value is projected onto that interval and its error estimate capped by the interval's width
-(:func:`apply_bounds`). The projection can only bring a value closer to the truth: round-off
+(:func:`bounds`). The projection can only bring a value closer to the truth: round-off
 (1 - 2e-16 at nu = 1) and an unresolved forced degree (p* = 38 at Omega = 30, n = 8, which is also
 flagged and warned about) both end inside the bounds.
 """
@@ -34,6 +34,7 @@ from spectral_rod._validation import (
 )
 from spectral_rod.errors import ConvergenceWarning
 from spectral_rod.rod.collocation import collocation_critical_load
+from spectral_rod.rod.collocation.arithmetic import ARRAYS, FLOATS, Namespace
 from spectral_rod.rod.collocation.driver import collocation_point
 from spectral_rod.rod.collocation.resolution import N_MAX, N_MIN
 from spectral_rod.rod.collocation.tuning import CHUNK
@@ -125,25 +126,23 @@ def solve_points(tw: NDArray[np.float64], nv: NDArray[np.float64], methods: NDAr
     return PointResults(p, methods, deg, err, fam, engine)
 
 
-def apply_bounds(res: PointResults, nv: NDArray[np.float64]) -> None:
-    """Project p* onto its rigorous bounds [1, (1 + nu)/2] and cap the error estimate by the
-    bounds' width (in place): the truth lies in the bounds, so neither can make p* worse.
-    The width is widened by eps, the rounding of (1 + nu)/2 (at nu = 1 + 2^-52 it rounds to 1,
-    a width of 0, while p* - 1 = 1.1e-16)."""
-    lo, hi = 1.0, (1.0 + nv) / 2.0
-    res.p_star[:] = np.clip(res.p_star, lo, hi)
-    res.error_estimate[:] = np.minimum(res.error_estimate, (hi - lo) / lo + _EPS)
+def bounds(p: Any, err: Any, nv: Any, xp: Namespace = ARRAYS) -> tuple[Any, Any]:
+    """p* projected onto its rigorous bounds [1, (1 + nu)/2] and the error estimate capped by
+    the bounds' width: the truth lies in the bounds, so neither can make p* worse. The width is
+    widened by eps, the rounding of (1 + nu)/2 (at nu = 1 + 2^-52 it rounds to 1, a width of
+    0, while p* - 1 = 1.1e-16). Arrays, or one point in Python floats with ``xp`` =
+    :data:`spectral_rod.rod.collocation.arithmetic.FLOATS` (the scalar paths').
 
-
-def bounded_point(p: float, err: float, nv: float) -> tuple[float, float]:
-    """:func:`apply_bounds` for one point in Python floats (the scalar paths'): p* projected
-    onto [1, (1 + nu)/2], the estimate capped by the width plus eps.
-
-    >>> bounded_point(1.3, 0.5, 1.5)
+    >>> bounds(1.3, 0.5, 1.5, FLOATS)
     (1.25, 0.2500000000000002)
     """
     hi = (1.0 + nv) / 2.0
-    return min(max(p, 1.0), hi), min(err, (hi - 1.0) + _EPS)
+    return xp.minimum(xp.maximum(p, 1.0), hi), xp.minimum(err, (hi - 1.0) + _EPS)
+
+
+def apply_bounds(res: PointResults, nv: NDArray[np.float64]) -> None:
+    """:func:`bounds` applied to a result's p* and error estimates, in place."""
+    res.p_star[:], res.error_estimate[:] = bounds(res.p_star, res.error_estimate, nv)
 
 
 def warn_unconverged(where: str, converged: NDArray[np.bool_], res: PointResults,
@@ -189,7 +188,7 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
     if chosen != "collocation":
         return None
     point = collocation_point(om, nv, tol, n if isinstance(n, int) else None)
-    p, err = bounded_point(point.p_star, point.error_estimate, nv)
+    p, err = bounds(point.p_star, point.error_estimate, nv, FLOATS)
     converged = err <= tol  # after the bounds, as the general path judges it
     if not converged:
         _warn_point(err, om, nv, "collocation", point.n, tol)
@@ -218,15 +217,15 @@ def _one_characteristic(om: float, nv: float, tol: float, full_output: bool):
     """:func:`_one_point` on the large-twist route: the characteristic equation in double
     precision for one point (its refinement in Python floats; the benchmark row "a loop of
     scalar calls, Omega(L) in [50, 1000]" measures it), bounds and estimate as
-    :func:`solve_points` and :func:`apply_bounds` give them; None where the estimate misses tol
+    :func:`solve_points` and :func:`bounds` give them; None where the estimate misses tol
     (the general path warns and flags)."""
     from spectral_rod.rod.characteristic import characteristic_double, double_error_estimate
 
-    _, err = bounded_point(1.0, float(double_error_estimate(om)), nv)  # it does not need p*
+    _, err = bounds(1.0, float(double_error_estimate(om)), nv, FLOATS)  # it needs no p*
     if err > tol:
         return None
     p, family = characteristic_double(om, nv)
-    p, _ = bounded_point(p, err, nv)
+    p, _ = bounds(p, err, nv, FLOATS)
     if not full_output:
         return p
     return CriticalLoad(p, "characteristic", 0, err, family, converged=True, tol=tol,

@@ -38,13 +38,17 @@ upper bound.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from spectral_rod._validation import broadcast_points, check_nu, check_resolution, check_twist
+from spectral_rod.rod.collocation.arithmetic import ARRAYS, FLOATS, Namespace
 
 __all__ = ["INCREMENT_MAX_TWIST", "METHOD_DTYPE", "NEAR_DEGENERATE", "ROD_METHODS", "TWIST_ROUTE",
-           "check_method", "check_route", "choose_method", "route", "route_point"]
+           "characteristic_route", "check_method", "check_route", "choose_method", "route",
+           "route_point"]
 
 #: The methods that compute p* (``method=`` of :func:`spectral_rod.critical_load`).
 ROD_METHODS = ("collocation", "characteristic", "increment", "ritz")
@@ -103,21 +107,31 @@ def route(twist: NDArray[np.float64], nu: NDArray[np.float64], n: int | None = N
     if n is not None:
         return np.full(twist.shape, "collocation", dtype=METHOD_DTYPE)
     out = np.full(twist.shape, "collocation", dtype=METHOD_DTYPE)
-    out[(np.abs(twist) >= TWIST_ROUTE) | (nu - 1.0 <= NEAR_DEGENERATE)] = "characteristic"
+    out[characteristic_route(twist, nu)] = "characteristic"
     return out
+
+
+def characteristic_route(twist: Any, nu: Any, xp: Namespace = ARRAYS) -> Any:
+    """The automatic route's rule: the characteristic equation answers where |Omega| >=
+    TWIST_ROUTE or nu - 1 <= NEAR_DEGENERATE, collocation elsewhere (module docstring); arrays,
+    or one point in Python floats with ``xp`` =
+    :data:`spectral_rod.rod.collocation.arithmetic.FLOATS`.
+
+    >>> characteristic_route(100.0, 1.5, FLOATS), characteristic_route(5.0, 1.5, FLOATS)
+    (True, False)
+    """
+    return (xp.abs(twist) >= TWIST_ROUTE) | (nu - 1.0 <= NEAR_DEGENERATE)
 
 
 def route_point(twist: float, nu: float, n: int | None = None, method: str = "auto") -> str:
     """:func:`route` for one validated point in Python floats (the scalar path's; the same
-    rule, tested against :func:`route`); a forced increment outside its range is left to
+    rule, :func:`characteristic_route`); a forced increment outside its range is left to
     :func:`route` to reject."""
     if method != "auto":
         return method
     if n is not None:
         return "collocation"
-    if abs(twist) >= TWIST_ROUTE or nu - 1.0 <= NEAR_DEGENERATE:
-        return "characteristic"
-    return "collocation"
+    return "characteristic" if characteristic_route(twist, nu, FLOATS) else "collocation"
 
 
 def choose_method(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None,
