@@ -15,7 +15,8 @@ import pytest
 
 from spectral_rod import ConvergenceWarning, critical_load
 from spectral_rod.rod.collocation.discretisation import family_operator
-from spectral_rod.rod.collocation.eigensolver import iteration_allowance, physical_eig, solve_family
+from spectral_rod.rod.collocation.eigensolver import iteration_allowance, solve_family
+from spectral_rod.rod.collocation.reference import physical_eig
 from spectral_rod.rod.collocation.resolution import error_estimate, roundoff_floor
 from spectral_rod.rod.families import FAMILIES
 
@@ -148,11 +149,9 @@ def test_modal_quotient_round_off_is_far_below_the_loose_iteration_tolerance():
     # tuning.LOOSE_DEGREE: from rtol = LOOSE_RTOL on and up to that degree the eigenvalue
     # is the modal quotient; its difference from the pencil quotient (same converged vectors) is
     # K's round-off, largest at small Omega: measured <= 4e-11 at n = 50 and <= 1.1e-10 at n = 64
-    from spectral_rod.rod.collocation.eigensolver import (
-        lowest_eigenpair,
-        modal_family,
-        pencil_rayleigh_quotient,
-    )
+    from spectral_rod.rod.collocation.eigensolver import lowest_eigenpair
+    from spectral_rod.rod.collocation.modal_form import modal_family
+    from spectral_rod.rod.collocation.quotient import pencil_rayleigh_quotient
     from spectral_rod.rod.collocation.tuning import LOOSE_DEGREE, LOOSE_RTOL
 
     rng = np.random.default_rng(5)

@@ -8,7 +8,7 @@ import pytest
 
 from spectral_rod import load_figure1
 from spectral_rod.rod.collocation import eigensolver as E
-from spectral_rod.rod.collocation import modal_kernel
+from spectral_rod.rod.collocation import modal_form, modal_kernel, quotient, shifted
 from spectral_rod.rod.collocation.stacked_inverse import BACKWARD_TOL
 from spectral_rod.rod.families import SHIFT
 
@@ -22,8 +22,8 @@ def _points(n: int, count: int = 300, seed: int = 5):
 
 
 def _numpy_pair(mf, twist, nu, rtol, ceiling=None):
-    return E._iterate(E._ShiftedModal.at(mf, twist, nu),
-                      E._start_vector(mf.lam1.size + mf.lam2.size), rtol, ceiling,
+    return E._iterate(shifted._ShiftedModal.at(mf, twist, nu),
+                      modal_form._start_vector(mf.lam1.size + mf.lam2.size), rtol, ceiling,
                       E.first_check(rtol, ceiling is not None), E.POWER_STEPS)
 
 
@@ -32,7 +32,7 @@ def _numpy_pair(mf, twist, nu, rtol, ceiling=None):
 @pytest.mark.parametrize("family", ["symmetric", "antisymmetric"])
 @pytest.mark.parametrize("rtol", [E.POWER_RTOL, 1e-6])
 def test_kernel_agrees_with_the_numpy_iteration(n, family, rtol):
-    mf = E.modal_family(n, family)
+    mf = modal_form.modal_family(n, family)
     twist, nu = _points(n)
     assert E.uses_kernel(mf.lam2.size if mf.schur == 2 else mf.lam1.size) == (n <= 128)
     lam, z, w, ok, above = E.lowest_eigenpair(mf, twist, nu, rtol=rtol)
@@ -55,14 +55,14 @@ def test_kernel_agrees_with_the_numpy_iteration(n, family, rtol):
 def test_dense_and_schur_forms_of_the_numpy_iteration_agree(n, family):
     # the numpy reference applies (K - SHIFT)^{-1} as dense LAPACK inverses for a few points
     # and through the Schur complement for many: one iteration, the same eigenpairs to rounding
-    mf = E.modal_family(n, family)
+    mf = modal_form.modal_family(n, family)
     twist, nu = _points(n, 4)
-    pt = E.modal_parts(mf, twist, nu)
-    start = E._start_vector(mf.lam1.size + mf.lam2.size)
+    pt = modal_form.modal_parts(mf, twist, nu)
+    start = modal_form._start_vector(mf.lam1.size + mf.lam2.size)
     first = E.first_check(E.POWER_RTOL, False)
-    dense = E._iterate(E._DenseShifted.from_parts(pt), start, E.POWER_RTOL, None, first,
+    dense = E._iterate(shifted._DenseShifted.from_parts(pt), start, E.POWER_RTOL, None, first,
                        E.POWER_STEPS)
-    schur = E._iterate(E._ShiftedModal.from_parts(mf, pt), start, E.POWER_RTOL, None, first,
+    schur = E._iterate(shifted._ShiftedModal.from_parts(mf, pt), start, E.POWER_RTOL, None, first,
                        E.POWER_STEPS)
     assert dense[3].all() and schur[3].all()
     scale = max(E.POWER_RTOL, 1e-16 * (n / 4.0) ** 4)  # K's round-off, as above
@@ -77,16 +77,16 @@ def test_one_point_iteration_agrees_with_the_batched_numpy_iteration(n, family):
     # the numpy reference's one-point path (one block-diagonal inverse, whole up to
     # POINT_SCHUR_DEGREE and through the Schur complement above; the test from one Gram
     # product) against its batched iteration on the same points: the same eigenpair to rounding
-    assert (n <= E.POINT_SCHUR_DEGREE) == (n <= 40)
-    mf = E.modal_family(n, family)
-    pf = E._point_family(n, family)
+    assert (n <= shifted.POINT_SCHUR_DEGREE) == (n <= 40)
+    mf = modal_form.modal_family(n, family)
+    pf = shifted._point_family(n, family)
     twist, nu = _points(n, 6)
     first = E.first_check(E.POWER_RTOL, False)
     ref = _numpy_pair(mf, twist, nu, E.POWER_RTOL)
     scale = max(E.POWER_RTOL, 1e-16 * (n / 4.0) ** 4)  # K's round-off, as above
     for j in range(twist.size):
         coef = E.term_coefficients(float(twist[j]), float(nu[j])).tolist()
-        lam, unit, status = E._point_iterate(E._point_inverse(pf, coef), pf.start,
+        lam, unit, status = E._point_iterate(shifted._point_inverse(pf, coef), pf.start,
                                              E.POWER_RTOL, None, first, E.POWER_STEPS)
         assert status == modal_kernel.CONVERGED and ref[3][j]
         assert abs(lam / ref[0][j] - 1) <= 50 * scale
@@ -106,15 +106,16 @@ def test_split_products_match_fifty_digit_sums(n, family, monkeypatch):
     import mpmath as mp
 
     monkeypatch.setattr(modal_kernel, "_library", lambda: None)  # the numpy engine's sums
-    mf = E.modal_family(n, family)
+    mf = modal_form.modal_family(n, family)
     twist, nu = np.linspace(20.5, 49.5, 5), np.linspace(1.0, 90.0, 5)
-    _, z, w, ok, _ = E._iterate(E._DenseShifted.from_parts(E.modal_parts(mf, twist, nu)),
-                                E._start_vector(mf.lam1.size + mf.lam2.size), E.POWER_RTOL,
-                                None, E.first_check(E.POWER_RTOL, False), E.POWER_STEPS)
+    dense = shifted._DenseShifted.from_parts(modal_form.modal_parts(mf, twist, nu))
+    _, z, w, ok, _ = E._iterate(dense, modal_form._start_vector(mf.lam1.size + mf.lam2.size),
+                                E.POWER_RTOL, None, E.first_check(E.POWER_RTOL, False),
+                                E.POWER_STEPS)
     x, y = mf.right_vectors(z[ok]), mf.left_vectors(w[ok])
-    hi, lo = E._split_terms(n, family, x, y)
-    got = E._rayleigh_sums(mf.op, twist[ok], nu[ok], y, x, np.longdouble)
-    double = E._rayleigh_sums(mf.op, twist[ok], nu[ok], y, x, np.float64)
+    hi, lo = quotient._split_terms(n, family, x, y)
+    got = quotient._rayleigh_sums(mf.op, twist[ok], nu[ok], y, x, np.longdouble)
+    double = quotient._rayleigh_sums(mf.op, twist[ok], nu[ok], y, x, np.float64)
     pieces = mf.op.pieces
     worst_double = 0.0
     with mp.workdps(50):
@@ -127,13 +128,13 @@ def test_split_products_match_fifty_digit_sums(n, family, monkeypatch):
             # each term within 4 2^-bits m eps sum |y| |P_i| |x| (_split_terms' docstring: the
             # low part's three sums in double)
             sizes = np.abs(y[i]) @ np.abs(pieces) @ np.abs(x[i])
-            bound = 4 * 2.0 ** -E._split_bits(n - 1) * (n - 1) * np.finfo(float).eps * sizes
+            bound = 4 * 2.0 ** -quotient._split_bits(n - 1) * (n - 1) * np.finfo(float).eps * sizes
             for t, h, low, b in zip(terms, hi[i], lo[i], bound, strict=True):
                 assert abs(mp.mpf(float(h)) + mp.mpf(float(low)) - t) <= b
             om, nv_i = mp.mpf(float(twist[ok][i])), mp.mpf(float(nu[ok][i]))
             coef = [t.coefficient(om, nv_i) for t in E.INST1]
             exact = (mp.fsum(c * t for c, t in zip(coef, terms, strict=True))
-                     / mp.fsum(terms[j] for j in E._MASS_TERMS))
+                     / mp.fsum(terms[j] for j in quotient._MASS_TERMS))
             # the coefficients in longdouble carry ~1e-19 Omega^2: the result rounds to double
             assert abs(float(got[i] / exact) - 1) <= 4 * np.finfo(float).eps
             worst_double = max(worst_double, abs(float(double[i] / exact) - 1))
@@ -144,8 +145,8 @@ def test_split_products_match_fifty_digit_sums(n, family, monkeypatch):
 def test_kernel_ceiling_marks_the_same_points_above():
     d = load_figure1()
     twist, nu = d["twist_angle"].to_numpy(), d["nu"].to_numpy()
-    sym = E.modal_family(22, "symmetric")
-    anti = E.modal_family(22, "antisymmetric")
+    sym = modal_form.modal_family(22, "symmetric")
+    anti = modal_form.modal_family(22, "antisymmetric")
     ceiling = E.lowest_eigenpair(sym, twist, nu)[0] * (1 + 1e-6)
     lam, _, _, ok, above = E.lowest_eigenpair(anti, twist, nu, ceiling=ceiling)
     ref_lam, _, _, ref_ok, ref_above = _numpy_pair(anti, twist, nu, E.POWER_RTOL, ceiling)
@@ -176,7 +177,7 @@ def test_kernel_rejects_factors_it_cannot_trust():
 
 @needs_kernel
 def test_rejected_points_are_solved_by_the_numpy_iteration(monkeypatch):
-    mf = E.modal_family(22, "symmetric")
+    mf = modal_form.modal_family(22, "symmetric")
     twist, nu = _points(22, 64)
     want = E.lowest_eigenpair(mf, twist, nu)[0]
     real = modal_kernel.modal_lowest
@@ -214,16 +215,16 @@ def test_double_double_terms_agree_with_longdouble_and_mpmath(family, monkeypatc
     import mpmath as mp
 
     n = 56
-    mf = E.modal_family(n, family)
+    mf = modal_form.modal_family(n, family)
     twist, nu = np.linspace(20.5, 49.5, 24), np.linspace(1.0, 90.0, 24)
     _, z, w, ok, _ = E.lowest_eigenpair(mf, twist, nu)
     x, y = mf.right_vectors(z[ok]), mf.left_vectors(w[ok])
     op, tw, nv = mf.op, twist[ok], nu[ok]
-    got = E._rayleigh_sums(op, tw, nv, y, x, np.longdouble)
+    got = quotient._rayleigh_sums(op, tw, nv, y, x, np.longdouble)
     monkeypatch.setattr(modal_kernel, "_library", lambda: None)
-    longdouble = E._rayleigh_sums(op, tw, nv, y, x, np.longdouble)
+    longdouble = quotient._rayleigh_sums(op, tw, nv, y, x, np.longdouble)
     assert np.max(np.abs(got / longdouble - 1)) <= 4 * np.finfo(float).eps
-    shape, mats = E._term_matrices(n, family)
+    shape, mats = quotient._term_matrices(n, family)
     with mp.workdps(50):
         for i in (0, len(tw) // 2, len(tw) - 1):
             terms = []
@@ -235,7 +236,7 @@ def test_double_double_terms_agree_with_longdouble_and_mpmath(family, monkeypatc
             om, nv_i = mp.mpf(float(tw[i])), mp.mpf(float(nv[i]))
             coef = [t.coefficient(om, nv_i) for t in E.INST1]
             exact = (mp.fsum(c * t for c, t in zip(coef, terms, strict=True))
-                     / mp.fsum(terms[j] for j in E._MASS_TERMS))
+                     / mp.fsum(terms[j] for j in quotient._MASS_TERMS))
             # the code's coefficients in longdouble carry ~1e-19 Omega^2: the result rounds
             # to double
             assert abs(float(got[i] / exact) - 1) <= 4 * np.finfo(float).eps

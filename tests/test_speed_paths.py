@@ -25,12 +25,8 @@ from spectral_rod.rod.characteristic import characteristic_double_batch
 from spectral_rod.rod.collocation import modal_kernel
 from spectral_rod.rod.collocation.arithmetic import ARRAYS, FLOATS
 from spectral_rod.rod.collocation.driver import pick_family
-from spectral_rod.rod.collocation.eigensolver import (
-    solve_family,
-    solve_family_eig,
-    solve_point,
-    solve_points,
-)
+from spectral_rod.rod.collocation.eigensolver import solve_family, solve_point, solve_points
+from spectral_rod.rod.collocation.reference import solve_family_eig
 from spectral_rod.rod.families import CLOSE_REL
 from spectral_rod.rod.router import NEAR_DEGENERATE, TWIST_ROUTE, route, route_point
 

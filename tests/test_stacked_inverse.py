@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from spectral_rod.rod.collocation import eigensolver
+from spectral_rod.rod.collocation import modal_form, shifted
 from spectral_rod.rod.collocation.stacked_inverse import (
     BLOCK_ENTRIES,
     block_inverse,
@@ -24,8 +24,8 @@ def _schur_complements(n: int, family: str, points: int, seed: int) -> np.ndarra
                                                                              points // 2)])
     nu = np.exp(rng.uniform(0, np.log(1e4), points))
     nu[:10] = 1 + 10 ** rng.uniform(-12, -3, 10)
-    mf = eigensolver.modal_family(n, family)
-    inverse = eigensolver._ShiftedModal.at(mf, om, nu).schur_inv
+    mf = modal_form.modal_family(n, family)
+    inverse = shifted._ShiftedModal.at(mf, om, nu).schur_inv
     return np.linalg.inv(inverse)  # S itself, to the accuracy of a pivoted LU
 
 

@@ -19,7 +19,8 @@ from spectral_rod.rod.characteristic import (
 )
 from spectral_rod.rod.characteristic_mode import boundary_determinant_4x4, characteristic_mode
 from spectral_rod.rod.collocation import collocation_family_load
-from spectral_rod.rod.collocation.eigensolver import solve_family, solve_family_eig
+from spectral_rod.rod.collocation.eigensolver import solve_family
+from spectral_rod.rod.collocation.reference import solve_family_eig
 from spectral_rod.rod.critical import critical_load
 from spectral_rod.rod.crossings import family_crossing, family_slope
 

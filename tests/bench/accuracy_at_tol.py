@@ -23,7 +23,7 @@ from __future__ import annotations
 import numpy as np
 
 import spectral_rod as sr
-from spectral_rod.rod.collocation import eigensolver
+from spectral_rod.rod.collocation import eigensolver, quotient
 
 EPS = float(np.finfo(float).eps)
 
@@ -61,10 +61,12 @@ def long_twist() -> None:
     limit = eigensolver.LONG_TWIST
     try:
         for name, value in (("double", np.inf), ("extended", 0.0)):
-            eigensolver.LONG_TWIST = value
+            for module in (eigensolver, quotient):  # every module that reads LONG_TWIST
+                module.LONG_TWIST = value
             ratio[name] = errors(tw, nv, 1e-12) / roundoff
     finally:
-        eigensolver.LONG_TWIST = limit
+        for module in (eigensolver, quotient):
+            module.LONG_TWIST = limit
     for lo, hi in ((5, 10), (10, 13), (13, 16), (16, 20)):
         band = (tw >= lo) & (tw < hi)
         print(f"Omega(L) in [{lo}, {hi}): error / round-off part, quotient in double "

@@ -44,10 +44,13 @@ from spectral_rod import critical_load, load_figure1
 from spectral_rod._blas_threads import one_blas_thread
 from spectral_rod.rod.characteristic import characteristic_critical_load
 from spectral_rod.rod.collocation import eigensolver as E
+from spectral_rod.rod.collocation import modal_form, shifted
 from spectral_rod.rod.collocation.discretisation import term_coefficients
 from spectral_rod.rod.collocation.driver import solve_degrees
-from spectral_rod.rod.collocation.eigensolver import _rowdot, _ShiftedModal, _start_vector
+from spectral_rod.rod.collocation.eigensolver import _rowdot
+from spectral_rod.rod.collocation.modal_form import _start_vector
 from spectral_rod.rod.collocation.resolution import initial_degree
+from spectral_rod.rod.collocation.shifted import _ShiftedModal
 from spectral_rod.rod.collocation.stacked_inverse import block_inverse
 from spectral_rod.rod.families import SHIFT
 
@@ -144,10 +147,10 @@ def ritz(cur, prev, active):
     return plain((x + cx * dx, kx + cx * kdx, y + cy * dy, ky + cy * kdy), None, active)
 
 
-def k_products(mf: E.ModalFamily, twist, nu) -> Callable:
+def k_products(mf: modal_form.ModalFamily, twist, nu) -> Callable:
     """A test in float64 with true products K z, K^T w (for the float32 iteration)."""
     coef = term_coefficients(twist, nu)[:, :, None]
-    (s1, z1, c1), (s2, z2, c2) = E.MODAL_TERMS
+    (s1, z1, c1), (s2, z2, c2) = modal_form.MODAL_TERMS
     d = (coef[:, z1] - coef[:, s1] * mf.lam1, coef[:, z2] - coef[:, s2] * mf.lam2)
     a1, a2, k1 = 2.0 * coef[:, c1], 2.0 * coef[:, c2], mf.lam1.size
 
@@ -166,28 +169,31 @@ def k_products(mf: E.ModalFamily, twist, nu) -> Callable:
 @contextmanager
 def per_point_shift(shift: np.ndarray):
     """_ShiftedModal.at with a shift per point (a column broadcasts where SHIFT stood)."""
-    E.SHIFT = shift[:, None]
+    modules = (E, modal_form, shifted)  # every module that reads SHIFT on this path
+    for module in modules:
+        module.SHIFT = shift[:, None]
     try:
         yield
     finally:
-        E.SHIFT = SHIFT
+        for module in modules:
+            module.SHIFT = SHIFT
 
 
-def single(mf: E.ModalFamily) -> E.ModalFamily:
+def single(mf: modal_form.ModalFamily) -> modal_form.ModalFamily:
     """The modal family in float32."""
     arrays = {f.name: getattr(mf, f.name).astype(np.float32)
               for f in dataclasses.fields(mf) if isinstance(getattr(mf, f.name), np.ndarray)}
     return dataclasses.replace(mf, **arrays)
 
 
-def at_single(mf32: E.ModalFamily, twist, nu) -> _ShiftedModal:
+def at_single(mf32: modal_form.ModalFamily, twist, nu) -> _ShiftedModal:
     """_ShiftedModal.at in float32, its Schur complements inverted by unchecked blocks."""
-    real = E.stacked_inverse
-    E.stacked_inverse = block_inverse
+    real = shifted.stacked_inverse
+    shifted.stacked_inverse = block_inverse
     try:
         return _ShiftedModal.at(mf32, twist.astype(np.float32), nu.astype(np.float32))
     finally:
-        E.stacked_inverse = real
+        shifted.stacked_inverse = real
 
 
 def minima(fns: list[Callable], rounds: int = ROUNDS) -> list[float]:
@@ -207,10 +213,11 @@ def groups(tol: float):
     deg = solve_degrees(initial_degree(tw, tol))
     for n in np.unique(deg).tolist():
         for family in ("symmetric", "antisymmetric"):
-            yield n, family, E.modal_family(n, family), tw[deg == n], nv[deg == n]
+            yield n, family, modal_form.modal_family(n, family), tw[deg == n], nv[deg == n]
 
 
-def compare(name: str, n: int, family: str, mf: E.ModalFamily, tw, nv, rtol: float) -> None:
+def compare(name: str, n: int, family: str, mf: modal_form.ModalFamily, tw, nv,
+            rtol: float) -> None:
     """Run alternative `name` and its plain loop on one degree group; print a row."""
     exact = E.lowest_eigenpair(mf, tw, nv, rtol=E.POWER_RTOL)[0]
     size, fixed = mf.lam1.size + mf.lam2.size, np.full(tw.size, SHIFT)

@@ -9,10 +9,10 @@
 2. ``tuning.few_points_limit``: the kernel one point at a time (one lane) against 32 lanes,
    ``eigensolver.solve_points`` forced to either, on k random Figure 1 points at degree n;
    the cheaper one.
-3. The pencil's Rayleigh-quotient terms at |Omega(L)| > LONG_TWIST (``eigensolver._rayleigh_sums``
+3. The pencil's Rayleigh-quotient terms at |Omega(L)| > LONG_TWIST (``quotient._rayleigh_sums``
    in ``longdouble``): the kernel's double-double products against numpy's ``longdouble`` ones,
    us a point on 500 random points, n = 24, 44, 56; and for one point (a scalar call) the
-   kernel's, the numpy engine's split products (``eigensolver._split_terms``, its choice up to
+   kernel's, the numpy engine's split products (``quotient._split_terms``, its choice up to
    ``tuning.DENSE_ENTRIES``) and ``longdouble`` products, us a call.
 
 Minima of interleaved rounds on one BLAS thread. The docstrings of those constants quote what
@@ -27,7 +27,7 @@ from alternatives import minima
 from spectral_rod import load_figure1
 from spectral_rod._blas_threads import one_blas_thread
 from spectral_rod.rod.collocation import eigensolver as E
-from spectral_rod.rod.collocation import modal_kernel
+from spectral_rod.rod.collocation import modal_form, modal_kernel, quotient
 from spectral_rod.rod.collocation.discretisation import family_operator
 from spectral_rod.rod.collocation.tuning import iteration_rtol
 
@@ -58,7 +58,7 @@ def _kernel_against_numpy(rng: np.random.Generator) -> None:
     for n, points in ((22, 1200), (22, 100), (40, 400), (64, 200), (100, 100), (128, 60),
                       (144, 60), (160, 40), (256, 20)):
         for family in ("symmetric", "antisymmetric"):
-            mf = E.modal_family(n, family)
+            mf = modal_form.modal_family(n, family)
             tw = rng.uniform(0, max(1.0, 1.8 * (n - 16)), points)
             nv = rng.uniform(1.1, 10.0, points)
             def fast(mf=mf, tw=tw, nv=nv):
@@ -103,7 +103,7 @@ def extended_quotient() -> None:
             x, y = rng.standard_normal((500, m)), rng.standard_normal((500, m))
 
             def terms(op=op, tw=tw, nv=nv, x=x, y=y):
-                return E._rayleigh_sums(op, tw, nv, y, x, np.longdouble)
+                return quotient._rayleigh_sums(op, tw, nv, y, x, np.longdouble)
 
             t_dd, t_ld = minima([terms, numpy_only(terms)], 7)
             print(f"  n = {n}, {family:<13}: {t_dd / 500 * 1e6:5.2f} / {t_ld / 500 * 1e6:5.2f}")
@@ -115,17 +115,17 @@ def extended_quotient() -> None:
         x, y = rng.standard_normal((1, m)), rng.standard_normal((1, m))
 
         def one(op=op, tw=tw, nv=nv, x=x, y=y):
-            return E._rayleigh_sums(op, tw, nv, y, x, np.longdouble)
+            return quotient._rayleigh_sums(op, tw, nv, y, x, np.longdouble)
 
         split = numpy_only(one)
 
         def longdouble(fn=split):
-            limit = E.DENSE_ENTRIES
-            E.DENSE_ENTRIES = 0  # the longdouble products, as for many points
+            limit = quotient.DENSE_ENTRIES
+            quotient.DENSE_ENTRIES = 0  # the longdouble products, as for many points
             try:
                 return fn()
             finally:
-                E.DENSE_ENTRIES = limit
+                quotient.DENSE_ENTRIES = limit
 
         times = minima([lambda fn=fn: [fn() for _ in range(100)]
                         for fn in (one, split, longdouble)], 7)

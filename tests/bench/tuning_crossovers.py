@@ -16,7 +16,7 @@ for and move each constant to where its ratio crosses 1.
 3. BLOCK_ENTRIES: ``stacked_inverse`` by blocks (checked) / ``numpy.linalg.inv``, per stack of
    `count` matrices k x k; the threshold is the entries count k^2 where it crosses 1.
 4. POINT_SCHUR_DEGREE: the one-point numpy path's inverse of K - SHIFT
-   (``eigensolver._point_inverse``) through the Schur complement / whole, n = 16..64, the
+   (``shifted._point_inverse``) through the Schur complement / whole, n = 16..64, the
    symmetric family at Omega(L) = 0.9 n, nu = 3; the threshold is the degree where it crosses 1.
 """
 
@@ -29,7 +29,7 @@ import numpy as np
 
 from spectral_rod._blas_threads import one_blas_thread
 from spectral_rod.rod.collocation import eigensolver as E
-from spectral_rod.rod.collocation import modal_kernel, tuning
+from spectral_rod.rod.collocation import modal_kernel, quotient, shifted, tuning
 from spectral_rod.rod.collocation import stacked_inverse as S
 
 ROUNDS = 15
@@ -57,11 +57,12 @@ def dense_entries(rng: np.random.Generator) -> None:
     print(f"1. numpy reference: dense inverses / Schur complement, both families "
           f"(DENSE_ENTRIES = {tuning.DENSE_ENTRIES:,})")
     rtol = tuning.iteration_rtol(1e-12)
-    library, limit = modal_kernel._library, E.DENSE_ENTRIES
+    library, limit = modal_kernel._library, tuning.DENSE_ENTRIES
     modal_kernel._library = lambda: None  # the numpy reference answers every call
 
     def solve(entries: int, n: int, tw, nv) -> None:
-        E.DENSE_ENTRIES = entries
+        for module in (E, shifted, quotient):  # every module that reads DENSE_ENTRIES
+            module.DENSE_ENTRIES = entries
         E.solve_points(n, tw, nv, rtol)
 
     try:
@@ -74,7 +75,9 @@ def dense_entries(rng: np.random.Generator) -> None:
                     lambda n=n, tw=tw, nv=nv: solve(-1, n, tw, nv))))
             print(f"   n = {n:3d}: " + "  ".join(f"{e:>6,} entries {r:5.2f}" for e, r in row))
     finally:
-        modal_kernel._library, E.DENSE_ENTRIES = library, limit
+        modal_kernel._library = library
+        for module in (E, shifted, quotient):
+            module.DENSE_ENTRIES = limit
 
 
 def lean_max_degree(rng: np.random.Generator) -> None:
@@ -130,18 +133,18 @@ def point_schur_degree() -> None:
     print(f"4. one point's inverse: Schur complement / whole (POINT_SCHUR_DEGREE = "
           f"{tuning.POINT_SCHUR_DEGREE})")
     row = []
-    limit = E.POINT_SCHUR_DEGREE
+    limit = shifted.POINT_SCHUR_DEGREE
     for n in (16, 22, 28, 34, 40, 44, 48, 56, 64):
-        pf = E._point_family(n, "symmetric")
+        pf = shifted._point_family(n, "symmetric")
         coef = E.term_coefficients(0.9 * n, 3.0).tolist()
 
         def inverse(schur: bool, pf=pf, coef=coef) -> None:
-            E.POINT_SCHUR_DEGREE = 0 if schur else 10**6
+            shifted.POINT_SCHUR_DEGREE = 0 if schur else 10**6
             try:
                 for _ in range(50):
-                    E._point_inverse(pf, coef)
+                    shifted._point_inverse(pf, coef)
             finally:
-                E.POINT_SCHUR_DEGREE = limit
+                shifted.POINT_SCHUR_DEGREE = limit
 
         ratio = best_ratio(lambda f=inverse: f(True), lambda f=inverse: f(False))
         row.append(f"n = {n}: {ratio:.2f}")

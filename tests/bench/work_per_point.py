@@ -23,7 +23,7 @@ import numpy as np
 from spectral_rod import load_figure1
 from spectral_rod._blas_threads import one_blas_thread
 from spectral_rod.rod.collocation import eigensolver as E
-from spectral_rod.rod.collocation import modal_kernel
+from spectral_rod.rod.collocation import modal_form, modal_kernel, reference, shifted
 from spectral_rod.rod.collocation.discretisation import family_operator
 from spectral_rod.rod.collocation.driver import solve_degrees
 from spectral_rod.rod.collocation.resolution import initial_degree
@@ -38,7 +38,7 @@ def contraction(n: int, family: str, tw: np.ndarray, nv: np.ndarray, j: int = 2
     theta = np.linalg.eigvals(np.linalg.solve(a, np.broadcast_to(b, a.shape)))
     out = []
     for row in theta:
-        ok = (np.abs(row.imag) <= E.IMAG_REL * np.abs(row)) & (row.real > 0)
+        ok = (np.abs(row.imag) <= reference.IMAG_REL * np.abs(row)) & (row.real > 0)
         lam = np.sort(1.0 / row.real[ok])
         out.append((lam[0] - SHIFT) / (lam[j - 1] - SHIFT))
     return np.array(out)
@@ -47,17 +47,17 @@ def contraction(n: int, family: str, tw: np.ndarray, nv: np.ndarray, j: int = 2
 def steps_per_point(n: int, family: str, tw: np.ndarray, nv: np.ndarray, rtol: float) -> float:
     """Mean shift-and-invert steps a point took (rows through ``_ShiftedModal.solve``)."""
     rows = []
-    solve = E._ShiftedModal.solve
+    solve = shifted._ShiftedModal.solve
 
     def counting(self, v):
         rows.append(v.shape[0])
         return solve(self, v)
 
-    E._ShiftedModal.solve = counting
+    shifted._ShiftedModal.solve = counting
     try:
         E.solve_family(n, family, tw, nv, rtol=rtol)
     finally:
-        E._ShiftedModal.solve = solve
+        shifted._ShiftedModal.solve = solve
     return sum(rows) / tw.size
 
 
@@ -92,7 +92,7 @@ def main() -> None:
         for n in np.unique(deg).tolist():
             sel = deg == n
             for family in FAMILIES:
-                mf = E.modal_family(n, family)
+                mf = modal_form.modal_family(n, family)
                 k1, k2 = mf.lam1.size, mf.lam2.size
                 k_s, k_e = (k2, k1) if mf.schur == 2 else (k1, k2)
                 library = modal_kernel._library

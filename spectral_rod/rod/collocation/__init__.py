@@ -29,12 +29,17 @@ The modules
 * :mod:`.resolution` -- the a priori degree, the mode's coefficient tail and the error model;
 * :mod:`.arithmetic` -- the operations those rules are written against, for arrays and for one
   point in Python floats;
+* :mod:`.modal_form` -- each family in the eigenbasis of its uncoupled operators (K diagonal
+  plus an Omega-proportional coupling), and K - SHIFT at a batch of points;
+* :mod:`.shifted` -- (K - SHIFT)^{-1} for the numpy reference: Schur complement, dense
+  inverses for a few points, one block-diagonal matrix for one point;
+* :mod:`.quotient` -- the pencil's two-sided Rayleigh quotient, its precision a parameter;
 * :mod:`.eigensolver` -- the engine's entry points for points of one degree
   (:func:`.eigensolver.solve_points`, :func:`.eigensolver.solve_point` for one point in Python
-  floats): both families' lowest physical eigenvalue (modal basis, Schur complement, two-sided
-  shift-and-invert iteration), by the C kernel where it is built, else by this module's numpy
-  reference of it; and the full ``eig`` with the physical-eigenvalue rule, the test reference,
-  which also decides where the iteration is rejected;
+  floats): both families' lowest physical eigenvalue by two-sided shift-and-invert iteration,
+  by the C kernel where it is built, else by its numpy reference;
+* :mod:`.reference` -- the full ``eig`` with the physical-eigenvalue rule: the test
+  reference, which also decides where the iteration is rejected;
 * :mod:`.modal_kernel` -- the engine: that iteration in C, 32 points side by side or one point
   at a time (one code, ``solve_group``), the pencil's Rayleigh quotient and the mode's tail; its
   contract is ``_modal_kernel.h`` (structs, INFO returns, an ABI version checked at load);
@@ -58,12 +63,13 @@ which family is p*            :func:`.driver.pick_family`
 one lane or 32 lanes          :func:`.eigensolver.solve_points` (:func:`.tuning.few_points_limit`)
 kernel or numpy reference     :func:`.eigensolver.lowest_eigenpair` (built, KERNEL_MAX_SCHUR,
                               a point the kernel rejects)
-dense or Schur (numpy)        :func:`.eigensolver._shifted` (:data:`.tuning.DENSE_ENTRIES`)
+dense or Schur (numpy)        :func:`.shifted._shifted` (:data:`.tuning.DENSE_ENTRIES`)
 converged or not              :func:`.eigensolver.converged` (C: ``solve_group``)
-the eigenvalue                :func:`.eigensolver.pencil_rayleigh_quotient` (C:
+the eigenvalue                :func:`.quotient.pencil_rayleigh_quotient` (C:
                               ``pencil_quotient``; precision a parameter)
 the mode's tail               :func:`.resolution.mode_tails` (C: ``family_point``)
-the full ``eig``              where the iteration is rejected: the reference decides
+the full ``eig``              :mod:`.reference`: the test reference; it decides where the
+                              iteration is rejected
 ============================  ===========================================================
 
 ``CriticalLoad.engine`` records per point whether the kernel computed it.

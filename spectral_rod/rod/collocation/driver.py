@@ -33,14 +33,8 @@ from spectral_rod._validation import check_resolution, scalar_nu, scalar_twist
 from spectral_rod.rod.collocation import modal_kernel
 from spectral_rod.rod.collocation.arithmetic import ARRAYS, FLOATS, Namespace
 from spectral_rod.rod.collocation.discretisation import family_operator
-from spectral_rod.rod.collocation.eigensolver import (
-    ISOLATION_GAP,
-    lowest_gap,
-    physical_eig,
-    solve_family,
-    solve_point,
-    solve_points,
-)
+from spectral_rod.rod.collocation.eigensolver import solve_family, solve_point, solve_points
+from spectral_rod.rod.collocation.reference import ISOLATION_GAP, lowest_gap, physical_eig
 from spectral_rod.rod.collocation.resolution import (
     N_MAX,
     N_MIN,
@@ -333,7 +327,7 @@ def collocation_family_load(twist_angle: float, nu: float, family: str, n: int) 
     assumes the family's lowest eigenvalue is isolated, which a family on its own need not be
     (the antisymmetric family near nu = 4 at small twist: 2e-8 off at n = 80 through the
     iteration); the full ``eig`` checks the gap first, and below
-    :data:`~.eigensolver.ISOLATION_GAP` its own eigenvalue is returned (elsewhere the
+    :data:`~.reference.ISOLATION_GAP` its own eigenvalue is returned (elsewhere the
     iteration's, whose two-sided quotient has the smaller round-off: a crossing twist of
     Figure 1 moved by 3.5e-9 with eig's).
     """

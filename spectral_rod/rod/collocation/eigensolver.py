@@ -1,71 +1,71 @@
-r"""The lowest physical eigenpair of the collocation pencil of Eq. ``inst1``, fast: the engine's
-entry points (:func:`solve_points`, :func:`solve_point`) and its numpy reference.
+r"""The engine of Eq. ``inst1``'s collocation eigenvalue: the lowest physical eigenpair of both
+mode families at points of one degree (:func:`solve_points`; :func:`solve_point` for one point
+in Python floats), by shift-and-invert iteration on right and left vectors.
 
-Only the lowest eigenvalue is needed and it is >= pi^2 (:mod:`spectral_rod.rod.families`). The
-uncoupled operators -d^2/ds^2 of each field are diagonalised once per degree
-(:class:`ModalFamily`); in that basis the family is K z = lambda z with K diagonal plus an
-Omega-proportional coupling, so K - SHIFT is inverted through a Schur complement of the smaller
-block, for all points of a degree at once (:class:`_ShiftedModal`; for a few points as dense
-inverses, :class:`_DenseShifted`). Shift-and-invert iteration on right and left vectors
-(:func:`lowest_eigenpair`, contraction 0.01-0.2 per step on Figure 1's range) gives the
-eigenvectors, and the eigenvalue is the two-sided Rayleigh quotient of the O(1) pencil (A, B)
-itself (error = product of the two vectors' errors).
+Only the lowest eigenvalue is needed and it is >= pi^2 (:mod:`spectral_rod.rod.families`). In
+the modal form of a family (:mod:`.modal_form`) K - SHIFT is inverted once per point
+(:mod:`.shifted`); the iteration (:func:`lowest_eigenpair`, contraction 0.01-0.2 per step on
+Figure 1's range) gives the eigenvectors, and the eigenvalue is the pencil's two-sided Rayleigh
+quotient (:mod:`.quotient`). Where the iteration is rejected (a spurious eigenvalue nearer the
+shift than the physical one) the reference, the full ``eig`` with the physical-eigenvalue rule
+(:mod:`.reference`), decides.
 
-One algorithm, two implementations: the C kernel of :mod:`.modal_kernel` (the engine: 32
-points side by side, or one point at a time with the same code, ``solve_group``) and this
-module's numpy code (its executable reference, and the engine where the kernel is not built).
-Each rule has one numpy function mirroring the kernel's: the convergence test
-:func:`converged` (with :func:`_lanes_test`, C ``lanes_test``), the pencil's quotient
-:func:`pencil_rayleigh_quotient` (C ``pencil_quotient``, its precision a parameter) and the
-tail :func:`.resolution.mode_tails` (C ``family_point``); ``tests/test_modal_kernel.py``,
-``tests/test_engine_contract.py`` and ``tests/test_speed_paths.py`` compare the two. A scalar
-call without the kernel takes the numpy reference's one-point form of ``modal_points``
-(:func:`_numpy_point`): (K - SHIFT)^{-1} and its transpose as one block-diagonal matrix, so that
-a step is one product, the same test from one Gram product (:func:`_point_iterate`), and the
-pencil's quotient above LONG_TWIST from exact split BLAS products (:func:`_split_terms`) rather
-than ``longdouble`` loops.
-
-Choosing the physical eigenvalue (the rule)
--------------------------------------------
-The continuous spectrum is real and >= pi^2. Collocation adds spurious eigenvalues that are
-complex or very large (theta = 1/lambda near 0). The rule: from each family keep theta with
-|Im theta| <= 1e-8 |theta| and Re theta > 0 and take the largest (the smallest lambda); p* is
-the smaller of the two families. The fast path returns the eigenvalue nearest above SHIFT;
-as every physical eigenvalue is >= pi^2 > SHIFT this is the rule's choice unless a spurious
-eigenvalue is nearer to SHIFT, in which case the iteration does not converge to a real value
->= SHIFT and the full ``eig`` of the inverse pencil A^{-1} B with the rule decides (the two are
-compared on a grid in ``tests/test_accuracy_control.py``). The choice is accepted only if the
-error estimate from the mode's Chebyshev coefficients (:mod:`.resolution`; a spurious mode is
-unresolved by construction) meets the tolerance.
+One algorithm, two implementations: the C kernel of :mod:`.modal_kernel` (the engine: 32 points
+side by side, ``modal_lowest``, or one point at a time, ``modal_points``, with one iteration
+code, ``solve_group``) and this module's numpy code (its executable reference, and the engine
+where the kernel is not built), in the same two forms: batched (:func:`_iterate`) and one point
+(:func:`_numpy_point`, (K - SHIFT)^{-1} and its transpose as one block-diagonal matrix so that a
+step is one product, the test's quotient and bound from one Gram product). Each rule has one
+numpy function mirroring the kernel's: the convergence test :func:`converged` (C
+``lanes_test``/``solve_group``), the quotient :func:`.quotient.pencil_rayleigh_quotient` (C
+``pencil_quotient``) and the tail of :mod:`.resolution` (C ``family_point``);
+``tests/test_modal_kernel.py``, ``tests/test_engine_contract.py`` and
+``tests/test_speed_paths.py`` compare the two, and both with the reference. The choice is
+accepted only if the error estimate from the mode's Chebyshev coefficients (:mod:`.resolution`;
+a spurious mode is unresolved by construction) meets the tolerance.
 """
 
 from __future__ import annotations
 
 import ctypes
 import math
-from dataclasses import dataclass
 from functools import lru_cache
-from typing import Any, NamedTuple, cast
+from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import NDArray
 
 from spectral_rod.rod.collocation import modal_kernel
-from spectral_rod.rod.collocation.discretisation import (
-    INST1,
-    FamilyOperator,
-    family_operator,
-    term_coefficients,
+from spectral_rod.rod.collocation.discretisation import INST1, term_coefficients
+from spectral_rod.rod.collocation.modal_form import (
+    MODAL_TERMS,
+    ModalFamily,
+    _start_vector,
+    modal_family,
+    modal_parts,
 )
+from spectral_rod.rod.collocation.quotient import (
+    _MASS_TERMS,
+    _rayleigh_sums,
+    _term_matrices,
+    pencil_rayleigh_quotient,
+)
+from spectral_rod.rod.collocation.reference import solve_family_eig
 from spectral_rod.rod.collocation.resolution import mode_tails, tail_from_parts, tail_parts
-from spectral_rod.rod.collocation.stacked_inverse import BACKWARD_TOL, stacked_inverse
+from spectral_rod.rod.collocation.shifted import (
+    _DenseShifted,
+    _point_family,
+    _point_inverse,
+    _shifted,
+    _ShiftedModal,
+)
+from spectral_rod.rod.collocation.stacked_inverse import BACKWARD_TOL
 from spectral_rod.rod.collocation.tuning import (
     CALIBRATED_TOL,
     DENSE_ENTRIES,
     KERNEL_MAX_SCHUR,
     LEAN_MAX_DEGREE,
     LONG_TWIST,
-    POINT_SCHUR_DEGREE,
     POWER_RTOL,
     POWER_STEPS,
     few_points_limit,
@@ -76,302 +76,9 @@ from spectral_rod.rod.collocation.tuning import (
 )
 from spectral_rod.rod.families import CLOSE_REL, FAMILIES, SHIFT
 
-__all__ = ["CALIBRATED_TOL", "ISOLATION_GAP", "KERNEL_MAX_SCHUR", "ModalFamily", "ModalParts",
-           "first_check", "iteration_allowance", "iteration_rtol", "kernel_families",
-           "loose_quotient", "lowest_eigenpair", "lowest_gap", "modal_family", "modal_parts",
-           "pencil_rayleigh_quotient",
-           "physical_eig", "solve_family", "solve_family_eig", "uses_kernel"]
-
-#: Eigenvalues with |Im| above this fraction of |lambda| are complex, i.e. not physical.
-IMAG_REL = 1.0e-8
-
-
-def _modal_terms() -> tuple[tuple[int, int, int], tuple[int, int, int]]:
-    """Indices in INST1 of (second-order own, zero-order own, first-order coupling) term per
-    equation: the structure the modal form relies on (checked here, once)."""
-    out = []
-    for e in range(2):
-        idx = {(t.field == e, t.order): i for i, t in enumerate(INST1) if t.equation == e}
-        if set(idx) != {(True, 2), (True, 0), (False, 1)}:
-            raise ArithmeticError("the modal eigensolver needs, per equation, a 2nd- and a "
-                                  "0th-order own term and a 1st-order coupling term")
-        out.append((idx[True, 2], idx[True, 0], idx[False, 1]))
-    return out[0], out[1]
-
-
-MODAL_TERMS = _modal_terms()
-
-
-def _lowest_physical(theta: NDArray[np.complex128]) -> NDArray[np.int_]:
-    """Index of the largest real positive theta = 1/lambda in each row (the rule above)."""
-    ok = (np.abs(theta.imag) <= IMAG_REL * np.abs(theta)) & (theta.real > 0)
-    return np.argmax(np.where(ok, theta.real, -np.inf), axis=-1)
-
-
-def physical_eig(m: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """Largest real positive theta of each matrix and its eigenvector by full ``eig`` (the rule).
-
-    theta = nan where no eigenvalue passes the rule.
-    """
-    theta, vec = np.linalg.eig(m)
-    idx = _lowest_physical(theta)
-    rows = np.arange(theta.shape[0])
-    th = theta[rows, idx]
-    valid = (np.abs(th.imag) <= IMAG_REL * np.abs(th)) & (th.real > 0)
-    return np.where(valid, th.real, np.nan), vec[rows, :, idx].real
-
-
-@dataclass(frozen=True)
-class ModalFamily:
-    """One parity family in the eigenbasis of its uncoupled second-derivative operators.
-
-    S_i = -4 V_i^{-1} D2_i (the collocated -d^2/ds^2 with omega = 0 at the ends; real spectrum
-    ~ (j pi)^2, eigenvector matrices U_i with condition numbers <= 21 up to n = 256) is
-    diagonalised once per degree: S_i = U_i diag(Lambda_i) U_i^{-1}. With c_i = U_i z_i and the
-    rows multiplied by U_i^{-1} V_i^{-1}, the pencil (A, B) becomes the similar standard problem
-
-        K z = lambda z,   K = diag(c0_1 - c2_1 Lambda_1, c0_2 - c2_2 Lambda_2)
-                              + [[0, 2 c1_1 G12], [2 c1_2 G21, 0]],
-
-    with c2_i, c0_i, c1_i the coefficients of equation i's second-order, zero-order and coupling
-    terms in :data:`INST1` (for ``inst1``: diag(Lambda_1 + Omega^2, nu (Lambda_2 + Omega^2)) +
-    Omega [[0, 4 nu G12], [-4 G21, 0]]), G12 = U_1^{-1} V_1^{-1} C12 U_2, G21 = U_2^{-1} V_2^{-1}
-    C21 U_1 (C = d/dx of the other field's basis at the equation's points): diagonal plus an
-    Omega-proportional coupling, so shifted solves
-    need only a Schur complement of one block. It is taken on the smaller block (``schur``:
-    1 or 2), because its per-point inverse is the largest single cost of the fast path.
-    """
-
-    op: FamilyOperator
-    lam1: NDArray[np.float64]  # Lambda_1 (k1,)
-    lam2: NDArray[np.float64]  # Lambda_2 (k2,)
-    u1: NDArray[np.float64]  # c1 = U_1 z1
-    u2: NDArray[np.float64]
-    left1: NDArray[np.float64]  # U_1^{-1} V_1^{-1}: left eigenvectors y1^T = w1^T left1
-    left2: NDArray[np.float64]
-    g12: NDArray[np.float64]  # (k1, k2)
-    g21: NDArray[np.float64]  # (k2, k1)
-    schur: int  # the block (1 or 2) that carries the Schur complement; the other is eliminated
-    outer: NDArray[np.float64]  # (k_e, k_s^2): G_se[:, j] (x) G_es[j, :], e eliminated, s Schur
-
-    def right_vectors(self, z: NDArray[np.float64]) -> NDArray[np.float64]:
-        """The pencil's right vectors (coefficients c, rows) from modal ones z: c_i = U_i z_i."""
-        k1 = self.lam1.size
-        return np.hstack([z[:, :k1] @ self.u1.T, z[:, k1:] @ self.u2.T])
-
-    def left_vectors(self, w: NDArray[np.float64]) -> NDArray[np.float64]:
-        """The pencil's left vectors (rows) from modal ones w: y_i^T = w_i^T U_i^{-1} V_i^{-1}."""
-        k1 = self.lam1.size
-        return np.hstack([w[:, :k1] @ self.left1, w[:, k1:] @ self.left2])
-
-
-@lru_cache(maxsize=64)
-def modal_family(n: int, family: str) -> ModalFamily:
-    """Diagonalise the uncoupled operators of (n, family) once (see :class:`ModalFamily`)."""
-    op = family_operator(n, family)
-    b1, b2 = op.bases[0][0], op.bases[1][1]
-    lam1, u1 = _real_eig(cast(NDArray[np.float64], -4.0 * np.linalg.solve(b1.value, b1.d2)))
-    lam2, u2 = _real_eig(cast(NDArray[np.float64], -4.0 * np.linalg.solve(b2.value, b2.d2)))
-    left1 = np.linalg.solve(u1, np.linalg.inv(b1.value))
-    left2 = np.linalg.solve(u2, np.linalg.inv(b2.value))
-    g12 = left1 @ op.bases[0][1].d1 @ u2
-    g21 = left2 @ op.bases[1][0].d1 @ u1
-    schur = 2 if lam2.size <= lam1.size else 1
-    g_es, g_se = (g12, g21) if schur == 2 else (g21, g12)
-    outer = np.einsum("ij,jk->jik", g_se, g_es).reshape(g_es.shape[0], -1)
-    return ModalFamily(op, lam1, lam2, u1, u2, left1, left2, g12, g21, schur, outer)
-
-
-def _real_eig(s: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """Eigen-decomposition of a matrix with a real spectrum, ascending."""
-    lam, u = np.linalg.eig(s)
-    if np.abs(lam.imag).max() > 1e-8 * np.abs(lam).max():
-        raise ArithmeticError("second-derivative collocation operator with complex spectrum")
-    order = np.argsort(lam.real)
-    return lam.real[order], u.real[:, order]
-
-
-class ModalParts(NamedTuple):
-    """K - SHIFT at a batch of points in the blocks of :class:`_ShiftedModal`, before its Schur
-    complement is formed: the columns of the eliminated (e) and Schur (s) blocks, r_e (P, k_e) =
-    1 / (D_e - SHIFT), the coupling factors a, b (P, 1), d_s (P, k_s) = D_s - SHIFT and the
-    shared G_es (k_e, k_s), G_se (k_s, k_e)."""
-
-    elim: slice
-    kept: slice
-    r_e: NDArray[np.float64]
-    a: NDArray[np.float64]
-    b: NDArray[np.float64]
-    d_s: NDArray[np.float64]
-    g_es: NDArray[np.float64]
-    g_se: NDArray[np.float64]
-
-    def take(self, idx: NDArray[np.int_]) -> ModalParts:
-        """The points `idx` only."""
-        return self._replace(r_e=self.r_e[idx], a=self.a[idx], b=self.b[idx],
-                             d_s=self.d_s[idx])
-
-
-def _coefficients(twist: NDArray[np.floating], nu: NDArray[np.floating]) -> NDArray[Any]:
-    """:func:`.discretisation.term_coefficients` (points, terms); one point in scalars (Python
-    floats, or numpy ``longdouble`` scalars: the same operations, a few us instead of ~20 us
-    of per-term array calls, for scalar calls)."""
-    if twist.size == 1 and twist.dtype == nu.dtype == np.float64:
-        return term_coefficients(float(twist[0]), float(nu[0]))[None]
-    if twist.size == 1:
-        kind = np.result_type(twist, nu, 1.0).type
-        om, nv = kind(twist.reshape(-1)[0]), kind(nu.reshape(-1)[0])
-        return np.array([[t.coefficient(om, nv) for t in INST1]], dtype=kind)
-    return term_coefficients(twist, nu)
-
-
-def modal_parts(mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np.float64]
-                ) -> ModalParts:
-    """:class:`ModalParts` of family `mf` at the points (twist, nu)."""
-    coef = _coefficients(twist, nu)[:, :, None]  # (P, terms, 1)
-    (s1, z1, c1), (s2, z2, c2) = MODAL_TERMS
-    d1, d2 = coef[:, z1] - coef[:, s1] * mf.lam1, coef[:, z2] - coef[:, s2] * mf.lam2
-    a1, a2 = 2.0 * coef[:, c1], 2.0 * coef[:, c2]  # d/ds = 2 d/dx
-    k1 = mf.lam1.size
-    if mf.schur == 2:
-        return ModalParts(slice(0, k1), slice(k1, None), 1.0 / (d1 - SHIFT), a1, a2,
-                          d2 - SHIFT, mf.g12, mf.g21)
-    return ModalParts(slice(k1, None), slice(0, k1), 1.0 / (d2 - SHIFT), a2, a1, d1 - SHIFT,
-                      mf.g21, mf.g12)
-
-
-@dataclass(frozen=True)
-class _ShiftedModal:
-    """K - SHIFT at a batch of points, factorised through a Schur complement.
-
-    In block form K - SHIFT = [[D_e - SHIFT, a G_es], [b G_se, D_s - SHIFT]] with D_e diagonal
-    (the eliminated block), so (K - SHIFT)^{-1} needs only the inverse of
-
-        S = D_s - SHIFT - a b G_se (D_e - SHIFT)^{-1} G_es   (one inverse per point).
-
-    Block 1 (omega1) has a = 2 c1_1 (4 nu Omega for ``inst1``) in front of G12, block 2 has
-    2 c1_2 (-4 Omega) in front of G21.
-    Vectors are rows of one array (points x (k1 + k2)), omega1 block first.
-
-    The per-point inverse of S is the numpy reference's largest single cost
-    (``tests/bench/instruction_counts.py --inverse-share`` measures its share); large stacks are
-    inverted by the checked 2 x 2-block recursion of :func:`.stacked_inverse.stacked_inverse`,
-    small ones by LAPACK (:data:`.tuning.BLOCK_ENTRIES`).
-    """
-
-    elim: slice  # columns of the eliminated block
-    kept: slice  # columns of the Schur block
-    r_e: NDArray[np.float64]  # (P, k_e): 1 / (D_e - SHIFT)
-    a: NDArray[np.float64]  # (P, 1)
-    b: NDArray[np.float64]  # (P, 1)
-    g_es: NDArray[np.float64]  # (k_e, k_s)
-    g_se: NDArray[np.float64]  # (k_s, k_e)
-    schur_inv: NDArray[np.float64]  # (P, k_s, k_s)
-
-    @classmethod
-    def at(cls, mf: ModalFamily, twist: NDArray[np.float64], nu: NDArray[np.float64]
-           ) -> _ShiftedModal:
-        return cls.from_parts(mf, modal_parts(mf, twist, nu))
-
-    @classmethod
-    def from_parts(cls, mf: ModalFamily, pt: ModalParts) -> _ShiftedModal:
-        k_s = pt.d_s.shape[1]
-        schur = ((-pt.a * pt.b * pt.r_e) @ mf.outer).reshape(-1, k_s, k_s)
-        schur[:, np.arange(k_s), np.arange(k_s)] += pt.d_s
-        return cls(pt.elim, pt.kept, pt.r_e, pt.a, pt.b, pt.g_es, pt.g_se,
-                   stacked_inverse(schur))  # LinAlgError if singular
-
-    def take(self, idx: NDArray[np.int_]) -> _ShiftedModal:
-        """The points `idx` only."""
-        return _ShiftedModal(self.elim, self.kept, self.r_e[idx], self.a[idx], self.b[idx],
-                             self.g_es, self.g_se, self.schur_inv[idx])
-
-    def _assemble(self, z_e: NDArray[np.float64], z_s: NDArray[np.float64],
-                  out: NDArray[np.float64] | None = None) -> NDArray[np.float64]:
-        if out is None:
-            out = np.empty((z_e.shape[0], z_e.shape[1] + z_s.shape[1]))
-        out[:, self.elim], out[:, self.kept] = z_e, z_s
-        return out
-
-    def solve(self, v: NDArray[np.float64], out: NDArray[np.float64] | None = None
-              ) -> NDArray[np.float64]:
-        """(K - SHIFT)^{-1} v for each row v (into `out` if given)."""
-        u = v[:, self.elim] * self.r_e
-        z_s = (self.schur_inv @ (v[:, self.kept] - self.b * (u @ self.g_se.T))[:, :, None]
-               )[:, :, 0]
-        return self._assemble(u - self.a * (z_s @ self.g_es.T) * self.r_e, z_s, out)
-
-    def solve_transposed(self, v: NDArray[np.float64], out: NDArray[np.float64] | None = None
-                         ) -> NDArray[np.float64]:
-        """(K - SHIFT)^{-T} v for each row v (its Schur complement is S^T; into `out` if
-        given)."""
-        u = v[:, self.elim] * self.r_e
-        z_s = ((v[:, self.kept] - self.a * (u @ self.g_es))[:, None, :] @ self.schur_inv
-               )[:, 0, :]
-        return self._assemble(u - self.b * (z_s @ self.g_se) * self.r_e, z_s, out)
-
-    def solve_pair(self, v: NDArray[np.float64]) -> NDArray[np.float64]:
-        """((K - SHIFT)^{-1} v[0], (K - SHIFT)^{-T} v[1]) per point, v (2, P, m); as separate
-        calls: a stored transpose S^{-T} would double the memory each step reads."""
-        out = np.empty(v.shape)
-        self.solve(v[0], out[0])
-        self.solve_transposed(v[1], out[1])
-        return out
-
-
-@dataclass(frozen=True)
-class _DenseShifted:
-    """(K - SHIFT)^{-1} and its transpose at a few points as dense matrices, ``pair`` (2, P, m,
-    m), inverted by LAPACK (pivoted): the same operator as :class:`_ShiftedModal`, applied in one
-    call per step. For a few points numpy's per-call cost, not the arithmetic, decides, and a
-    step is then one batched product instead of ~16 calls (:data:`.tuning.DENSE_ENTRIES`)."""
-
-    pair: NDArray[np.float64]
-
-    @classmethod
-    def from_parts(cls, pt: ModalParts) -> _DenseShifted:
-        points, k_e = pt.r_e.shape
-        m = k_e + pt.d_s.shape[1]
-        shifted = np.zeros((points, m, m))
-        cols = np.arange(m)
-        e, s = cols[pt.elim], cols[pt.kept]
-        shifted[:, e, e], shifted[:, s, s] = 1.0 / pt.r_e, pt.d_s
-        shifted[:, pt.elim, pt.kept] = pt.a[:, :, None] * pt.g_es
-        shifted[:, pt.kept, pt.elim] = pt.b[:, :, None] * pt.g_se
-        return cls(_inverse_pair(shifted))
-
-    def take(self, idx: NDArray[np.int_]) -> _DenseShifted:
-        """The points `idx` only."""
-        return _DenseShifted(self.pair[:, idx])
-
-    def solve_pair(self, v: NDArray[np.float64]) -> NDArray[np.float64]:
-        """As :meth:`_ShiftedModal.solve_pair`."""
-        return np.matmul(self.pair, v[..., None])[..., 0]
-
-
-def _inverse_pair(mats: NDArray[np.float64]) -> NDArray[np.float64]:
-    """(M^{-1}, M^{-T}) stacked, (2, P, m, m), by LAPACK's pivoted LU (``dgetrf``, ``dgetri``
-    called directly: numpy.linalg.inv's wrapper costs several times their work at m ~ 20);
-    LinAlgError if some M is singular (SHIFT an eigenvalue)."""
-    from scipy.linalg.lapack import dgetrf, dgetri
-
-    pair = np.empty((2, *mats.shape))
-    for j, mat in enumerate(mats):
-        lu, piv, info = dgetrf(mat)
-        if info == 0:
-            inverse, info = dgetri(lu, piv, overwrite_lu=1)
-        if info != 0:
-            raise np.linalg.LinAlgError("K - SHIFT is singular at a point")
-        pair[0, j], pair[1, j] = inverse, inverse.T
-    return pair
-
-
-def _shifted(mf: ModalFamily, pt: ModalParts) -> _ShiftedModal | _DenseShifted:
-    """The numpy reference's (K - SHIFT)^{-1} at the points of `pt`: dense up to
-    :data:`.tuning.DENSE_ENTRIES` matrix entries (points m^2), else through the Schur complement."""
-    if pt.r_e.shape[0] * (pt.r_e.shape[1] + pt.d_s.shape[1]) ** 2 <= DENSE_ENTRIES:
-        return _DenseShifted.from_parts(pt)
-    return _ShiftedModal.from_parts(mf, pt)
+__all__ = ["CALIBRATED_TOL", "KERNEL_MAX_SCHUR", "first_check", "iteration_allowance",
+           "iteration_rtol", "kernel_families", "loose_quotient", "lowest_eigenpair",
+           "solve_family", "uses_kernel"]
 
 
 def uses_kernel(k_s: int) -> bool:
@@ -519,170 +226,6 @@ def converged(rq, bound, rtol: float, xp=np):
 
 
 @lru_cache(maxsize=64)
-def _start_vector(k: int) -> NDArray[np.float64]:
-    """A fixed generic unit start vector (no special structure that could be orthogonal to a
-    mode); read-only, as it is cached."""
-    v = np.random.default_rng(20240607).standard_normal(k)
-    v /= np.linalg.norm(v)
-    v.setflags(write=False)
-    return v
-
-
-def pencil_rayleigh_quotient(op: FamilyOperator, twist: NDArray[np.float64],
-                              nu: NDArray[np.float64], left: NDArray[np.float64],
-                              right: NDArray[np.float64]) -> NDArray[np.float64]:
-    """y^T A x / y^T B x per point, with A = sum_i coef_i P_i (:attr:`FamilyOperator.pieces`).
-
-    For |Omega| > LONG_TWIST the Omega^2 terms cancel against the others to ~lambda/Omega^2,
-    and the sums are accumulated in extended precision (``np.longdouble``): this halves the
-    round-off there (measured at Omega in [40, 100]: 0.39 -> 0.19 eps Omega^2).
-    """
-    out = np.empty(twist.size)
-    big = np.abs(twist) > LONG_TWIST
-    for sel, dtype in ((np.flatnonzero(~big), np.float64), (np.flatnonzero(big), np.longdouble)):
-        if sel.size:
-            out[sel] = _rayleigh_sums(op, twist[sel], nu[sel], left[sel], right[sel], dtype)
-    return out
-
-
-#: The terms of INST1 whose blocks are B's (the own field, order 0): y^T B x is their sum.
-_MASS_TERMS = [i for i, t in enumerate(INST1) if t.field == t.equation and t.order == 0]
-_MASS_INDEX = np.array(_MASS_TERMS)
-
-
-@lru_cache(maxsize=128)
-def _term_blocks(n: int, family: str, dtype: type) -> tuple:
-    """:attr:`FamilyOperator.term_blocks` transposed, in `dtype` (converted once)."""
-    return tuple((e, f, idx, np.ascontiguousarray(blocks.astype(dtype).T))
-                 for e, f, idx, blocks in family_operator(n, family).term_blocks)
-
-
-def _rayleigh_sums(op: FamilyOperator, twist: NDArray[np.float64], nu: NDArray[np.float64],
-                   left: NDArray[np.float64], right: NDArray[np.float64], dtype: type
-                   ) -> NDArray[np.float64]:
-    """y^T A x / y^T B x in `dtype` from the products y_e^T P_i x_f of A's nonzero blocks
-    (:attr:`FamilyOperator.term_blocks`; a quarter of the work of the full pieces).
-
-    In extended precision the products are the C kernel's double-double ones where it is
-    installed (:func:`.modal_kernel.pencil_terms`; this function 0.4-1.6 µs a point at n = 24-56
-    with them against 2.8-14 µs with numpy's ``longdouble`` products,
-    ``tests/bench/kernel_range.py``), without it for a few points (:data:`.tuning.DENSE_ENTRIES`)
-    the split products of :func:`_split_terms` (as accurate, in a few BLAS calls), else numpy's
-    ``longdouble`` products; summed in ``dtype``."""
-    few = right.shape[0] * right.shape[1] ** 2 <= DENSE_ENTRIES
-    if dtype is np.longdouble and (few or modal_kernel.available()):
-        hi, lo = (modal_kernel.pencil_terms(*_term_matrices(op.n, op.family), right, left)
-                  if modal_kernel.available() else _split_terms(op.n, op.family, right, left))
-        terms = hi.astype(dtype) + lo.astype(dtype)
-    elif dtype is np.float64 and few:
-        # a few points: every term as a full (m, m) matrix, two calls instead of ~4 a block
-        pieces = _dense_terms(op.n, op.family)
-        px = (right @ pieces).reshape(right.shape[0], len(INST1), -1)
-        terms = np.einsum("pj,pij->pi", left, px)
-    else:
-        k1 = op.sizes[0]
-        cols = (slice(0, k1), slice(k1, None))
-        x: NDArray[np.floating] = right.astype(dtype)
-        y: NDArray[np.floating] = left.astype(dtype)
-        terms = np.empty((x.shape[0], len(INST1)), dtype=dtype)
-        for e, f, idx, blocks in _term_blocks(op.n, op.family, dtype):
-            px = (x[:, cols[f]] @ blocks).reshape(x.shape[0], len(idx), -1)
-            terms[:, idx] = np.einsum("pj,pij->pi", y[:, cols[e]], px)
-    coef = _coefficients(twist.astype(dtype), nu.astype(dtype))
-    return ((coef * terms).sum(axis=1) / terms[:, _MASS_INDEX].sum(axis=1)).astype(np.float64)
-
-
-@lru_cache(maxsize=128)
-def _dense_terms(n: int, family: str) -> NDArray[np.float64]:
-    """The terms P_i of :data:`INST1` as full (m, m) matrices, laid out (m, terms m) so that
-    x @ it gives every P_i x (for :func:`_rayleigh_sums` at a few points)."""
-    op = family_operator(n, family)
-    return np.ascontiguousarray(np.swapaxes(op.pieces, 1, 2).transpose(1, 0, 2).reshape(
-        op.pieces.shape[1], -1))
-
-
-def _split_bits(m: int) -> int:
-    """Bits kept in the leading part of each factor of :func:`_split_terms`: a sum of m^2
-    products of three such parts is exact in double where 3 bits + 2 log2(m) <= 53."""
-    return (53 - 2 * math.ceil(math.log2(max(m, 2)))) // 3
-
-
-def _split(v: NDArray[np.float64], sizes: tuple[int, int], bits: int
-           ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """v = v1 + v2 exactly, per row and field (the two column blocks of `sizes`): v1 is v
-    rounded to a multiple of 2^(E - bits), with 2^E > the field's max |v| (at most 2^bits such
-    units), v2 the rest (|v2| <= 2^(E - bits - 1)): per field, so that a small field (omega2
-    at large nu) keeps its own relative accuracy. The rounding is the addition of
-    sigma = 1.5 2^(E + 52 - bits), whose binade has that unit as its spacing, and its exact
-    subtraction."""
-    top = np.maximum.reduceat(np.abs(v), (0, sizes[0]), axis=-1)
-    sigma = np.repeat(np.ldexp(0.75, np.frexp(top)[1] + (53 - bits)), sizes, axis=-1)
-    v1 = (v + sigma) - sigma
-    return v1, v - v1
-
-
-@lru_cache(maxsize=128)
-def _split_pieces(n: int, family: str) -> tuple[NDArray[np.float64], NDArray[np.float64], int]:
-    """:func:`_dense_terms` split as P = P1 + P2 exactly, each term's block P1_i rounded to a
-    multiple of its own 2^(E_i - bits) (:func:`_split_bits`), and the bits."""
-    pieces = _dense_terms(n, family)
-    m = pieces.shape[0]
-    bits = _split_bits(m)
-    blocks = pieces.reshape(m, len(INST1), -1)
-    unit = np.ldexp(1.0, np.frexp(np.abs(blocks).max(axis=(0, 2)))[1] - bits)[:, None]
-    lead = (np.rint(blocks / unit) * unit).reshape(pieces.shape)
-    lead.setflags(write=False)
-    return lead, pieces - lead, bits
-
-
-def _split_terms(n: int, family: str, right: NDArray[np.float64], left: NDArray[np.float64]
-                 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """The bilinear forms y^T P_i x of :func:`_rayleigh_sums` as hi + lo (points, terms), to
-    double-double accuracy from BLAS products in double (the numpy engine's form of the
-    kernel's :func:`.modal_kernel.pencil_terms`): with x = x1 + x2, y = y1 + y2 (per field)
-    and P_i = P1_i + P2_i split exactly (:func:`_split`, :func:`_split_pieces`),
-    hi = y1^T P1_i x1 is exact in double (P_i couples one field of y to one of x, so every
-    product and partial sum is a multiple of one unit, below 2^53 of them), and
-    lo = y2^T P_i x + y1^T (P2_i x + P1_i x2), whose parts are 2^-bits of the whole, carries
-    an error within 4 2^-bits m eps sum |y| |P_i| |x| (bits = 13-14 at n = 24-64: below the
-    ~m 2^-64 sum |y| |P_i| |x| of ``longdouble`` sums). ``tests/test_modal_kernel.py`` compares
-    the terms and the quotient with 50-digit sums."""
-    lead, rest, bits = _split_pieces(n, family)
-    points, m = right.shape
-    (x1, y1), (x2, y2) = (part.reshape(2, points, m) for part in
-                          _split(np.concatenate((right, left)), family_operator(n, family).sizes,
-                                 bits))
-    # P1 x1, P1 x, P1 x2 (rows: terms m) in one product (concatenate: cheaper than stack)
-    prod = (np.concatenate((x1, right, x2)) @ lead).reshape(3, points, -1)
-    px2 = right @ rest
-    shape = (points, len(INST1), m)
-    # (P1 x1, P2 x + P1 x2) . y1 in one product, a stack of (terms, m) @ (m, 1) per point
-    by_y1 = (np.concatenate((prod[0], px2 + prod[2])).reshape(2, *shape)
-             @ y1[:, :, None])[..., 0]
-    lo = by_y1[1] + ((prod[1] + px2).reshape(shape) @ y2[:, :, None])[..., 0]
-    return by_y1[0], lo
-
-
-@lru_cache(maxsize=128)
-def _term_matrices(n: int, family: str) -> tuple[NDArray[np.int32], NDArray[np.float64]]:
-    """Each term of INST1 as a block of the pencil, in the layout of
-    :func:`.modal_kernel.pencil_terms`: (row offset, rows, column offset, columns, data
-    offset) per term, in INST1's order, and the blocks' matrices concatenated."""
-    op = family_operator(n, family)
-    offset = (0, op.sizes[0])
-    shape = np.zeros((len(INST1), 5), dtype=np.int32)
-    mats, start = [], 0
-    for e, f, idx, blocks in op.term_blocks:
-        rows = blocks.shape[0] // len(idx)
-        for i, term in enumerate(idx):
-            block = blocks[i * rows:(i + 1) * rows]
-            shape[term] = (offset[e], rows, offset[f], block.shape[1], start)
-            mats.append(block.ravel())
-            start += block.size
-    return shape, np.concatenate(mats)
-
-
-@lru_cache(maxsize=64)
 def kernel_families(n: int) -> tuple[ctypes.Array, tuple]:
     """Both families at degree n as the C kernel's :class:`.modal_kernel.Family` structs (for
     :func:`.modal_kernel.modal_points`), and the arrays they point to (kept alive with them)."""
@@ -764,41 +307,6 @@ def solve_family(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np
     return lam, tails, vec
 
 
-def solve_family_eig(n: int, family: str, twist: NDArray[np.float64], nu: NDArray[np.float64]
-                      ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
-    """:func:`solve_family` by the full ``eig`` of A^{-1} B and the rule (the reference path).
-
-    Unlike the iteration it needs no gap below the family's next eigenvalue (but its round-off
-    is larger: the inverse pencil carries cond(A) ~ n^4)."""
-    op = family_operator(n, family)
-    a, b = op.pencil(twist, nu)
-    # B broadcast to A's stack: numpy < 2.0 would read a (m, m) right-hand side against a
-    # (k, m, m) stack as a stack of m-vectors, not as one right-hand matrix per system
-    theta, vec = physical_eig(cast(NDArray[np.float64],
-                                   np.linalg.solve(a, np.broadcast_to(b, a.shape))))
-    valid = np.isfinite(theta) & (theta > 0)
-    lam = np.where(valid, 1.0 / np.where(valid, theta, 1.0), np.inf)
-    return lam, np.where(valid, mode_tails(op, vec), np.inf), vec
-
-
-#: The family's lowest eigenvalue counts as isolated, so that the iteration's convergence test
-#: holds, if the next physical one is at least this far above it, relatively: the test passes a
-#: mixed vector once the gap is below ~sqrt(rtol / lambda) (2e-8 at POWER_RTOL); a margin of 50.
-ISOLATION_GAP = 1e-6
-
-
-def lowest_gap(n: int, family: str, twist: float, nu: float) -> tuple[float, float]:
-    """(lambda_1, (lambda_2 - lambda_1) / lambda_1) of one point: the family's two lowest
-    physical eigenvalues by the full ``eig`` of A^{-1} B and the rule (inf gap if only one)."""
-    a, b = family_operator(n, family).pencil(np.array([twist]), np.array([nu]))
-    theta = np.linalg.eigvals(np.linalg.solve(a[0], b))
-    ok = (np.abs(theta.imag) <= IMAG_REL * np.abs(theta)) & (theta.real > 0)
-    lam = np.sort(1.0 / theta.real[ok])
-    if not lam.size:
-        return math.inf, math.inf
-    return float(lam[0]), float((lam[1] - lam[0]) / lam[0]) if lam.size > 1 else math.inf
-
-
 class PointsSolution(NamedTuple):
     """Both families at points of one degree: lambda = pi^2 p and the mode's tail, each
     (2, points) (symmetric first; the antisymmetric tail inf where that family was only shown
@@ -867,92 +375,6 @@ def solve_point(n: int, twist: float, nu: float, rtol: float
             return lam1[0].tolist(), tails1[0].tolist(), True
     sol = solve_points(n, np.array([twist]), np.array([nu]), rtol)
     return sol.lam[:, 0].tolist(), sol.tails[:, 0].tolist(), bool(sol.by_kernel[0])
-
-
-class _PointFamily(NamedTuple):
-    """A family at degree n laid out for the numpy reference's one-point path
-    (:func:`_numpy_point`): the modal unknowns in the order (eliminated block, Schur block) of
-    :class:`ModalParts`, as the kernel's ``family_point`` holds them."""
-
-    op: FamilyOperator
-    lam_e: NDArray[np.float64]  # Lambda of the eliminated block
-    lam_s: NDArray[np.float64]  # Lambda of the Schur block
-    equations: tuple[int, int]  # the equations (0: omega1) of the e and s blocks
-    g_es: NDArray[np.float64]
-    g_se: NDArray[np.float64]
-    start: NDArray[np.float64]  # the start vector, right and left, (2 m,)
-    right: NDArray[np.float64]  # c = right @ z
-    left: NDArray[np.float64]  # y = w @ left
-
-
-@lru_cache(maxsize=64)
-def _point_family(n: int, family: str) -> _PointFamily:
-    """:class:`_PointFamily` of (n, family), built once from :func:`modal_family`."""
-    mf = modal_family(n, family)
-    k1, m = mf.lam1.size, mf.lam1.size + mf.lam2.size
-    order = np.arange(m) if mf.schur == 2 else np.r_[np.arange(k1, m), np.arange(k1)]
-    g_es, g_se = (mf.g12, mf.g21) if mf.schur == 2 else (mf.g21, mf.g12)
-    right, left = np.zeros((m, m)), np.zeros((m, m))
-    right[:k1, :k1], right[k1:, k1:] = mf.u1, mf.u2
-    left[:k1, :k1], left[k1:, k1:] = mf.left1, mf.left2
-    start = _start_vector(m)[order]
-    lams = (mf.lam1, mf.lam2) if mf.schur == 2 else (mf.lam2, mf.lam1)
-    return _PointFamily(mf.op, lams[0], lams[1], (0, 1) if mf.schur == 2 else (1, 0),
-                        g_es, g_se, np.concatenate((start, start)),
-                        np.ascontiguousarray(right[:, order]), np.ascontiguousarray(left[order]))
-
-
-def _point_inverse(pf: _PointFamily, coef: list[float]) -> NDArray[np.float64] | None:
-    """((K - SHIFT)^{-1}, (K - SHIFT)^{-T}) of one point as one block-diagonal (2 m, 2 m)
-    matrix, so that a step of right and left vectors is one product. K - SHIFT =
-    [[D_e - SHIFT, a G_es], [b G_se, D_s - SHIFT]] (:class:`_ShiftedModal`) is inverted by
-    LAPACK's pivoted LU, whole up to degree :data:`.tuning.POINT_SCHUR_DEGREE` (fewer numpy
-    calls), above it through its Schur complement S (a quarter of the LU's work):
-
-        (K - SHIFT)^{-1} = [[R + a b Y G_se R, -a Y], [-b S^{-1} G_se R, S^{-1}]],
-        R = (D_e - SHIFT)^{-1},  Y = R G_es S^{-1}.
-
-    None where the matrix inverted is singular (SHIFT an eigenvalue)."""
-    from scipy.linalg.lapack import dgetrf, dgetri
-
-    (s1, z1, c1), (s2, z2, c2) = MODAL_TERMS
-    own2, own0, cpl = (coef[s1], coef[s2]), (coef[z1], coef[z2]), (coef[c1], coef[c2])
-    qe, qs = pf.equations
-    a, b = 2.0 * cpl[qe], 2.0 * cpl[qs]  # d/ds = 2 d/dx
-    d_e = own0[qe] - own2[qe] * pf.lam_e - SHIFT
-    d_s = own0[qs] - own2[qs] * pf.lam_s - SHIFT
-    k_e, k_s = pf.g_es.shape
-    m = k_e + k_s
-    if pf.op.n <= POINT_SCHUR_DEGREE:
-        shifted = np.zeros((m, m))
-        shifted[:k_e, k_e:], shifted[k_e:, :k_e] = a * pf.g_es, b * pf.g_se
-        shifted.flat[::m + 1] = np.concatenate((d_e, d_s))
-        lu, piv, info = dgetrf(shifted, overwrite_a=1)
-        if info == 0:
-            inverse, info = dgetri(lu, piv, overwrite_lu=1)
-        if info != 0:
-            return None
-        pair = np.zeros((2 * m, 2 * m))
-        pair[:m, :m], pair[m:, m:] = inverse, inverse.T
-        return pair
-    r = 1.0 / d_e
-    g_r = pf.g_se * r  # G_se R
-    schur = (-a * b) * (g_r @ pf.g_es)
-    schur.flat[::k_s + 1] += d_s
-    lu, piv, info = dgetrf(schur, overwrite_a=1)
-    if info == 0:
-        schur_inv, info = dgetri(lu, piv, overwrite_lu=1)
-    if info != 0:
-        return None
-    pair = np.zeros((2 * m, 2 * m))
-    y = (r[:, None] * pf.g_es) @ schur_inv
-    pair[:k_e, :k_e] = (a * b) * (y @ g_r)
-    pair.flat[:(2 * m + 1) * k_e:2 * m + 1] += r
-    pair[:k_e, k_e:m] = -a * y
-    pair[k_e:m, :k_e] = -b * (schur_inv @ g_r)
-    pair[k_e:m, k_e:m] = schur_inv
-    pair[m:, m:] = pair[:m, :m].T
-    return pair
 
 
 def _point_iterate(pair: NDArray[np.float64], start: NDArray[np.float64], rtol: float,

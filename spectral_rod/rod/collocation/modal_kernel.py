@@ -20,7 +20,7 @@ reference solves it; and the arithmetic is done in another order, so results agr
 (``tests/test_modal_kernel.py`` compares the two).
 
 :func:`pencil_terms` gives the bilinear forms of the two-sided Rayleigh quotient of the pencil
-(:func:`.eigensolver.pencil_rayleigh_quotient`) in double-double, for |Omega(L)| > LONG_TWIST
+(:func:`.quotient.pencil_rayleigh_quotient`) in double-double, for |Omega(L)| > LONG_TWIST
 where its terms cancel to ~lambda/Omega^2 (the quotients agree with numpy's ``longdouble`` sums
 to 4 eps and with 50-digit sums, ``tests/test_modal_kernel.py``).
 
@@ -279,7 +279,7 @@ def modal_lowest(r_e: NDArray[np.float64], a: NDArray[np.float64], b: NDArray[np
     """:func:`.eigensolver.lowest_eigenpair`'s iteration for P points by the C kernel
     (``modal_lowest`` in ``_modal_kernel.h``).
 
-    Inputs as :class:`.eigensolver._ShiftedModal` holds them: r_e (P, k_e) = 1/(D_e - SHIFT),
+    Inputs as :class:`.shifted._ShiftedModal` holds them: r_e (P, k_e) = 1/(D_e - SHIFT),
     a, b (P,), d_s (P, k_s) = D_s - SHIFT, G_es (k_e, k_s), G_se (k_s, k_e); the unit start
     vector's blocks; ``ceiling`` (P,) or None; the test from step ``first``, then every 2
     steps, up to ``max_steps``. Raises RuntimeError if the kernel is not available.

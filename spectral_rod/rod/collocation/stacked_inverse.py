@@ -15,7 +15,7 @@ products of whole stacks, by the 2 x 2 block (Schur complement) formula
 
 recursively down to blocks of 3 x 3 or smaller, which are inverted in closed form. There is no
 pivoting: the matrices it is given are Schur complements of K - SHIFT with SHIFT below every
-physical eigenvalue (:class:`.eigensolver._ShiftedModal`), whose leading blocks are far from
+physical eigenvalue (:class:`.shifted._ShiftedModal`), whose leading blocks are far from
 singular.
 :func:`stacked_inverse` checks every result anyway (one product with a fixed probe vector) and
 redoes any matrix whose backward error is not small by LAPACK, with partial pivoting.

@@ -165,7 +165,7 @@ LEAN_MAX_DEGREE = 64
 #: decides (dense / Schur time 0.52-0.83 up to 12,168 entries, 0.94 at 17,672, 1.49 at
 #: 24,336). ``python tests/bench/tuning_crossovers.py``, part 1. The same bound admits a
 #: scalar call to the numpy reference's one-point path (n <= 127) and the pencil quotient's
-#: split products (:func:`.eigensolver._split_terms`).
+#: split products (:func:`.quotient._split_terms`).
 DENSE_ENTRIES = 16_000
 #: The numpy reference's one-point path (:func:`.eigensolver.solve_point` without the kernel)
 #: inverts K - SHIFT whole up to this degree, through its Schur complement above: the whole

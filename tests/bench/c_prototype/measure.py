@@ -20,12 +20,8 @@ from numpy.ctypeslib import ndpointer
 
 from spectral_rod import load_figure1
 from spectral_rod.rod.collocation.discretisation import term_coefficients
-from spectral_rod.rod.collocation.eigensolver import (
-    MODAL_TERMS,
-    _start_vector,
-    lowest_eigenpair,
-    modal_family,
-)
+from spectral_rod.rod.collocation.eigensolver import lowest_eigenpair
+from spectral_rod.rod.collocation.modal_form import MODAL_TERMS, _start_vector, modal_family
 from spectral_rod.rod.families import SHIFT
 
 
