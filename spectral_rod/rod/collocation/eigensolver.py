@@ -30,12 +30,13 @@ from __future__ import annotations
 import ctypes
 import math
 from functools import lru_cache
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 import numpy as np
 from numpy.typing import NDArray
 
 from spectral_rod.rod.collocation import modal_kernel
+from spectral_rod.rod.collocation.arithmetic import ARRAYS, FLOATS, Namespace
 from spectral_rod.rod.collocation.discretisation import INST1, term_coefficients
 from spectral_rod.rod.collocation.modal_form import (
     MODAL_TERMS,
@@ -180,7 +181,7 @@ def _iterate(op: _ShiftedModal | _DenseShifted, start: NDArray[np.float64], rtol
         if step < first or step % 2:
             continue
         v, rq, bound = _lanes_test(v, prev)
-        conv = converged(rq, bound, rtol, np)
+        conv = converged(rq, bound, rtol)
         high = conv if ceiling is None else ~conv & (rq - 100.0 * bound > ceiling[active])
         done = np.ones_like(conv) if step + 2 > max_steps else conv | high
         every = bool(done.all())
@@ -212,17 +213,15 @@ def _lanes_test(v: NDArray[np.float64], prev: NDArray[np.float64]
     return v, rq, np.sqrt(norms[0] * norms[1]) / np.abs(yx)
 
 
-def converged(rq, bound, rtol: float, xp=np):
-    """The convergence test of the eigenvalue iteration (the kernel's ``solve_group``):
-    the first-order error bound is <= rtol |rq| and rq >= SHIFT. `xp` is numpy for arrays,
-    :mod:`math` (or anything with ``fabs``) for Python floats.
+def converged(rq: Any, bound: Any, rtol: float, xp: Namespace = ARRAYS) -> Any:
+    """The convergence test of the eigenvalue iteration (the kernel's ``solve_group``): the
+    first-order error bound is <= rtol |rq| and rq >= SHIFT; arrays, or one point in Python
+    floats with ``xp`` = :data:`.arithmetic.FLOATS`.
 
-    >>> converged(10.0, 1e-14, 1e-14, math), converged(5.0, 0.0, 1e-14, math)
+    >>> converged(10.0, 1e-14, 1e-14, FLOATS), converged(5.0, 0.0, 1e-14, FLOATS)
     (True, False)
     """
-    if xp is np:
-        return (bound <= rtol * np.abs(rq)) & (rq >= SHIFT)
-    return bound <= rtol * xp.fabs(rq) and rq >= SHIFT
+    return (bound <= rtol * xp.abs(rq)) & (rq >= SHIFT)
 
 
 @lru_cache(maxsize=64)
@@ -342,15 +341,22 @@ def solve_points(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rt
         rest = np.flatnonzero(~by_kernel)
         if not rest.size:
             return PointsSolution(lam, tails, by_kernel)
-    used = np.empty((2, rest.size), dtype=bool)
-    tw, nv = twist[rest], nu[rest]
-    lam[0, rest], tails[0, rest], _ = solve_family(n, FAMILIES[0], tw, nv, rtol=rtol,
-                                                   kernel_out=used[0])
-    lam[1, rest], tails[1, rest], _ = solve_family(n, FAMILIES[1], tw, nv, rtol=rtol,
-                                                   ceiling=lam[0, rest] * (1 + CLOSE_REL),
-                                                   kernel_out=used[1])
-    by_kernel[rest] = used.all(axis=0)
+    lam[:, rest], tails[:, rest], by_kernel[rest] = _by_family(n, twist[rest], nu[rest], rtol)
     return PointsSolution(lam, tails, by_kernel)
+
+
+def _by_family(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol: float
+               ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.bool_]]:
+    """:func:`solve_points` by :func:`solve_family`, 32 lanes a family (the full ``eig`` where
+    the iteration is rejected): the symmetric family, then the antisymmetric one until shown
+    above (1 + CLOSE_REL) times it; lambda and tails (2, points), and where the kernel computed
+    both."""
+    lam, tails = np.empty((2, twist.size)), np.empty((2, twist.size))
+    used = np.empty((2, twist.size), dtype=bool)
+    lam[0], tails[0], _ = solve_family(n, FAMILIES[0], twist, nu, rtol=rtol, kernel_out=used[0])
+    lam[1], tails[1], _ = solve_family(n, FAMILIES[1], twist, nu, rtol=rtol,
+                                       ceiling=lam[0] * (1 + CLOSE_REL), kernel_out=used[1])
+    return lam, tails, used[0] & used[1]
 
 
 def solve_point(n: int, twist: float, nu: float, rtol: float
@@ -373,6 +379,10 @@ def solve_point(n: int, twist: float, nu: float, rtol: float
             loose_quotient(rtol, n))
         if _accepted(status)[0]:
             return lam1[0].tolist(), tails1[0].tolist(), True
+        # rejected by the one-lane kernel: the batched engine and the reference decide (not
+        # solve_points, which would repeat the same one-lane call)
+        lam, tails, by_kernel = _by_family(n, np.array([twist]), np.array([nu]), rtol)
+        return lam[:, 0].tolist(), tails[:, 0].tolist(), bool(by_kernel[0])
     sol = solve_points(n, np.array([twist]), np.array([nu]), rtol)
     return sol.lam[:, 0].tolist(), sol.tails[:, 0].tolist(), bool(sol.by_kernel[0])
 
@@ -398,7 +408,7 @@ def _point_iterate(pair: NDArray[np.float64], start: NDArray[np.float64], rtol: 
         res = both[2:] - mu * both[:2]
         rx, ry = np.einsum("ij,ij->i", res, res).tolist()
         bound = math.sqrt(rx * ry) / abs(yx) if yx else math.nan
-        conv = converged(rq, bound, rtol, math)
+        conv = converged(rq, bound, rtol, FLOATS)
         high = not conv and ceiling is not None and rq - 100.0 * bound > ceiling
         unit = both[:2] * np.array([[_inverse_norm(xx)], [_inverse_norm(yy)]])
         if conv or high or step + 2 > max_steps:
@@ -445,8 +455,9 @@ def _numpy_point(n: int, twist: float, nu: float, rtol: float
                  ) -> tuple[list[float], list[float]] | None:
     """:func:`solve_point` by the numpy reference without a batch's arrays (the kernel's
     ``modal_points`` on one point, in numpy): the symmetric family, then the antisymmetric one
-    until shown above (1 + CLOSE_REL) times it, its first test at step <= 4; None where a
-    family is not accepted (:func:`solve_points` then decides, with the full ``eig``)."""
+    until shown above (1 + CLOSE_REL) times it (its first test at :func:`.tuning.first_check`
+    with a ceiling); None where a family is not accepted (:func:`solve_points` then decides,
+    with the full ``eig``)."""
     coef = term_coefficients(twist, nu).tolist()
     ext = bool(_extended(twist, n, rtol))
     first = first_check(rtol, False)
@@ -455,7 +466,7 @@ def _numpy_point(n: int, twist: float, nu: float, rtol: float
     if status0 != modal_kernel.CONVERGED:
         return None
     lam1, tail1, status1 = _point_family_solve(n, FAMILIES[1], coef, ext, twist, nu, rtol,
-                                               lam0 * (1 + CLOSE_REL), min(first, 4))
+                                               lam0 * (1 + CLOSE_REL), first_check(rtol, True))
     if status1 not in (modal_kernel.CONVERGED, modal_kernel.ABOVE):
         return None
     return [lam0, lam1], [tail0, tail1]
