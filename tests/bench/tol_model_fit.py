@@ -18,7 +18,8 @@ from __future__ import annotations
 import numpy as np
 
 import spectral_rod as sr
-from spectral_rod.rod.collocation.driver import _solve_points
+from spectral_rod.rod.collocation.driver import pick_family
+from spectral_rod.rod.collocation.eigensolver import solve_points
 from spectral_rod.rod.collocation.resolution import (
     ERR_LINEAR,
     ERR_QUADRATIC,
@@ -37,7 +38,8 @@ def grid() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     ref = sr.critical_load(om, nu, method="characteristic")
     tails, errors = [], []
     for n in DEGREES:
-        p, _, tail = _solve_points(om, nu, np.full(om.size, n), 1e-14)
+        lam, family_tails, _ = solve_points(int(n), om, nu, 1e-14)
+        p, _, tail = pick_family(lam, family_tails)
         tails.append(tail)
         errors.append(np.abs(p / ref - 1.0))
     tails_a = np.array(tails)
@@ -66,6 +68,8 @@ def main() -> None:
     print("per degree:", ", ".join(f"{n}: {v:.2g}" for n, v in zip(DEGREES, need.max(axis=1),
                                                                      strict=True)
                                    if np.isfinite(v)))
+    nus = np.broadcast_to(np.meshgrid(np.arange(0.0, 50.0, 0.5), NUS)[1].ravel(), need.shape)
+    print("per nu:", ", ".join(f"{v:g}: {need[nus == v].max():.2g}" for v in NUS))
     part = truncation_error(tails, degrees)
     ok = np.isfinite(part) & (errors > 1e-13)
     print(f"error / tail part: max {np.max(errors[ok] / part[ok]):.3g} (tail < "

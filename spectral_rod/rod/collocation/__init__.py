@@ -41,7 +41,7 @@ The modules
 * :mod:`.reference` -- the full ``eig`` with the physical-eigenvalue rule: the test
   reference, which also decides where the iteration is rejected;
 * :mod:`.modal_kernel` -- the engine: that iteration in C, 32 points side by side or one point
-  at a time (one code, ``solve_group``), the pencil's Rayleigh quotient and the mode's tail; its
+  at a time (one code, ``iterate_lanes``), the pencil's Rayleigh quotient and the mode's tail; its
   contract is ``_modal_kernel.h`` (structs, INFO returns, an ABI version checked at load);
   :func:`.modal_kernel.engine_info` reports what runs here;
 * :mod:`.stacked_inverse` -- the numpy reference's Schur inverses for large stacks;
@@ -60,14 +60,14 @@ the method per point          :mod:`spectral_rod.rod.router`
 validation, bounds, warning   :mod:`spectral_rod.rod.critical` (calls the driver once)
 degree, raise, estimate       :func:`.driver._degree_loop` with the rules of :mod:`.resolution`
 which family is p*            :func:`.driver.pick_family`
-one lane or 32 lanes          :func:`.eigensolver.solve_points` (:func:`.tuning.few_points_limit`)
-kernel or numpy reference     :func:`.eigensolver.lowest_eigenpair` (built, KERNEL_MAX_SCHUR,
-                              a point the kernel rejects)
+kernel or numpy reference     :func:`.eigensolver.solve_points` (:func:`.eigensolver.kernel_degree`:
+                              built, KERNEL_MAX_SCHUR; a point the kernel rejects)
+one lane or 32 lanes          the kernel's ``modal_points`` (:func:`.tuning.few_points_limit`)
 dense or Schur (numpy)        :func:`.shifted._shifted` (:data:`.tuning.DENSE_ENTRIES`)
-converged or not              :func:`.eigensolver.converged` (C: ``solve_group``)
+converged or not              :func:`.eigensolver.converged` (C: ``iterate_lanes``)
 the eigenvalue                :func:`.quotient.pencil_rayleigh_quotient` (C:
                               ``pencil_quotient``; precision a parameter)
-the mode's tail               :func:`.resolution.mode_tails` (C: ``family_point``)
+the mode's tail               :func:`.resolution.mode_tails` (C: ``family_lanes``)
 the full ``eig``              :mod:`.reference`: the test reference; it decides where the
                               iteration is rejected
 ============================  ===========================================================

@@ -272,46 +272,49 @@ INLINE void lanes_test(const int L, int ke, int ks, double shift, double *xe, do
   for (int w = 0; w < L; w++) bound[w] = sqrt(rx[w] * ry[w]) / fabs(yx[w]);
 }
 
-INLINE void put_lane(const int L, int k, const double *v, int w, double *out) {
-  for (int j = 0; j < k; j++) out[j] = AT(v, j)[w];
+/* r[j][w] = v[j][w] for the lanes w with fin[w] (k rows, lane layout; a select the compiler
+   vectorises) */
+INLINE void capture(const int L, int k, const double *v, const int *fin, double *r) {
+  for (int j = 0; j < k; j++) {
+    const double *vj = AT(v, j);
+    double *rj = AT(r, j);
+    for (int w = 0; w < L; w++) rj[w] = fin[w] ? vj[w] : rj[w];
+  }
 }
 
-/* One group of `count` <= LANES points of `in` starting at point i0 (lanes past count repeat
-   the last point and are ignored). */
-INLINE void solve_group(const int L, int i0, int count, const ModalBatch *in,
-                        const ModalControl *ctl, double *work, const ModalEigenpairs *out) {
-  const int ke = in->ke, ks = in->ks;
-  const double *a = in->a, *b = in->b, *g_es = in->g_es, *g_se = in->g_se;
+/* The iteration of one group of L lanes, all in lane layout ([index][lane]): the first `count`
+   lanes are points (the others are ignored). Inputs: re (ke, L) = 1/(D_e - shift), ds (ks, L)
+   = D_s - shift, the coupling factors al, bl (L,), G_es, G_se, the start vector's blocks and
+   ceiling (L,) or NULL. Each lane's vectors, quotient and status are taken at the test where
+   it finishes: rxe, rye (ke, L), rxs, rys (ks, L), lam (L,), status (L,). `work` holds
+   2 ks^2 + 4 ke + 5 ks per lane. */
+INLINE void iterate_lanes(const int L, int count, int ke, int ks, const double *re,
+                          const double *al, const double *bl, const double *ds,
+                          const double *g_es, const double *g_se, const double *start_e,
+                          const double *start_s, const double *ceiling,
+                          const ModalControl *ctl, double *work, double *rxe, double *rxs,
+                          double *rye, double *rys, double *lam, int *status) {
   const double shift = ctl->shift;
-  int *status = out->status;
-  double *s = work, *s0 = s + (size_t)L * ks * ks, *re = s0 + (size_t)L * ks * ks;
-  double *ds = re + (size_t)L * ke, *xe = ds + (size_t)L * ks;
+  double *s = work, *s0 = s + (size_t)L * ks * ks, *xe = s0 + (size_t)L * ks * ks;
   double *ye = xe + (size_t)L * ke, *pe = ye + (size_t)L * ke;
   double *qe = pe + (size_t)L * ke, *xs = qe + (size_t)L * ke;
   double *ys = xs + (size_t)L * ks, *ps = ys + (size_t)L * ks;
   double *qs = ps + (size_t)L * ks, *t = qs + (size_t)L * ks;
-  double al[LANES], bl[LANES], ab[LANES];
-  int done[LANES], ok[LANES];
-  for (int w = 0; w < L; w++) {
-    const int i = i0 + (w < count ? w : count - 1);
-    al[w] = a[i];
-    bl[w] = b[i];
-    ab[w] = a[i] * b[i];
-    for (int j = 0; j < ke; j++) AT(re, j)[w] = in->r_e[(size_t)i * ke + j];
-    for (int j = 0; j < ks; j++) AT(ds, j)[w] = in->d_s[(size_t)i * ks + j];
-  }
+  double ab[LANES];
+  int done[LANES], ok[LANES], fin[LANES];
+  for (int w = 0; w < L; w++) ab[w] = al[w] * bl[w];
   factorise(L, ke, ks, re, ab, ds, g_es, g_se, s, s0);
   probe_check(L, ks, s, s0, ctl->backward_tol, t, ok);
   for (int w = 0; w < L; w++) {
     done[w] = w >= count || !ok[w];
-    if (w < count && !ok[w]) status[i0 + w] = REJECTED;
+    if (w < count && !ok[w]) status[w] = REJECTED;
   }
   for (int j = 0; j < ke; j++)
-    for (int w = 0; w < L; w++) AT(xe, j)[w] = AT(ye, j)[w] = in->start_e[j];
+    for (int w = 0; w < L; w++) AT(xe, j)[w] = AT(ye, j)[w] = start_e[j];
   for (int j = 0; j < ks; j++)
-    for (int w = 0; w < L; w++) AT(xs, j)[w] = AT(ys, j)[w] = in->start_s[j];
+    for (int w = 0; w < L; w++) AT(xs, j)[w] = AT(ys, j)[w] = start_s[j];
   const int first = ctl->first, max_steps = ctl->max_steps;
-  const double rtol = ctl->rtol, *ceiling = in->ceiling;
+  const double rtol = ctl->rtol;
   for (int step = 1; step <= max_steps; step++) {
     memcpy(pe, xe, sizeof(double) * L * ke);
     memcpy(ps, xs, sizeof(double) * L * ks);
@@ -320,27 +323,66 @@ INLINE void solve_group(const int L, int i0, int count, const ModalBatch *in,
     shifted_solve(L, ke, ks, s, re, al, bl, g_es, g_se, 0, pe, ps, xe, xs);
     shifted_solve(L, ke, ks, s, re, al, bl, g_es, g_se, 1, qe, qs, ye, ys);
     if (step < first || step % 2) continue;
-    int all = 1;
+    int all = 1, any = 0;
     double rq[LANES], bound[LANES];
     lanes_test(L, ke, ks, shift, xe, xs, ye, ys, pe, ps, qe, qs, rq, bound);
     for (int w = 0; w < L; w++) {
+      fin[w] = 0;
       if (done[w]) continue;
-      const int i = i0 + w;
       const int conv = bound[w] <= rtol * fabs(rq[w]) && rq[w] >= shift;
-      const int high = !conv && ceiling && rq[w] - 100.0 * bound[w] > ceiling[i];
+      const int high = !conv && ceiling && rq[w] - 100.0 * bound[w] > ceiling[w];
       if (conv || high || step + 2 > max_steps) {
-        done[w] = 1;
-        out->lam[i] = rq[w];
-        status[i] = conv ? CONVERGED : high ? ABOVE : NOT_CONVERGED;
-        put_lane(L, ke, xe, w, out->x_e + (size_t)i * ke);
-        put_lane(L, ks, xs, w, out->x_s + (size_t)i * ks);
-        put_lane(L, ke, ye, w, out->y_e + (size_t)i * ke);
-        put_lane(L, ks, ys, w, out->y_s + (size_t)i * ks);
+        done[w] = fin[w] = any = 1;
+        lam[w] = rq[w];
+        status[w] = conv ? CONVERGED : high ? ABOVE : NOT_CONVERGED;
       } else {
         all = 0;
       }
     }
+    if (any) {
+      capture(L, ke, xe, fin, rxe);
+      capture(L, ks, xs, fin, rxs);
+      capture(L, ke, ye, fin, rye);
+      capture(L, ks, ys, fin, rys);
+    }
     if (all) break;
+  }
+}
+
+INLINE void put_lane(const int L, int k, const double *v, int w, double *out) {
+  for (int j = 0; j < k; j++) out[j] = AT(v, j)[w];
+}
+
+/* One group of `count` <= LANES points of `in` starting at point i0, rows in and out (lanes
+   past count repeat the last point and are ignored). */
+INLINE void solve_group(const int L, int i0, int count, const ModalBatch *in,
+                        const ModalControl *ctl, double *work, const ModalEigenpairs *out) {
+  const int ke = in->ke, ks = in->ks;
+  double *re = work, *ds = re + (size_t)L * ke, *rxe = ds + (size_t)L * ks;
+  double *rxs = rxe + (size_t)L * ke, *rye = rxs + (size_t)L * ks, *rys = rye + (size_t)L * ke;
+  double *rest = rys + (size_t)L * ks;
+  double al[LANES], bl[LANES], ceiling[LANES], lam[LANES];
+  int status[LANES];
+  for (int w = 0; w < L; w++) {
+    const int i = i0 + (w < count ? w : count - 1);
+    al[w] = in->a[i];
+    bl[w] = in->b[i];
+    ceiling[w] = in->ceiling ? in->ceiling[i] : 0.0;
+    for (int j = 0; j < ke; j++) AT(re, j)[w] = in->r_e[(size_t)i * ke + j];
+    for (int j = 0; j < ks; j++) AT(ds, j)[w] = in->d_s[(size_t)i * ks + j];
+  }
+  iterate_lanes(L, count, ke, ks, re, al, bl, ds, in->g_es, in->g_se, in->start_e,
+                in->start_s, in->ceiling ? ceiling : NULL, ctl, rest, rxe, rxs, rye, rys, lam,
+                status);
+  for (int w = 0; w < count; w++) {
+    const int i = i0 + w;
+    out->status[i] = status[w];
+    if (status[w] == REJECTED) continue;
+    out->lam[i] = lam[w];
+    put_lane(L, ke, rxe, w, out->x_e + (size_t)i * ke);
+    put_lane(L, ks, rxs, w, out->x_s + (size_t)i * ks);
+    put_lane(L, ke, rye, w, out->y_e + (size_t)i * ke);
+    put_lane(L, ks, rys, w, out->y_s + (size_t)i * ks);
   }
 }
 
@@ -356,7 +398,7 @@ CLONES int modal_lowest(const ModalBatch *batch, const ModalControl *control,
                             !out->status)))
     return -3;
   const size_t ke = batch->ke, ks = batch->ks;
-  double *work = workspace(LANES * (2 * ks * ks + 5 * ke + 6 * ks));
+  double *work = workspace(LANES * (2 * ks * ks + 7 * ke + 8 * ks));
   if (!work) return 1;
   for (int i0 = 0; i0 < batch->P; i0 += LANES)
     solve_group(LANES, i0, batch->P - i0 < LANES ? batch->P - i0 : LANES, batch, control, work,
@@ -417,17 +459,10 @@ INLINE void two_sum(double a, double b, double *s, double *err) {
   *err = (a - (x - z)) + (b - z);
 }
 
-/* The forms of `count` <= L points from i0 on (lanes past count repeat the last point). */
-INLINE void terms_group(const int L, int i0, int count, int m, int T, const int *shape,
-                        const double *mats, const double *x, const double *y, double *xt,
-                        double *yt, double *hi, double *lo) {
-  for (int w = 0; w < L; w++) {
-    const int i = i0 + (w < count ? w : count - 1);
-    for (int k = 0; k < m; k++) {
-      AT(xt, k)[w] = x[(size_t)i * m + k];
-      AT(yt, k)[w] = y[(size_t)i * m + k];
-    }
-  }
+/* The forms of L lanes from vectors in lane layout, xt, yt (m, L): hi, lo (T, L). For L = 1
+   the lane layout is a point's row. */
+INLINE void terms_lanes(const int L, int T, const int *shape, const double *mats,
+                        const double *xt, const double *yt, double *hi, double *lo) {
   for (int t = 0; t < T; t++) {
     const int e_off = shape[5 * t], m_e = shape[5 * t + 1], f_off = shape[5 * t + 2];
     const int m_f = shape[5 * t + 3];
@@ -452,11 +487,32 @@ INLINE void terms_group(const int L, int i0, int count, int m, int T, const int 
         acc_lo[w] += err + e + yj[w] * c[w];
       }
     }
-    for (int w = 0; w < count; w++) {
-      hi[(size_t)(i0 + w) * T + t] = acc[w];
-      lo[(size_t)(i0 + w) * T + t] = acc_lo[w];
+    for (int w = 0; w < L; w++) {
+      AT(hi, t)[w] = acc[w];
+      AT(lo, t)[w] = acc_lo[w];
     }
   }
+}
+
+/* The forms of `count` <= L points from i0 on, rows of x and y (lanes past count repeat the
+   last point), into hi, lo (P, T); xt, yt hold (m, L), th 2 T L. */
+INLINE void terms_group(const int L, int i0, int count, int m, int T, const int *shape,
+                        const double *mats, const double *x, const double *y, double *xt,
+                        double *yt, double *th, double *hi, double *lo) {
+  for (int w = 0; w < L; w++) {
+    const int i = i0 + (w < count ? w : count - 1);
+    for (int k = 0; k < m; k++) {
+      AT(xt, k)[w] = x[(size_t)i * m + k];
+      AT(yt, k)[w] = y[(size_t)i * m + k];
+    }
+  }
+  double *tl = th + (size_t)L * T;  /* th: the forms (T, L), tl their low parts */
+  terms_lanes(L, T, shape, mats, xt, yt, th, tl);
+  for (int t = 0; t < T; t++)
+    for (int w = 0; w < count; w++) {
+      hi[(size_t)(i0 + w) * T + t] = AT(th, t)[w];
+      lo[(size_t)(i0 + w) * T + t] = AT(tl, t)[w];
+    }
 }
 
 /* All P points: LANES at a time, a last group of fewer one at a time (a single point, as in a
@@ -466,158 +522,258 @@ CLONES int pencil_terms_dd(PencilForms *f) {
       (f->P && (!f->shape || !f->mats || !f->x || !f->y || !f->hi || !f->lo)))
     return -1;
   const int P = f->P, m = f->m, T = f->T;
-  double *xt = workspace(LANES * 2 * (size_t)(m > 0 ? m : 1));
+  double *xt = workspace(LANES * (2 * (size_t)(m > 0 ? m : 1) + 2 * (size_t)T));
   if (!xt) return 1;
-  double *yt = xt + (size_t)LANES * m;
+  double *yt = xt + (size_t)LANES * m, *th = yt + (size_t)LANES * m;
   int i0 = 0;
   for (; P - i0 >= LANES; i0 += LANES)
-    terms_group(LANES, i0, LANES, m, T, f->shape, f->mats, f->x, f->y, xt, yt, f->hi, f->lo);
+    terms_group(LANES, i0, LANES, m, T, f->shape, f->mats, f->x, f->y, xt, yt, th, f->hi,
+                f->lo);
   for (; i0 < P; i0++)
-    terms_group(1, i0, 1, m, T, f->shape, f->mats, f->x, f->y, xt, yt, f->hi, f->lo);
+    terms_group(1, i0, 1, m, T, f->shape, f->mats, f->x, f->y, xt, yt, th, f->hi, f->lo);
   release(xt);
   return 0;
 }
-/* y^T A x / y^T B x for one point in double-double: the terms' forms as above, their sum
-   weighted by the coefficients (c + c_lo) and the mass terms' sum, then the quotient; the
-   batched engine sums the same forms in long double (eigensolver._rayleigh_sums). Not inlined:
-   it keeps this region's floating-point contraction off. `scratch` holds 2 terms + 2 m. */
-static double quotient_dd(int m, int T, const int *shape, const double *mats, const int *mass,
-                          const double *c, const double *c_lo, const double *x, const double *y,
-                          double *scratch) {
-  double *hi = scratch, *lo = hi + T, *xt = lo + T, *yt = xt + m;
-  terms_group(1, 0, 1, m, T, shape, mats, x, y, xt, yt, hi, lo);
-  double nh = 0.0, nl = 0.0, dh = 0.0, dl = 0.0, err;
-  for (int t = 0; t < T; t++) {
-    const double p = c[t] * hi[t], e = fma(c[t], hi[t], -p);
-    two_sum(nh, p, &nh, &err);
-    nl += err + e + c[t] * lo[t] + c_lo[t] * hi[t];
-    if (mass[t]) {
-      two_sum(dh, hi[t], &dh, &err);
-      dl += err + lo[t];
+/* y^T A x / y^T B x of L lanes in double-double: the terms' forms as above, their sum
+   weighted by the coefficients (c + c_lo, each (T, L)) and the mass terms' sum, then the
+   quotient; the batched numpy engine sums the same forms in long double
+   (quotient._rayleigh_sums). x, y (m, L) in lane layout; `scratch` holds 2 T L. */
+INLINE void quotient_dd(const int L, int T, const int *shape, const double *mats,
+                        const int *mass, const double *c, const double *c_lo, const double *x,
+                        const double *y, double *scratch, double *q) {
+  double *hi = scratch, *lo = hi + (size_t)L * T;
+  terms_lanes(L, T, shape, mats, x, y, hi, lo);
+  for (int w = 0; w < L; w++) {
+    double nh = 0.0, nl = 0.0, dh = 0.0, dl = 0.0, err;
+    for (int t = 0; t < T; t++) {
+      const double ct = AT(c, t)[w], ht = AT(hi, t)[w], lt = AT(lo, t)[w];
+      const double p = ct * ht, e = fma(ct, ht, -p);
+      two_sum(nh, p, &nh, &err);
+      nl += err + e + ct * lt + AT(c_lo, t)[w] * ht;
+      if (mass[t]) {
+        two_sum(dh, ht, &dh, &err);
+        dl += err + lt;
+      }
     }
+    const double r = nh / dh;  /* (nh + nl) / (dh + dl) to first order in the low parts */
+    q[w] = r + ((fma(-r, dh, nh) + nl) - r * dl) / dh;
   }
-  const double q = nh / dh;  /* (nh + nl) / (dh + dl) to first order in the low parts */
-  return q + ((fma(-q, dh, nh) + nl) - q * dl) / dh;
+}
+
+/* quotient_dd for one lane and for LANES, compiled here, not inlined into their callers: this
+   keeps the region's floating-point contraction off (the LANES one with the callers' clones,
+   so that it is vectorised for the same instruction sets). */
+static void quotient_dd_one(int T, const int *shape, const double *mats, const int *mass,
+                            const double *c, const double *c_lo, const double *x,
+                            const double *y, double *scratch, double *q) {
+  quotient_dd(1, T, shape, mats, mass, c, c_lo, x, y, scratch, q);
+}
+
+CLONES static void quotient_dd_lanes(int T, const int *shape, const double *mats,
+                                     const int *mass, const double *c, const double *c_lo,
+                                     const double *x, const double *y, double *scratch,
+                                     double *q) {
+  quotient_dd(LANES, T, shape, mats, mass, c, c_lo, x, y, scratch, q);
 }
 
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options
 #endif
 
-/* The pencil's two-sided Rayleigh quotient y^T A x / y^T B x of one point (Eq. inst1's terms
+/* The pencil's two-sided Rayleigh quotient y^T A x / y^T B x of L lanes (Eq. inst1's terms
    weighted by their coefficients over the mass terms): the kernel's one pencil quotient, its
    precision a parameter, double where coef_lo is NULL, double-double (quotient_dd) where it
-   gives the coefficients' low parts. The numpy reference's is
-   eigensolver.pencil_rayleigh_quotient, with its dtype as the precision. Inlined, so that the
-   double sums compile for the instruction set of the clone that calls it. */
-INLINE double pencil_quotient(const Family *f, int terms, const double *coef,
-                              const double *coef_lo, const double *x, const double *y,
-                              double *scratch) {
-  const int m = f->k1 + f->k2;
-  if (coef_lo)
-    return quotient_dd(m, terms, f->term_shape, f->term_mats, f->mass, coef, coef_lo, x, y,
-                       scratch);
-  double num = 0.0, den = 0.0;
+   gives the coefficients' low parts. coef, coef_lo (T, L); x, y (m, L); q (L,) out. The numpy
+   reference's is quotient.pencil_rayleigh_quotient, with its dtype as the precision. */
+INLINE void pencil_quotient(const int L, const Family *f, int terms, const double *coef,
+                            const double *coef_lo, const double *x, const double *y,
+                            double *scratch, double *q) {
+  if (coef_lo) {
+    if (L == 1)
+      quotient_dd_one(terms, f->term_shape, f->term_mats, f->mass, coef, coef_lo, x, y,
+                      scratch, q);
+    else
+      quotient_dd_lanes(terms, f->term_shape, f->term_mats, f->mass, coef, coef_lo, x, y,
+                        scratch, q);
+    return;
+  }
+  double num[LANES], den[LANES];
+  for (int w = 0; w < L; w++) num[w] = den[w] = 0.0;
   for (int t = 0; t < terms; t++) {
     const int *sh = f->term_shape + 5 * t;
     const double *mat = f->term_mats + sh[4];
-    double acc = 0.0;
+    double acc[LANES];
+    for (int w = 0; w < L; w++) acc[w] = 0.0;
     for (int j = 0; j < sh[1]; j++) {
-      double row = 0.0;
-      for (int k = 0; k < sh[3]; k++) row += mat[(size_t)j * sh[3] + k] * x[sh[2] + k];
-      acc += y[sh[0] + j] * row;
+      double row[LANES];
+      for (int w = 0; w < L; w++) row[w] = 0.0;
+      for (int k = 0; k < sh[3]; k++) {
+        const double a = mat[(size_t)j * sh[3] + k], *xk = AT(x, sh[2] + k);
+        for (int w = 0; w < L; w++) row[w] += a * xk[w];
+      }
+      const double *yj = AT(y, sh[0] + j);
+      for (int w = 0; w < L; w++) acc[w] += yj[w] * row[w];
     }
-    num += coef[t] * acc;
-    if (f->mass[t]) den += acc;
+    const double *ct = AT(coef, t);
+    for (int w = 0; w < L; w++) num[w] += ct[w] * acc[w];
+    if (f->mass[t])
+      for (int w = 0; w < L; w++) den[w] += acc[w];
   }
-  return num / den;
+  for (int w = 0; w < L; w++) q[w] = num[w] / den[w];
 }
 
-/* One family at one point: the lowest eigenpair by the kernel (one lane), then the pencil's
-   vectors, the tail and, unless control->loose, the pencil's two-sided Rayleigh quotient: in
-   double, or where coef_lo (the coefficients' low parts) is given in double-double
-   (quotient_dd). */
-INLINE void family_point(const Family *f, int terms, const double *coef, const double *coef_lo,
-                         const double *ceiling, const ModalControl *ctl, double *work,
-                         double *lam, double *tail, int *status) {
+/* v (k, L) = M (k, k) z (k, L), or M^T z where `transposed` */
+INLINE void lanes_product(const int L, int k, const double *mat, int transposed,
+                          const double *z, double *v) {
+  for (int r = 0; r < k; r++) {
+    double acc[LANES];
+    for (int w = 0; w < L; w++) acc[w] = 0.0;
+    for (int j = 0; j < k; j++) {
+      const double a = transposed ? mat[(size_t)j * k + r] : mat[(size_t)r * k + j];
+      const double *zj = AT(z, j);
+      for (int w = 0; w < L; w++) acc[w] += a * zj[w];
+    }
+    double *vr = AT(v, r);
+    for (int w = 0; w < L; w++) vr[w] = acc[w];
+  }
+}
+
+/* One family at `count` <= L points (lanes past count repeat the last point; their results are
+   not used): the lowest eigenpair by iterate_lanes, then the pencil's vectors, the tail and,
+   unless control->loose, the pencil's two-sided Rayleigh quotient: in double, or where coef_lo
+   (the coefficients' low parts) is given in double-double (quotient_dd). coef, coef_lo
+   (terms, L); ceiling (L,) or NULL; lam, tail, status (L,) out. */
+INLINE void family_lanes(const int L, int count, const Family *f, int terms,
+                         const double *coef, const double *coef_lo, const double *ceiling,
+                         const ModalControl *ctl, double *work, double *lam, double *tail,
+                         int *status) {
   const int k1 = f->k1, k2 = f->k2, m = k1 + k2, e1 = f->schur == 2;
   const int ke = e1 ? k1 : k2, ks = e1 ? k2 : k1;
   const double shift = ctl->shift;
-  const int loose = ctl->loose;
-  double *r_e = work, *d_s = r_e + ke, *v = d_s + ks, *x = v + 2 * m, *y = x + m;
-  double *rest = y + m;  /* solve_group's workspace, one lane */
+  /* lane layout throughout: K - SHIFT's parts, the modal vectors z = (z1, z2), wl = (w1, w2)
+     as the iteration leaves them, the pencil's vectors x, y (each (m, L)) */
+  double *re = work, *ds = re + (size_t)L * ke, *z = ds + (size_t)L * ks;
+  double *wl = z + (size_t)L * m, *x = wl + (size_t)L * m, *y = x + (size_t)L * m;
+  double *rest = y + (size_t)L * m;  /* the iteration's workspace, then the quotient's */
   const double *lam_e = e1 ? f->lam1 : f->lam2, *lam_s = e1 ? f->lam2 : f->lam1;
   const int qe = e1 ? 0 : 1, qs = 1 - qe;  /* equations of the e and s blocks */
-  for (int j = 0; j < ke; j++)
-    r_e[j] = 1.0 / (coef[f->own0[qe]] - coef[f->own2[qe]] * lam_e[j] - shift);
-  for (int j = 0; j < ks; j++) d_s[j] = coef[f->own0[qs]] - coef[f->own2[qs]] * lam_s[j] - shift;
-  const double a = 2.0 * coef[f->coupling[qe]], b = 2.0 * coef[f->coupling[qs]];
-  double *ze = v, *zs = v + ke, *we = v + m, *ws = v + m + ke;
-  const ModalBatch one = {1, ke, ks, r_e, &a, &b, d_s, e1 ? f->g12 : f->g21,
-                          e1 ? f->g21 : f->g12, f->start + (e1 ? 0 : k1),
-                          f->start + (e1 ? k1 : 0), ceiling};
-  const ModalEigenpairs res = {lam, ze, zs, we, ws, status};
-  solve_group(1, 0, 1, &one, ctl, rest, &res);
-  *tail = INFINITY;
-  if (*status != CONVERGED) return;
-  const double *z1 = e1 ? ze : zs, *z2 = e1 ? zs : ze, *w1 = e1 ? we : ws, *w2 = e1 ? ws : we;
-  for (int r = 0; r < m; r++) {  /* x = (U1 z1, U2 z2), y = (left1^T w1, left2^T w2) */
-    const int blk = r >= k1, k = blk ? k2 : k1, rr = blk ? r - k1 : r;
-    const double *u = blk ? f->u2 : f->u1, *lf = blk ? f->left2 : f->left1;
-    const double *z = blk ? z2 : z1, *w = blk ? w2 : w1;
-    double sx = 0.0, sy = 0.0;
-    for (int j = 0; j < k; j++) {
-      sx += u[(size_t)rr * k + j] * z[j];
-      sy += w[j] * lf[(size_t)j * k + rr];
+  const double *c0e = AT(coef, f->own0[qe]), *c2e = AT(coef, f->own2[qe]);
+  const double *c0s = AT(coef, f->own0[qs]), *c2s = AT(coef, f->own2[qs]);
+  double al[LANES], bl[LANES];
+  for (int j = 0; j < ke; j++) {
+    double *rj = AT(re, j);
+    for (int w = 0; w < L; w++) rj[w] = 1.0 / (c0e[w] - c2e[w] * lam_e[j] - shift);
+  }
+  for (int j = 0; j < ks; j++) {
+    double *dj = AT(ds, j);
+    for (int w = 0; w < L; w++) dj[w] = c0s[w] - c2s[w] * lam_s[j] - shift;
+  }
+  for (int w = 0; w < L; w++) {
+    al[w] = 2.0 * AT(coef, f->coupling[qe])[w];
+    bl[w] = 2.0 * AT(coef, f->coupling[qs])[w];
+    lam[w] = NAN;
+    status[w] = NOT_CONVERGED;
+  }
+  /* the e block is omega1's (rows 0..k1) where e1, else omega2's (rows k1..m) */
+  const int off_e = e1 ? 0 : k1, off_s = e1 ? k1 : 0;
+  memset(z, 0, sizeof(double) * 2 * L * m);  /* a rejected lane's vectors stay defined */
+  iterate_lanes(L, count, ke, ks, re, al, bl, ds, e1 ? f->g12 : f->g21, e1 ? f->g21 : f->g12,
+                f->start + off_e, f->start + off_s, ceiling, ctl, rest, AT(z, off_e),
+                AT(z, off_s), AT(wl, off_e), AT(wl, off_s), lam, status);
+  /* x = (U1 z1, U2 z2), y = (left1^T w1, left2^T w2) */
+  lanes_product(L, k1, f->u1, 0, z, x);
+  lanes_product(L, k2, f->u2, 0, AT(z, k1), AT(x, k1));
+  double last[LANES], other[LANES], c[LANES];
+  for (int w = 0; w < L; w++) last[w] = other[w] = 0.0;
+  for (int r = 0; r < f->tail_count; r++) {  /* resolution.tail_parts and tail_from_parts */
+    for (int w = 0; w < L; w++) c[w] = 0.0;
+    for (int j = 0; j < m; j++) {
+      const double t = f->tail_rows[(size_t)r * m + j], *xj = AT(x, j);
+      for (int w = 0; w < L; w++) c[w] += t * xj[w];
     }
-    x[r] = sx;
-    y[r] = sy;
+    double *part = r < 4 ? last : other;
+    for (int w = 0; w < L; w++) part[w] = nan_max(part[w], fabs(c[w]));
   }
-  double last = 0.0, other = 0.0;  /* resolution.tail_parts and tail_from_parts */
-  for (int r = 0; r < f->tail_count; r++) {
-    double c = 0.0;
-    for (int j = 0; j < m; j++) c += f->tail_rows[(size_t)r * m + j] * x[j];
-    if (r < 4) last = nan_max(last, fabs(c)); else other = nan_max(other, fabs(c));
+  for (int w = 0; w < count; w++) {
+    const double scale = nan_max(last[w], other[w]);
+    tail[w] = INFINITY;
+    if (status[w] != CONVERGED) continue;
+    tail[w] = scale > 0.0 ? last[w] / scale : INFINITY;
+    if (!isfinite(last[w]) || !isfinite(other[w])) status[w] = NOT_CONVERGED;
   }
-  const double scale = nan_max(last, other);
-  *tail = scale > 0.0 ? last / scale : INFINITY;
-  if (!isfinite(last) || !isfinite(other)) *status = NOT_CONVERGED;
-  if (loose) return;
-  /* rest, solve_group's workspace, is free again: quotient_dd's scratch */
-  *lam = pencil_quotient(f, terms, coef, coef_lo, x, y, rest);
-  if (!(*lam >= shift)) *status = NOT_CONVERGED;  /* a nan quotient is not an answer */
+  if (ctl->loose) return;
+  lanes_product(L, k1, f->left1, 1, wl, y);
+  lanes_product(L, k2, f->left2, 1, AT(wl, k1), AT(y, k1));
+  double q[LANES];
+  pencil_quotient(L, f, terms, coef, coef_lo, x, y, rest, q);
+  for (int w = 0; w < count; w++) {
+    if (status[w] != CONVERGED) continue;
+    lam[w] = q[w];
+    if (!(q[w] >= shift)) status[w] = NOT_CONVERGED;  /* a nan quotient is not an answer */
+  }
 }
 
-/* Both families (symmetric first, the antisymmetric one only shown to lie above
-   (1 + close_rel) times it where it does, as collocation._solve_points) at P points, one at
-   a time (_modal_kernel.h); the antisymmetric family's tail is inf where it is above. */
+/* Both families of `count` <= L points from i0 on (symmetric first, the antisymmetric one only
+   shown to lie above (1 + close_rel) times it where it does): the coefficients into lane
+   layout, then family_lanes twice. */
+INLINE void points_lanes(const int L, int i0, int count, const Family *fam,
+                         const ModalPoints *pts, const ModalControl *control,
+                         const ModalControl *anti, double *work, ModalPointResults *out) {
+  const int terms = pts->terms;
+  double *coef = work, *coef_lo = coef + (size_t)L * terms, *rest = coef_lo + (size_t)L * terms;
+  for (int w = 0; w < L; w++) {
+    const size_t i = (size_t)(i0 + (w < count ? w : count - 1)) * terms;
+    for (int t = 0; t < terms; t++) {
+      AT(coef, t)[w] = pts->coef[i + t];
+      AT(coef_lo, t)[w] = pts->coef_lo ? pts->coef_lo[i + t] : 0.0;
+    }
+  }
+  const double *lo = pts->coef_lo ? coef_lo : NULL;
+  double lam[2][LANES], tail[2][LANES], ceiling[LANES];
+  int status[2][LANES];
+  family_lanes(L, count, &fam[0], terms, coef, lo, NULL, control, rest, lam[0], tail[0],
+               status[0]);
+  for (int w = 0; w < L; w++)  /* no ceiling (inf) where the symmetric family failed */
+    ceiling[w] = w < count && status[0][w] == CONVERGED ? lam[0][w] * (1.0 + control->close_rel)
+                                                        : INFINITY;
+  family_lanes(L, count, &fam[1], terms, coef, lo, ceiling, anti, rest, lam[1], tail[1],
+               status[1]);
+  for (int w = 0; w < count; w++)
+    for (int q = 0; q < 2; q++) {
+      const size_t at = 2 * (size_t)(i0 + w) + q;
+      out->lam[at] = lam[q][w];
+      out->tail[at] = tail[q][w];
+      out->status[at] = status[q][w];
+    }
+}
+
+/* Both families at P points (_modal_kernel.h): LANES at a time; a last group of at most
+   control->few points one lane each, a larger one as one group of LANES lanes. */
 CLONES int modal_points(const Family *fam, const ModalPoints *pts, const ModalControl *control,
                         ModalPointResults *out) {
   if (!fam) return -1;
   if (!pts || pts->P < 0 || pts->terms < 1 || (pts->P && !pts->coef)) return -2;
-  if (!control || control->first < 1 || control->max_steps < control->first) return -3;
+  if (!control || control->first < 1 || control->max_steps < control->first || control->few < 0)
+    return -3;
   if (!out || (pts->P && (!out->lam || !out->tail || !out->status))) return -4;
-  size_t size = 0;
-  for (int q = 0; q < 2; q++) {
-    const size_t k = (size_t)fam[q].k1 + fam[q].k2;
-    const size_t need = 5 * k + 2 * k * k + 5 * k + 6 * k;
-    if (need > size) size = need;
-  }
-  double *work = workspace(size);
+  const size_t T = (size_t)pts->terms;
+  size_t k = 0;
+  for (int q = 0; q < 2; q++)
+    if ((size_t)fam[q].k1 + fam[q].k2 > k) k = (size_t)fam[q].k1 + fam[q].k2;
+  /* per lane: the coefficients 2 T (4 T allotted), family_lanes' parts and vectors 5 k (8 k + 2
+     allotted), then the iteration's 2 k^2 + 9 k (2 k^2 + 11 k allotted) or the quotient's
+     2 T */
+  double *work = workspace(LANES * (4 * T + 8 * k + 2 + 2 * k * k + 11 * k + 2 * T));
   if (!work) return 1;
   ModalControl anti = *control;  /* the antisymmetric family may stop early: an earlier test */
   if (anti.first > 4) anti.first = 4;
-  const int terms = pts->terms;
-  for (int i = 0; i < pts->P; i++) {
-    const double *c = pts->coef + (size_t)i * terms;
-    const double *c_lo = pts->coef_lo ? pts->coef_lo + (size_t)i * terms : NULL;
-    double *lam = out->lam + 2 * i, *tail = out->tail + 2 * i;
-    int *status = out->status + 2 * i;
-    family_point(&fam[0], terms, c, c_lo, NULL, control, work, lam, tail, status);
-    const double ceiling = lam[0] * (1.0 + control->close_rel);
-    family_point(&fam[1], terms, c, c_lo, status[0] == CONVERGED ? &ceiling : NULL, &anti,
-                 work, lam + 1, tail + 1, status + 1);
-  }
+  const int P = pts->P;
+  int i0 = 0;
+  for (; P - i0 >= LANES || (P - i0 > control->few && P - i0 > 0); i0 += LANES)
+    points_lanes(LANES, i0, P - i0 < LANES ? P - i0 : LANES, fam, pts, control, &anti, work,
+                 out);
+  for (; i0 < P; i0++)
+    points_lanes(1, i0, 1, fam, pts, control, &anti, work, out);
   release(work);
   return 0;
 }

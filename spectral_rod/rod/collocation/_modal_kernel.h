@@ -3,10 +3,12 @@
    Entry points, each documented below in the manner of LAPACK (argument, in/out, dimension,
    meaning; a return value INFO):
 
-     modal_lowest      the lowest eigenpair of K nearest above SHIFT at P points of one
-                       family (the batched engine: LANES points side by side);
-     modal_points      both families at P points, one lane each, with the mode's tail and the
-                       pencil's two-sided Rayleigh quotient (scalar calls and small batches);
+     modal_lowest      the lowest eigenpair of K nearest above SHIFT and its vectors at P
+                       points of one family (LANES points side by side; for a family on its
+                       own and for the numpy engine's comparisons);
+     modal_points      both families at P points, LANES side by side (a few, one lane each),
+                       with the mode's tail and the pencil's two-sided Rayleigh quotient: the
+                       engine of every call shape;
      pencil_terms_dd   the pencil's bilinear forms y_e^T M_t x_f in double-double;
      modal_abi_version, modal_lanes, modal_isa, modal_struct_size: what the loader checks
                        (spectral_rod/rod/collocation/modal_kernel.py refuses a build whose ABI
@@ -29,7 +31,7 @@
 
 #include <stddef.h>
 
-#define MODAL_KERNEL_ABI 2
+#define MODAL_KERNEL_ABI 3
 
 /* Status of a point (modal_kernel.py's NOT_CONVERGED, CONVERGED, ABOVE, REJECTED). */
 enum {
@@ -49,10 +51,13 @@ enum {
      first         in  the step of the first convergence test (then every 2 steps), >= 1.
      max_steps     in  the step cap, >= first.
      loose         in  modal_points only: 1 = lambda is the modal quotient w^T K z / w^T z,
-                       0 = the pencil's two-sided quotient y^T A x / y^T B x. */
+                       0 = the pencil's two-sided quotient y^T A x / y^T B x.
+     few           in  modal_points only, >= 0: a last group of at most `few` points (fewer
+                       than LANES) is solved one lane at a time, a larger one as a group of
+                       LANES lanes (tuning.few_points_limit). */
 typedef struct {
   double shift, rtol, backward_tol, close_rel;
-  int first, max_steps, loose;
+  int first, max_steps, loose, few;
 } ModalControl;
 
 /* ModalBatch: K - SHIFT at P points of one family in its Schur blocks (eigensolver.ModalParts).

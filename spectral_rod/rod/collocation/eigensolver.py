@@ -10,15 +10,16 @@ quotient (:mod:`.quotient`). Where the iteration is rejected (a spurious eigenva
 shift than the physical one) the reference, the full ``eig`` with the physical-eigenvalue rule
 (:mod:`.reference`), decides.
 
-One algorithm, two implementations: the C kernel of :mod:`.modal_kernel` (the engine: 32 points
-side by side, ``modal_lowest``, or one point at a time, ``modal_points``, with one iteration
-code, ``solve_group``) and this module's numpy code (its executable reference, and the engine
+One algorithm, two implementations: the C kernel of :mod:`.modal_kernel` (the engine,
+``modal_points``: both families, 32 points side by side, a last few one lane each, with one
+iteration code, ``iterate_lanes``; ``modal_lowest``, one family with its eigenvectors, for
+:func:`solve_family`) and this module's numpy code (its executable reference, and the engine
 where the kernel is not built), in the same two forms: batched (:func:`_iterate`) and one point
 (:func:`_numpy_point`, (K - SHIFT)^{-1} and its transpose as one block-diagonal matrix so that a
 step is one product, the test's quotient and bound from one Gram product). Each rule has one
 numpy function mirroring the kernel's: the convergence test :func:`converged` (C
-``lanes_test``/``solve_group``), the quotient :func:`.quotient.pencil_rayleigh_quotient` (C
-``pencil_quotient``) and the tail of :mod:`.resolution` (C ``family_point``);
+``lanes_test``/``iterate_lanes``), the quotient :func:`.quotient.pencil_rayleigh_quotient` (C
+``pencil_quotient``) and the tail of :mod:`.resolution` (C ``family_lanes``);
 ``tests/test_modal_kernel.py``, ``tests/test_engine_contract.py`` and
 ``tests/test_speed_paths.py`` compare the two, and both with the reference. The choice is
 accepted only if the error estimate from the mode's Chebyshev coefficients (:mod:`.resolution`;
@@ -162,7 +163,7 @@ def _iterate(op: _ShiftedModal | _DenseShifted, start: NDArray[np.float64], rtol
              ceiling: NDArray[np.float64] | None, first: int, max_steps: int
              ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64],
                         NDArray[np.bool_], NDArray[np.bool_]]:
-    """The iteration of :func:`lowest_eigenpair` in numpy (the C kernel's ``solve_group``),
+    """The iteration of :func:`lowest_eigenpair` in numpy (the C kernel's ``iterate_lanes``),
     from a unit start vector, with the first test at step `first` (then every 2 steps). The
     right and left vectors travel stacked, v (2, points, m), so that the test
     (:func:`_lanes_test`) is one set of numpy calls for both."""
@@ -214,7 +215,7 @@ def _lanes_test(v: NDArray[np.float64], prev: NDArray[np.float64]
 
 
 def converged(rq: Any, bound: Any, rtol: float, xp: Namespace = ARRAYS) -> Any:
-    """The convergence test of the eigenvalue iteration (the kernel's ``solve_group``): the
+    """The convergence test of the eigenvalue iteration (the kernel's ``iterate_lanes``): the
     first-order error bound is <= rtol |rq| and rq >= SHIFT; arrays, or one point in Python
     floats with ``xp`` = :data:`.arithmetic.FLOATS`.
 
@@ -316,31 +317,46 @@ class PointsSolution(NamedTuple):
     by_kernel: NDArray[np.bool_]
 
 
+def kernel_degree(n: int) -> bool:
+    """Whether the C kernel answers degree n (built, and both families' Schur blocks within
+    :data:`.tuning.KERNEL_MAX_SCHUR`)."""
+    return modal_kernel.available() and _schur_size(n) <= KERNEL_MAX_SCHUR
+
+
+@lru_cache(maxsize=64)
+def _schur_size(n: int) -> int:
+    """The larger of the two families' Schur block sizes at degree n."""
+    return max(min(mf.lam1.size, mf.lam2.size) for mf in (modal_family(n, f) for f in FAMILIES))
+
+
 def solve_points(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol: float
                  ) -> PointsSolution:
     """Both families' lowest eigenvalue and tail at flat arrays of points of degree n, by the
-    engine: the C kernel one lane at a time up to :func:`.tuning.few_points_limit` points
-    (``modal_points``), else 32 lanes a family (:func:`solve_family`); without the kernel the
-    numpy reference (:func:`solve_family`; one point up to DENSE_ENTRIES matrix entries by its
-    one-point form of ``modal_points``, :func:`_numpy_point`, so that a scalar call and a
-    one-element array get the same bits). The symmetric family first, the antisymmetric one
-    then only until it is shown above (1 + CLOSE_REL) times the symmetric eigenvalue. Points
-    the one-lane forms do not accept are solved by :func:`solve_family`."""
+    engine: the C kernel (``modal_points``: 32 points side by side, a last few,
+    :func:`.tuning.few_points_limit`, one lane each) where it answers the degree
+    (:func:`kernel_degree`); else the numpy reference (:func:`solve_family`; one point up to
+    DENSE_ENTRIES matrix entries by its one-point form of ``modal_points``,
+    :func:`_numpy_point`, so that a scalar call and a one-element array get the same bits). The
+    symmetric family first, the antisymmetric one then only until it is shown above
+    (1 + CLOSE_REL) times the symmetric eigenvalue. Points the kernel or the one-point form do
+    not accept are solved by :func:`solve_family` (the full ``eig`` where the iteration is
+    rejected)."""
     lam, tails = np.empty((2, twist.size)), np.empty((2, twist.size))
     by_kernel = np.zeros(twist.size, dtype=bool)
     rest = np.arange(twist.size)
-    if twist.size == 1 and not modal_kernel.available() and (n - 1) ** 2 <= DENSE_ENTRIES:
-        lean = _numpy_point(n, float(twist[0]), float(nu[0]), rtol)
-        if lean is not None:
-            return PointsSolution(np.array(lean[0])[:, None], np.array(lean[1])[:, None],
-                                  by_kernel)
-    elif modal_kernel.available() and twist.size <= few_points_limit(n):
+    if kernel_degree(n):
         lam1, tails1, status = _solve_lanes(n, twist, nu, rtol)
         lam[:], tails[:] = lam1.T, tails1.T
         by_kernel = _accepted(status)
         rest = np.flatnonzero(~by_kernel)
         if not rest.size:
             return PointsSolution(lam, tails, by_kernel)
+    elif (twist.size == 1 and not modal_kernel.available()
+          and (n - 1) ** 2 <= DENSE_ENTRIES):
+        lean = _numpy_point(n, float(twist[0]), float(nu[0]), rtol)
+        if lean is not None:
+            return PointsSolution(np.array(lean[0])[:, None], np.array(lean[1])[:, None],
+                                  by_kernel)
     lam[:, rest], tails[:, rest], by_kernel[rest] = _by_family(n, twist[rest], nu[rest], rtol)
     return PointsSolution(lam, tails, by_kernel)
 
@@ -427,7 +443,7 @@ def _inverse_norm(square: float) -> float:
 def _point_family_solve(n: int, family: str, coef: list[float], extended: bool, twist: float,
                         nu: float, rtol: float, ceiling: float | None, first: int
                         ) -> tuple[float, float, int]:
-    """One family at one point by the numpy reference, as the kernel's ``family_point``:
+    """One family at one point by the numpy reference, as the kernel's ``family_lanes``:
     lambda, the tail (inf unless converged) and the status code; `extended`: the pencil's
     quotient is summed in extended precision (:func:`_extended`)."""
     pf = _point_family(n, family)
@@ -474,12 +490,14 @@ def _numpy_point(n: int, twist: float, nu: float, rtol: float
 
 def _solve_lanes(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rtol: float
                  ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.int32]]:
-    """lambda, tails and status (points, 2) of both families by the C kernel one point at a
-    time (``modal_points``: the 32-lane iteration on one lane; the antisymmetric family stopped
-    where shown above the symmetric one, its tail then inf). At |Omega| > LONG_TWIST and tight
+    """lambda, tails and status (points, 2) of both families by the C kernel (``modal_points``:
+    32 points side by side, a last few one lane each; the antisymmetric family stopped where
+    shown above the symmetric one, its tail then inf). At |Omega| > LONG_TWIST and tight
     tol the pencil's quotient is summed in double-double, from the coefficients in extended
     precision (as :func:`pencil_rayleigh_quotient`, which sums in long double)."""
     loose, big = loose_quotient(rtol, n), _extended(twist, n, rtol)
+    if not big.any():  # the common case: one call, no index arrays
+        return _kernel_points(n, term_coefficients(twist, nu), rtol, loose)
     lam, tails = np.empty((twist.size, 2)), np.empty((twist.size, 2))
     status = np.empty((twist.size, 2), dtype=np.int32)
     for sel, dtype in ((np.flatnonzero(~big), float), (np.flatnonzero(big), np.longdouble)):
@@ -504,6 +522,7 @@ def _kernel_points(n: int, coef: NDArray, rtol: float, loose: bool
     return modal_kernel.modal_points(
         families, hi, shift=SHIFT, rtol=rtol, first=first_check(rtol, False),
         max_steps=POWER_STEPS, backward_tol=BACKWARD_TOL, close_rel=CLOSE_REL, loose=loose,
+        few=few_points_limit(n),
         coef_lo=None if coef.dtype == np.float64 else (coef - hi).astype(float))
 
 

@@ -7,10 +7,12 @@ vectors and a convergence test. numpy runs each operation on the whole stack, bu
 of k = 10..30 its per-matrix loops (and LAPACK's per-matrix calls) are slow, and a C loop per
 point gains little (one point's own loops are short and dependent; ``tests/bench/c_prototype``).
 ``_modal_kernel.c`` runs the same algorithm with the arrays laid out [index][point] for 32
-points at a time (:func:`modal_lowest`), so that every inner loop is over independent points and
-the compiler vectorises it, the convergence test too; or one point at a time with the same code
-on one lane (:func:`modal_points`: both families, the mode's tail and the pencil's quotient, for
-scalar calls and small batches). ``python tests/bench/kernel_range.py`` and
+points at a time, so that every inner loop is over independent points and the compiler
+vectorises it, the convergence test, the mode's vectors, its tail and the pencil's quotient
+too (:func:`modal_points`: both families at every point, the engine of every call shape; a
+call's last few points one lane each, the same code on one lane). :func:`modal_lowest` is the
+same iteration for one family, returning the eigenvectors (a family on its own, and the
+batched numpy engine's comparisons). ``python tests/bench/kernel_range.py`` and
 ``tests/bench/work_per_point.py`` measure it against the numpy reference.
 
 It differs from the numpy reference in two ways, both checked per point: the Schur complement's
@@ -62,7 +64,7 @@ __all__ = ["ABI_VERSION", "ABOVE", "CONVERGED", "DISABLE_ENV", "NOT_CONVERGED", 
 #: Status codes of a point (MODAL_* in ``_modal_kernel.h``).
 NOT_CONVERGED, CONVERGED, ABOVE, REJECTED = 0, 1, 2, -1
 #: The ABI this module speaks (``MODAL_KERNEL_ABI`` in ``_modal_kernel.h``).
-ABI_VERSION = 2
+ABI_VERSION = 3
 #: Set to 1 (before the first solve) to run the numpy reference as the engine.
 DISABLE_ENV = "SPECTRAL_ROD_NO_KERNEL"
 
@@ -86,7 +88,7 @@ class ModalControl(ctypes.Structure):
     """The iteration's settings (``ModalControl`` in ``_modal_kernel.h``)."""
 
     _fields_ = (("shift", _DBL), ("rtol", _DBL), ("backward_tol", _DBL), ("close_rel", _DBL),
-                ("first", _INT), ("max_steps", _INT), ("loose", _INT))
+                ("first", _INT), ("max_steps", _INT), ("loose", _INT), ("few", _INT))
 
 
 class ModalBatch(ctypes.Structure):
@@ -266,8 +268,9 @@ def _c_array(a: NDArray) -> NDArray[np.float64]:
 
 
 def _control(shift: float, rtol: float, first: int, max_steps: int, backward_tol: float,
-             close_rel: float = 0.0, loose: bool = False) -> ModalControl:
-    return ModalControl(shift, rtol, backward_tol, close_rel, first, max_steps, int(loose))
+             close_rel: float = 0.0, loose: bool = False, few: int = 0) -> ModalControl:
+    return ModalControl(shift, rtol, backward_tol, close_rel, first, max_steps, int(loose),
+                        few)
 
 
 def modal_lowest(r_e: NDArray[np.float64], a: NDArray[np.float64], b: NDArray[np.float64],
@@ -318,14 +321,15 @@ def pencil_terms(shape: NDArray[np.int32], mats: NDArray[np.float64], x: NDArray
 
 def modal_points(families: ctypes.Array, coef: NDArray[np.float64], *, shift: float,
                  rtol: float, first: int, max_steps: int, backward_tol: float,
-                 close_rel: float, loose: bool, coef_lo: NDArray[np.float64] | None = None
+                 close_rel: float, loose: bool, few: int,
+                 coef_lo: NDArray[np.float64] | None = None
                  ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.int32]]:
-    """Both families at P points, one point at a time (``modal_points`` in
-    ``_modal_kernel.h``): lambda, the mode's tail and the status, each (P, 2). ``coef``
-    (P, terms) are the points' INST1 coefficients. lambda is the pencil's two-sided quotient
-    (unless ``loose``: the modal one), summed in double, or where ``coef_lo`` (P, terms), the
-    low parts of the coefficients in extended precision, is given, in double-double (for
-    |Omega| > LONG_TWIST)."""
+    """Both families at P points, 32 side by side (``modal_points`` in ``_modal_kernel.h``;
+    a last group of at most ``few`` points one lane each): lambda, the mode's tail and the
+    status, each (P, 2). ``coef`` (P, terms) are the points' INST1 coefficients. lambda is the
+    pencil's two-sided quotient (unless ``loose``: the modal one), summed in double, or where
+    ``coef_lo`` (P, terms), the low parts of the coefficients in extended precision, is given,
+    in double-double (for |Omega| > LONG_TWIST)."""
     coef = _c_array(coef)
     p, terms = coef.shape
     lam, tail = np.empty((p, 2)), np.empty((p, 2))
@@ -337,7 +341,7 @@ def modal_points(families: ctypes.Array, coef: NDArray[np.float64], *, shift: fl
                            f"{_loaded()[1] or 'not loaded'}")
     info = lib.modal_points(families, ctypes.byref(ModalPoints(p, terms, _ptr(coef), _ptr(lo))),
                             ctypes.byref(_control(shift, rtol, first, max_steps, backward_tol,
-                                                  close_rel, loose)),
+                                                  close_rel, loose, few)),
                             ctypes.byref(ModalPointResults(_ptr(lam), _ptr(tail), _ptr(status))))
     if info < 0:
         raise ValueError(f"modal_points: argument {-info} has an illegal value (_modal_kernel.h)")

@@ -168,7 +168,7 @@ def _shifted(mf: ModalFamily, pt: ModalParts) -> _ShiftedModal | _DenseShifted:
 class _PointFamily(NamedTuple):
     """A family at degree n laid out for the numpy reference's one-point path
     (:func:`_numpy_point`): the modal unknowns in the order (eliminated block, Schur block) of
-    :class:`ModalParts`, as the kernel's ``family_point`` holds them."""
+    :class:`ModalParts`, as the kernel's ``family_lanes`` holds them."""
 
     op: FamilyOperator
     lam_e: NDArray[np.float64]  # Lambda of the eliminated block

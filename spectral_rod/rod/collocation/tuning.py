@@ -149,11 +149,12 @@ def solver_settings(tol: float) -> SolverSettings:
 #: n <= ~128); above, its unblocked loops lose to LAPACK's blocked ones (kernel / numpy time
 #: 0.50 at n = 128, 0.8 at 160, 1.2 at 256). ``python tests/bench/kernel_range.py``, part 1.
 KERNEL_MAX_SCHUR = 64
-#: Up to FEW_POINTS points of one degree n <= 30 the kernel solves them one lane at a time
-#: (``modal_points``, both families per point), above it 32 lanes at a time (``modal_lowest``,
-#: a family per call); the one-lane cost grows faster with n, so the limit falls as n^-3 above
-#: n = 30 (:func:`few_points_limit`). ``python tests/bench/kernel_range.py``, part 2.
-FEW_POINTS = 12
+#: The kernel (``modal_points``) solves points of one degree 32 lanes at a time; a last group
+#: of at most FEW_POINTS points (:func:`few_points_limit`) one lane each, a larger one as a
+#: group of 32 lanes with the last point repeated (one lane / group time 0.86-0.98 for 2-4
+#: points, 1.03-1.17 for 5, 1.22-1.74 for 8, at n = 12..64 and tol 1e-12 and 1e-4).
+#: ``python tests/bench/kernel_range.py``, part 2.
+FEW_POINTS = 4
 #: Above this degree 32 lanes answer even a single point. One lane stays the faster for 4
 #: points up to n = 128 (one lane / 32 lanes 0.57 at n = 40, 0.67 at 64, 0.81 at 128), so the
 #: limit is conservative: it bounds where degree pooling treats a solve as free of fixed cost.
@@ -177,9 +178,12 @@ POINT_SCHUR_DEGREE = 42
 #: both families costs FIXED_COST seconds whatever its size plus POINT_COST (n/22)^2 a point;
 #: one lane (:func:`few_points_limit`) has no fixed cost and costs LEAN_FACTOR times as much a
 #: point. Only the ratios decide. ``python -m pytest -m bench -k pooling_cost_model`` measures
-#: the first two (with the kernel 0.30-0.62 ms and 2.9-5.6 us); LEAN_FACTOR is conservative for
-#: the kernel's one lane against its 32 (~3, ``tests/bench/kernel_range.py``).
-FIXED_COST, POINT_COST, LEAN_FACTOR = 0.5e-3, 4.6e-6, 8.0
+#: the first two (with the kernel, random points: 25, 82 and 170 us and 1.8, 1.5 and 1.4 us at
+#: n = 16, 22 and 36: the "fixed" part is mostly a group of 32 lanes, so it grows with n);
+#: LEAN_FACTOR from the kernel's one lane against its full groups on Figure 1's points (5.4,
+#: 5.7, 5.9, 6.6 and 6.9 at n = 16, 22, 30, 40 and 56, ``tests/bench/kernel_range.py``,
+#: part 2).
+FIXED_COST, POINT_COST, LEAN_FACTOR = 60e-6, 1.46e-6, 6.0
 #: :func:`.stacked_inverse.stacked_inverse` (the numpy engine's Schur inverses) uses the block
 #: recursion for stacks of at least this many matrix entries (count k^2), LAPACK below: the
 #: recursion's cost is mostly numpy calls per stack, LAPACK's a call per matrix. On the
@@ -197,12 +201,10 @@ CHUNK = 1 << 12
 
 
 def few_points_limit(n: int) -> int:
-    """Most points of degree n the kernel solves one lane at a time, none above
-    :data:`LEAN_MAX_DEGREE`: FEW_POINTS up to n = 30, falling as n^-3 above (at least 4).
+    """Most points of degree n (a call's last group of fewer than 32) the kernel solves one
+    lane at a time: FEW_POINTS, none above :data:`LEAN_MAX_DEGREE`.
 
-    >>> few_points_limit(22), few_points_limit(40), few_points_limit(66)
-    (12, 5, 0)
+    >>> few_points_limit(22), few_points_limit(66)
+    (4, 0)
     """
-    if n > LEAN_MAX_DEGREE:
-        return 0
-    return FEW_POINTS if n <= 30 else max(4, int(FEW_POINTS * (30 / n) ** 3))
+    return FEW_POINTS if n <= LEAN_MAX_DEGREE else 0
