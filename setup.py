@@ -9,8 +9,13 @@ import sys
 
 from setuptools import Extension, setup
 
+# -O3, and -fno-wrapv against CPython's -fwrapv (the kernel's index arithmetic never overflows;
+# defined wrapping keeps the compiler from simplifying its loops: one-lane calls took ~10 % longer
+# at n = 30..50 with it, tests/bench/kernel_range.py)
+FLAGS = [] if sys.platform == "win32" else ["-O3", "-fno-wrapv"]
+
 setup(ext_modules=[Extension(
     "spectral_rod.rod.collocation._modal_kernel", ["spectral_rod/rod/collocation/_modal_kernel.c"],
     depends=["spectral_rod/rod/collocation/_modal_kernel.h"],
     include_dirs=["spectral_rod/rod/collocation"],
-    extra_compile_args=[] if sys.platform == "win32" else ["-O3"], optional=True)])
+    extra_compile_args=FLAGS, optional=True)])

@@ -88,13 +88,19 @@ def test_error_is_a_tenth_of_tol_on_random_points(tol):
 def _loose_tol_evidence(tol: float, tw: np.ndarray, nv: np.ndarray, ref: np.ndarray
                         ) -> tuple[float, float, int]:
     """Largest error / estimate, largest error / tol of forced collocation at `tol`, and its
-    silent misses (error > tol while converged)."""
+    silent misses (error > tol while converged). Each point is solved on its own (a scalar
+    call): the degree the error model allows for it, without the degree pooling of an array
+    call, which solves a group at a higher degree where the cost model finds that cheaper and
+    so may deliver more than tol asks."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ConvergenceWarning)
-        res = collocation_load(tw, nv, tol=tol, full_output=True)
-    err = np.abs(res.p_star / ref - 1)
-    return (float(np.max(err / res.error_estimate)), float(np.max(err[res.converged]) / tol),
-            int(np.sum((err > tol) & res.converged)))
+        res = [collocation_load(float(a), float(b), tol=tol, full_output=True)
+               for a, b in zip(tw, nv, strict=True)]
+    p, est, conv = (np.array([getattr(r, f) for r in res], dtype=float)
+                    for f in ("p_star", "error_estimate", "converged"))
+    err, conv = np.abs(p / ref - 1), conv.astype(bool)
+    return (float(np.max(err / est)), float(np.max(err[conv]) / tol),
+            int(np.sum((err > tol) & conv)))
 
 
 @pytest.mark.parametrize("tol", [1e-2, 1e-4, 1e-6, 1e-8])

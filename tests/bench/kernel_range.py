@@ -6,9 +6,9 @@
    iteration (the kernel switched off), per degree n and mode family, on random points
    (Omega(L) up to 1.8 (n - 16), nu in [1.1, 10]) at tol 1e-12, with the limit lifted; the
    ratio kernel / numpy time.
-2. ``tuning.few_points_limit``: the kernel one point at a time (one lane) against 32 lanes,
-   ``eigensolver.solve_points`` forced to either, on k random Figure 1 points at degree n;
-   the cheaper one.
+2. ``tuning.few_points_limit`` and ``LEAN_FACTOR``: the kernel's ``modal_points`` on k random
+   Figure 1 points at degree n, one point at a time (one lane) against a group of 32 lanes
+   (``few_points_limit`` forced to either), us a point; the cheaper one.
 3. The pencil's Rayleigh-quotient terms at |Omega(L)| > LONG_TWIST (``quotient._rayleigh_sums``
    in ``longdouble``): the kernel's double-double products against numpy's ``longdouble`` ones,
    us a point on 500 random points, n = 24, 44, 56; and for one point (a scalar call) the

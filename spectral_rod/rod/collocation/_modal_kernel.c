@@ -561,9 +561,9 @@ INLINE void quotient_dd(const int L, int T, const int *shape, const double *mats
 }
 
 /* quotient_dd for one lane and for LANES, compiled here, not inlined into their callers: this
-   keeps the region's floating-point contraction off (the LANES one with the callers' clones,
-   so that it is vectorised for the same instruction sets). */
-static void quotient_dd_one(int T, const int *shape, const double *mats, const int *mass,
+   keeps the region's floating-point contraction off; both with the callers' clones, so that
+   fma is an instruction and the LANES one is vectorised for the same instruction sets. */
+CLONES static void quotient_dd_one(int T, const int *shape, const double *mats, const int *mass,
                             const double *c, const double *c_lo, const double *x,
                             const double *y, double *scratch, double *q) {
   quotient_dd(1, T, shape, mats, mass, c, c_lo, x, y, scratch, q);
@@ -747,6 +747,20 @@ INLINE void points_lanes(const int L, int i0, int count, const Family *fam,
     }
 }
 
+/* points_lanes on LANES lanes and on one, each compiled on its own (with the clones): inlined
+   together into modal_points the one-lane code was compiled ~6 % slower. */
+CLONES static void points_group(int i0, int count, const Family *fam, const ModalPoints *pts,
+                                const ModalControl *control, const ModalControl *anti,
+                                double *work, ModalPointResults *out) {
+  points_lanes(LANES, i0, count, fam, pts, control, anti, work, out);
+}
+
+CLONES static void points_one(int i0, const Family *fam, const ModalPoints *pts,
+                              const ModalControl *control, const ModalControl *anti,
+                              double *work, ModalPointResults *out) {
+  points_lanes(1, i0, 1, fam, pts, control, anti, work, out);
+}
+
 /* Both families at P points (_modal_kernel.h): LANES at a time; a last group of at most
    control->few points one lane each, a larger one as one group of LANES lanes. */
 CLONES int modal_points(const Family *fam, const ModalPoints *pts, const ModalControl *control,
@@ -757,23 +771,28 @@ CLONES int modal_points(const Family *fam, const ModalPoints *pts, const ModalCo
     return -3;
   if (!out || (pts->P && (!out->lam || !out->tail || !out->status))) return -4;
   const size_t T = (size_t)pts->terms;
-  size_t k = 0;
-  for (int q = 0; q < 2; q++)
-    if ((size_t)fam[q].k1 + fam[q].k2 > k) k = (size_t)fam[q].k1 + fam[q].k2;
-  /* per lane: the coefficients 2 T (4 T allotted), family_lanes' parts and vectors 5 k (8 k + 2
-     allotted), then the iteration's 2 k^2 + 9 k (2 k^2 + 11 k allotted) or the quotient's
-     2 T */
-  double *work = workspace(LANES * (4 * T + 8 * k + 2 + 2 * k * k + 11 * k + 2 * T));
+  size_t need = 0;  /* per lane, the larger family's */
+  for (int q = 0; q < 2; q++) {
+    const size_t k1 = fam[q].k1, k2 = fam[q].k2, m = k1 + k2;
+    const size_t ks = fam[q].schur == 2 ? k2 : k1, ke = m - ks;
+    /* family_lanes' parts and vectors 5 m, then the iteration's or the quotient's */
+    const size_t iteration = 2 * ks * ks + 4 * ke + 5 * ks;
+    const size_t family = 5 * m + (iteration > 2 * T ? iteration : 2 * T);
+    if (family > need) need = family;
+  }
+  /* LANES lanes where a group of LANES runs, else one (a scalar call's workspace stays small);
+     the coefficients and their low parts first, 2 T */
+  const size_t lanes = pts->P >= LANES || pts->P > control->few ? LANES : 1;
+  double *work = workspace(lanes * (2 * T + need));
   if (!work) return 1;
   ModalControl anti = *control;  /* the antisymmetric family may stop early: an earlier test */
   if (anti.first > 4) anti.first = 4;
   const int P = pts->P;
   int i0 = 0;
   for (; P - i0 >= LANES || (P - i0 > control->few && P - i0 > 0); i0 += LANES)
-    points_lanes(LANES, i0, P - i0 < LANES ? P - i0 : LANES, fam, pts, control, &anti, work,
-                 out);
+    points_group(i0, P - i0 < LANES ? P - i0 : LANES, fam, pts, control, &anti, work, out);
   for (; i0 < P; i0++)
-    points_lanes(1, i0, 1, fam, pts, control, &anti, work, out);
+    points_one(i0, fam, pts, control, &anti, work, out);
   release(work);
   return 0;
 }

@@ -151,8 +151,8 @@ def solver_settings(tol: float) -> SolverSettings:
 KERNEL_MAX_SCHUR = 64
 #: The kernel (``modal_points``) solves points of one degree 32 lanes at a time; a last group
 #: of at most FEW_POINTS points (:func:`few_points_limit`) one lane each, a larger one as a
-#: group of 32 lanes with the last point repeated (one lane / group time 0.86-0.98 for 2-4
-#: points, 1.03-1.17 for 5, 1.22-1.74 for 8, at n = 12..64 and tol 1e-12 and 1e-4).
+#: group of 32 lanes with the last point repeated (one lane / group time 0.43-1.01 for 2-4
+#: points, 0.90-1.18 for 5, 1.26-1.60 for 8, at n = 12..64 and tol 1e-12 and 1e-4).
 #: ``python tests/bench/kernel_range.py``, part 2.
 FEW_POINTS = 4
 #: Above this degree 32 lanes answer even a single point. One lane stays the faster for 4
@@ -178,12 +178,12 @@ POINT_SCHUR_DEGREE = 42
 #: both families costs FIXED_COST seconds whatever its size plus POINT_COST (n/22)^2 a point;
 #: one lane (:func:`few_points_limit`) has no fixed cost and costs LEAN_FACTOR times as much a
 #: point. Only the ratios decide. ``python -m pytest -m bench -k pooling_cost_model`` measures
-#: the first two (with the kernel, random points: 25, 82 and 170 us and 1.8, 1.5 and 1.4 us at
-#: n = 16, 22 and 36: the "fixed" part is mostly a group of 32 lanes, so it grows with n);
-#: LEAN_FACTOR from the kernel's one lane against its full groups on Figure 1's points (5.4,
-#: 5.7, 5.9, 6.6 and 6.9 at n = 16, 22, 30, 40 and 56, ``tests/bench/kernel_range.py``,
-#: part 2).
-FIXED_COST, POINT_COST, LEAN_FACTOR = 60e-6, 1.46e-6, 6.0
+#: the first two (with the kernel, random points: 30, 80 and 160 us and 1.4, 1.4 and 1.3 us
+#: at n = 16, 22 and 36; a solve of 30 points is one group of 32 lanes, so the "fixed" part
+#: grows with n); LEAN_FACTOR from the kernel's one lane against its full groups on Figure 1's
+#: points (5.4, 6.1, 6.0, 6.0 and 6.0 at n = 16, 22, 30, 40 and 56,
+#: ``tests/bench/kernel_range.py``, part 2).
+FIXED_COST, POINT_COST, LEAN_FACTOR = 60e-6, 1.35e-6, 6.0
 #: :func:`.stacked_inverse.stacked_inverse` (the numpy engine's Schur inverses) uses the block
 #: recursion for stacks of at least this many matrix entries (count k^2), LAPACK below: the
 #: recursion's cost is mostly numpy calls per stack, LAPACK's a call per matrix. On the
