@@ -318,9 +318,9 @@ class PointsSolution(NamedTuple):
 
 
 def kernel_degree(n: int) -> bool:
-    """Whether the C kernel answers degree n (built, and both families' Schur blocks within
-    :data:`.tuning.KERNEL_MAX_SCHUR`)."""
-    return modal_kernel.available() and _schur_size(n) <= KERNEL_MAX_SCHUR
+    """Whether the C kernel answers degree n: :func:`uses_kernel` for the larger of both
+    families' Schur blocks."""
+    return uses_kernel(_schur_size(n))
 
 
 @lru_cache(maxsize=64)
