@@ -563,9 +563,10 @@ INLINE void quotient_dd(const int L, int T, const int *shape, const double *mats
 /* quotient_dd for one lane and for LANES, compiled here, not inlined into their callers: this
    keeps the region's floating-point contraction off; both with the callers' clones, so that
    fma is an instruction and the LANES one is vectorised for the same instruction sets. */
-CLONES static void quotient_dd_one(int T, const int *shape, const double *mats, const int *mass,
-                            const double *c, const double *c_lo, const double *x,
-                            const double *y, double *scratch, double *q) {
+CLONES static void quotient_dd_one(int T, const int *shape, const double *mats,
+                                   const int *mass, const double *c, const double *c_lo,
+                                   const double *x, const double *y, double *scratch,
+                                   double *q) {
   quotient_dd(1, T, shape, mats, mass, c, c_lo, x, y, scratch, q);
 }
 
@@ -723,10 +724,9 @@ INLINE void points_lanes(const int L, int i0, int count, const Family *fam,
   double *coef = work, *coef_lo = coef + (size_t)L * terms, *rest = coef_lo + (size_t)L * terms;
   for (int w = 0; w < L; w++) {
     const size_t i = (size_t)(i0 + (w < count ? w : count - 1)) * terms;
-    for (int t = 0; t < terms; t++) {
-      AT(coef, t)[w] = pts->coef[i + t];
-      AT(coef_lo, t)[w] = pts->coef_lo ? pts->coef_lo[i + t] : 0.0;
-    }
+    for (int t = 0; t < terms; t++) AT(coef, t)[w] = pts->coef[i + t];
+    if (pts->coef_lo)
+      for (int t = 0; t < terms; t++) AT(coef_lo, t)[w] = pts->coef_lo[i + t];
   }
   const double *lo = pts->coef_lo ? coef_lo : NULL;
   double lam[2][LANES], tail[2][LANES], ceiling[LANES];
@@ -789,7 +789,7 @@ CLONES int modal_points(const Family *fam, const ModalPoints *pts, const ModalCo
   if (anti.first > 4) anti.first = 4;
   const int P = pts->P;
   int i0 = 0;
-  for (; P - i0 >= LANES || (P - i0 > control->few && P - i0 > 0); i0 += LANES)
+  for (; P - i0 >= LANES || P - i0 > control->few; i0 += LANES)  /* few >= 0: P - i0 > 0 */
     points_group(i0, P - i0 < LANES ? P - i0 : LANES, fam, pts, control, &anti, work, out);
   for (; i0 < P; i0++)
     points_one(i0, fam, pts, control, &anti, work, out);

@@ -209,8 +209,6 @@ def _point_inverse(pf: _PointFamily, coef: list[float]) -> NDArray[np.float64] |
         R = (D_e - SHIFT)^{-1},  Y = R G_es S^{-1}.
 
     None where the matrix inverted is singular (SHIFT an eigenvalue)."""
-    from scipy.linalg.lapack import dgetrf, dgetri
-
     (s1, z1, c1), (s2, z2, c2) = MODAL_TERMS
     own2, own0, cpl = (coef[s1], coef[s2]), (coef[z1], coef[z2]), (coef[c1], coef[c2])
     qe, qs = pf.equations
@@ -223,10 +221,8 @@ def _point_inverse(pf: _PointFamily, coef: list[float]) -> NDArray[np.float64] |
         shifted = np.zeros((m, m))
         shifted[:k_e, k_e:], shifted[k_e:, :k_e] = a * pf.g_es, b * pf.g_se
         shifted.flat[::m + 1] = np.concatenate((d_e, d_s))
-        lu, piv, info = dgetrf(shifted, overwrite_a=1)
-        if info == 0:
-            inverse, info = dgetri(lu, piv, overwrite_lu=1)
-        if info != 0:
+        inverse = _lu_inverse(shifted)
+        if inverse is None:
             return None
         pair = np.zeros((2 * m, 2 * m))
         pair[:m, :m], pair[m:, m:] = inverse, inverse.T
@@ -235,10 +231,8 @@ def _point_inverse(pf: _PointFamily, coef: list[float]) -> NDArray[np.float64] |
     g_r = pf.g_se * r  # G_se R
     schur = (-a * b) * (g_r @ pf.g_es)
     schur.flat[::k_s + 1] += d_s
-    lu, piv, info = dgetrf(schur, overwrite_a=1)
-    if info == 0:
-        schur_inv, info = dgetri(lu, piv, overwrite_lu=1)
-    if info != 0:
+    schur_inv = _lu_inverse(schur)
+    if schur_inv is None:
         return None
     pair = np.zeros((2 * m, 2 * m))
     y = (r[:, None] * pf.g_es) @ schur_inv
@@ -249,3 +243,14 @@ def _point_inverse(pf: _PointFamily, coef: list[float]) -> NDArray[np.float64] |
     pair[k_e:m, k_e:m] = schur_inv
     pair[m:, m:] = pair[:m, :m].T
     return pair
+
+
+def _lu_inverse(matrix: NDArray[np.float64]) -> NDArray[np.float64] | None:
+    """The inverse by LAPACK's pivoted LU (``dgetrf``, ``dgetri``; `matrix` is overwritten),
+    None where it is singular."""
+    from scipy.linalg.lapack import dgetrf, dgetri
+
+    lu, piv, info = dgetrf(matrix, overwrite_a=1)
+    if info == 0:
+        inverse, info = dgetri(lu, piv, overwrite_lu=1)
+    return inverse if info == 0 else None
