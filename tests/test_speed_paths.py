@@ -27,6 +27,7 @@ from spectral_rod.rod.collocation.arithmetic import ARRAYS, FLOATS
 from spectral_rod.rod.collocation.driver import pick_family
 from spectral_rod.rod.collocation.eigensolver import solve_family, solve_point, solve_points
 from spectral_rod.rod.collocation.reference import solve_family_eig
+from spectral_rod.rod.collocation.tuning import SMALL_CALL
 from spectral_rod.rod.families import CLOSE_REL
 from spectral_rod.rod.router import NEAR_DEGENERATE, TWIST_ROUTE, route, route_point
 
@@ -88,10 +89,83 @@ def test_one_element_arrays_take_the_scalar_path_with_the_general_output(
             m.setattr(critical, "solve_points", None)
             fast = [critical_load(*args, full_output=f) for f in (True, False)]
         with monkeypatch.context() as m:  # and here only the general path runs
-            m.setattr(critical, "_one_element", lambda *a: None)
+            m.setattr(critical, "_few_points", lambda *a: None)
             general = [critical_load(*args, full_output=f) for f in (True, False)]
         for a, b in zip(fast, general, strict=True):
             _same_output(a, b)
+
+
+def _small_call_points(size: int, rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray]:
+    """`size` points mixing the routes: collocation, large twist, nu - 1 near zero."""
+    tw = rng.choice([rng.uniform(-49.0, 49.0), rng.uniform(50.0, 900.0)], size)
+    nv = np.where(rng.random(size) < 0.3, 1.0 + 10.0 ** rng.uniform(-9, -3, size),
+                  rng.uniform(1.0, 100.0, size))
+    return tw, nv
+
+
+@pytest.mark.parametrize(("twist_shape", "nu_shape", "dtype"), [
+    ((3,), (3,), np.float64), ((2, 4), None, np.float64), ((2, 1), (4,), np.float64),
+    ((SMALL_CALL,), (SMALL_CALL,), np.float32), ((2,), (2,), np.int64)])
+def test_small_arrays_are_their_scalar_calls_with_the_general_output(
+        monkeypatch, twist_shape, nu_shape, dtype):
+    # an array call of at most SMALL_CALL points: each point as its scalar call answers it,
+    # with the general path's types, dtypes and shapes, and p* within the general path's
+    # estimates (that path may pool degrees)
+    import spectral_rod.rod.critical as critical
+
+    rng = np.random.default_rng(sum(twist_shape) + 7)
+    size = math.prod(np.broadcast_shapes(twist_shape, nu_shape or ()))
+    tw, nv = _small_call_points(size, rng)
+    tw = np.reshape(tw[:math.prod(twist_shape)], twist_shape).astype(dtype)
+    nu = float(nv[0]) if nu_shape is None else np.reshape(nv[:math.prod(nu_shape)],
+                                                          nu_shape).astype(dtype)
+    with monkeypatch.context() as m:  # the general path must not run
+        m.setattr(critical, "solve_points", None)
+        fast = [critical_load(tw, nu, full_output=f) for f in (True, False)]
+    with monkeypatch.context() as m:
+        m.setattr(critical, "_few_points", lambda *a: None)
+        general = [critical_load(tw, nu, full_output=f) for f in (True, False)]
+    for f in dataclasses.fields(CriticalLoad):
+        a, b = getattr(fast[0], f.name), getattr(general[0], f.name)
+        assert type(a) is type(b)
+        if isinstance(a, np.ndarray):
+            assert (a.dtype, a.shape) == (b.dtype, b.shape)
+    assert np.array_equal(fast[1], fast[0].p_star) and fast[1].shape == general[1].shape
+    scalar = [critical_load(float(a), float(b)) for a, b in
+              zip(*(np.broadcast_to(v, fast[1].shape).ravel() for v in (tw, nu)), strict=True)]
+    assert fast[1].ravel().tolist() == scalar
+    assert np.all(np.abs(fast[1] / general[1] - 1)
+                  <= np.maximum(fast[0].error_estimate, general[0].error_estimate))
+
+
+def test_small_array_warns_once_as_the_general_path(monkeypatch):
+    # two of three points miss tol at a forced degree: one warning, the general path's text,
+    # pointing at the caller
+    import spectral_rod.rod.critical as critical
+
+    tw, nv = np.array([45.0, 3.0, -40.0]), np.array([1.5, 1.5, 4.0])
+    messages = []
+    for few in (critical._few_points, lambda *a: None):
+        with monkeypatch.context() as m, warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            m.setattr(critical, "_few_points", few)
+            res = critical_load(tw, nv, n=24, full_output=True)
+        assert res.converged.tolist() == [False, True, False]
+        assert [w.filename for w in caught] == [__file__]
+        messages.append(str(caught[0].message))
+    assert "not met at 2 point(s)" in messages[0]
+    assert messages[0] == messages[1]
+
+
+def test_arrays_above_small_call_take_the_general_path(monkeypatch):
+    import spectral_rod.rod.critical as critical
+
+    calls = []
+    solve = critical.solve_points
+    monkeypatch.setattr(critical, "solve_points", lambda *a: calls.append(1) or solve(*a))
+    critical_load(np.linspace(0.0, 10.0, SMALL_CALL + 1), 1.5)
+    critical_load(np.linspace(0.0, 10.0, SMALL_CALL), 1.5)
+    assert calls == [1]
 
 
 def test_one_element_arrays_outside_the_scalar_path_take_the_general_path():
@@ -354,7 +428,7 @@ def test_scalar_large_twist_path(monkeypatch, reference):
             m.setattr(critical, "solve_points", None)
             fast = critical_load(om, nu, method=method, full_output=True)
         with monkeypatch.context() as m:
-            m.setattr(critical, "_one_point", lambda *a: None)
+            m.setattr(critical, "_one_point", lambda *a, **k: None)
             general = critical_load(np.array([om]), nu, method=method, full_output=True)
         assert fast.method == "characteristic" and fast.converged
         # the same algorithm in floats (libm's sin/cos) and in numpy: equal to an ulp or so,

@@ -80,6 +80,7 @@ eps (:data:`DIRECT_ERROR` + |Omega|).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from functools import partial
 from typing import TYPE_CHECKING, Any
@@ -136,6 +137,13 @@ DOUBLE_CHUNK = 129
 #: 1.1 us an evaluation), where numpy's per-call cost on arrays of one or two entries would be
 #: most of the time (measured: 1.2 ms a scalar scan on arrays, 0.21 ms in floats).
 FEW_POINTS = 4
+#: Up to this many points the certified brackets (the large-twist expansion's, the family
+#: bounds') are found and refined one point at a time in Python floats (:func:`_bracketed_point`,
+#: :func:`_family_bound_point`: the scalar path's functions) instead of on arrays, whose cost on
+#: a few points is numpy's per-call cost (loop / arrays time at 8, 16, 24 and 32 points: 0.27,
+#: 0.55, 0.75 and 0.95 for the family bounds, 0.42, 0.80, ~1.0 and 1.28 for the large-twist
+#: brackets; ``python tests/bench/tuning_crossovers.py``, part 5).
+FEW_BRACKETS = 24
 #: One pass of this many grid points reaches p = 2, above the large-twist limit 2 nu/(1 + nu)
 #: (passes of DOUBLE_CHUNK, 71 us each for one point, take 1.8 a point on average on 30 random
 #: large-twist points).
@@ -759,6 +767,23 @@ def _double_scan(om: NDArray[np.float64], nv: NDArray[np.float64], top: NDArray[
                         chunk=DOUBLE_CHUNK if om.size > FEW_POINTS else ONE_POINT_CHUNK)
 
 
+def _certified(batch: Callable[[NDArray[np.float64], NDArray[np.float64]],
+                                tuple[NDArray[np.float64], NDArray[np.int_], NDArray[np.bool_]]],
+               point: Callable[[float, float], tuple[float, str] | None],
+               om: NDArray[np.float64], nv: NDArray[np.float64]
+               ) -> tuple[NDArray[np.float64], NDArray[np.int_], NDArray[np.bool_]]:
+    """(p*, family index, certified) at flat arrays of points by a certified bracket: `batch`
+    on arrays, or up to :data:`FEW_BRACKETS` points `point` one point at a time in Python floats
+    (the same brackets and refinement; where `point` finds none, p* is nan and certified
+    False)."""
+    if om.size > FEW_BRACKETS:
+        return batch(om, nv)
+    found = [point(a, b) for a, b in zip(om.tolist(), nv.tolist(), strict=True)]
+    p = np.array([math.nan if f is None else f[0] for f in found])
+    fam = np.array([-1 if f is None else FAMILIES.index(f[1]) for f in found], dtype=int)
+    return p, fam, fam >= 0
+
+
 def characteristic_double_batch(twist: NDArray[np.float64], nu: NDArray[np.float64]
                                 ) -> tuple[NDArray[np.float64], NDArray[np.int_]]:
     """Lowest root p* of the two determinants in double precision, and its family index (0
@@ -779,13 +804,15 @@ def characteristic_double_batch(twist: NDArray[np.float64], nu: NDArray[np.float
     scan = np.ones(om.size, dtype=bool)
     large = np.flatnonzero((om >= BRACKET_MIN_TWIST) & (nv > 1.0))
     if large.size:
-        p[large], fam[large], ok = _bracketed_batch(om[large], nv[large])
+        p[large], fam[large], ok = _certified(_bracketed_batch, _bracketed_point, om[large],
+                                              nv[large])
         scan[large[ok]] = False
     isotropic = np.flatnonzero(nv == 1.0)  # the Euler load, exact (as the mpmath reference)
     p[isotropic], fam[isotropic], scan[isotropic] = 1.0, 0, False
     near = np.flatnonzero((om < BRACKET_MIN_TWIST) & (nv > 1.0) & (nv <= FAMILY_BOUND_MAX_NU))
     if near.size:
-        p[near], fam[near], ok = _family_bound_batch(om[near], nv[near])
+        p[near], fam[near], ok = _certified(_family_bound_batch, _family_bound_point, om[near],
+                                            nv[near])
         scan[near[ok]] = False
     scan = np.flatnonzero(scan)
     if scan.size:

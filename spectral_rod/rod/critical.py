@@ -16,6 +16,7 @@ flagged and warned about) both end inside the bounds.
 from __future__ import annotations
 
 import importlib
+import math
 import warnings
 from typing import Any, NamedTuple, cast
 
@@ -37,7 +38,7 @@ from spectral_rod.rod.collocation import collocation_critical_load
 from spectral_rod.rod.collocation.arithmetic import ARRAYS, FLOATS, Namespace
 from spectral_rod.rod.collocation.driver import collocation_point
 from spectral_rod.rod.collocation.resolution import N_MAX, N_MIN
-from spectral_rod.rod.collocation.tuning import CHUNK
+from spectral_rod.rod.collocation.tuning import CHUNK, SMALL_CALL
 from spectral_rod.rod.families import FAMILIES, FAMILY_DTYPE
 from spectral_rod.rod.results import CriticalLoad, as_output
 from spectral_rod.rod.router import METHOD_DTYPE, ROD_METHODS, check_route, route, route_point
@@ -109,14 +110,15 @@ def solve_points(tw: NDArray[np.float64], nv: NDArray[np.float64], methods: NDAr
         parts = [solve_points(tw[i:i + CHUNK], nv[i:i + CHUNK], methods[i:i + CHUNK], n, tol)
                  for i in range(0, tw.size, CHUNK)]
         return PointResults(*(np.concatenate(v) for v in zip(*parts, strict=True)))
-    p, deg, err = np.empty(tw.size), np.zeros(tw.size, dtype=int), np.empty(tw.size)
-    fam = np.empty(tw.size, dtype=FAMILY_DTYPE)
-    engine = methods.astype(ENGINE_DTYPE)  # a route other than collocation is its own engine
-    # the methods present (np.unique on strings sorts: 0.17 ms for Figure 1's 1,201 points)
-    names = [name for name in ROD_METHODS if np.any(methods == name)]
+    names = _methods_present(methods)
     for name in names:
         importlib.import_module(_MODULES[name])
     with one_blas_thread():
+        if len(names) == 1:  # one method answers every point: no index arrays
+            return _results(names[0], tw, nv, methods, n, tol)
+        p, deg, err = np.empty(tw.size), np.zeros(tw.size, dtype=int), np.empty(tw.size)
+        fam = np.empty(tw.size, dtype=FAMILY_DTYPE)
+        engine = methods.astype(ENGINE_DTYPE)  # a route other than collocation is its own engine
         for name in names:
             idx = np.flatnonzero(methods == name)
             out = _SOLVERS[name](tw[idx], nv[idx], n, tol)
@@ -124,6 +126,25 @@ def solve_points(tw: NDArray[np.float64], nv: NDArray[np.float64], methods: NDAr
             if len(out) > 4:
                 engine[idx] = out[4]
     return PointResults(p, methods, deg, err, fam, engine)
+
+
+def _methods_present(methods: NDArray[np.str_]) -> list[str]:
+    """The methods of :data:`ROD_METHODS` that answer some point (np.unique on strings sorts:
+    0.17 ms for Figure 1's 1,201 points; one comparison where the first answers all)."""
+    if methods.size and (methods == methods[0]).all():
+        return [str(methods[0])]
+    return [name for name in ROD_METHODS if np.any(methods == name)]
+
+
+def _results(name: str, tw: NDArray[np.float64], nv: NDArray[np.float64],
+             methods: NDArray[np.str_], n: int | None, tol: float) -> PointResults:
+    """:func:`solve_points` where method `name` answers every point."""
+    out = _SOLVERS[name](tw, nv, n, tol)
+    p, deg, err, fam = out[:4]
+    engine = out[4] if len(out) > 4 else methods
+    return PointResults(np.array(p, dtype=float), methods, np.asarray(deg, dtype=int),
+                        np.array(err, dtype=float), np.asarray(fam, dtype=FAMILY_DTYPE),
+                        np.asarray(engine, dtype=ENGINE_DTYPE))
 
 
 def bounds(p: Any, err: Any, nv: Any, xp: Namespace = ARRAYS) -> tuple[Any, Any]:
@@ -147,20 +168,29 @@ def apply_bounds(res: PointResults, nv: NDArray[np.float64]) -> None:
 
 def warn_unconverged(where: str, converged: NDArray[np.bool_], res: PointResults,
                      tw: NDArray[np.float64], nv: NDArray[np.float64], tol: float) -> None:
-    """One ConvergenceWarning naming the worst point, if any point missed `tol`."""
+    """One ConvergenceWarning naming the worst point, if any point missed `tol` (pointing at
+    the caller of the function that calls this one)."""
     bad = np.flatnonzero(~converged)
     if not bad.size:
         return
     worst = bad[np.argmax(res.error_estimate[bad])]
-    warnings.warn(
-        f"{where}: tol={tol:g} not met at {bad.size} point(s); worst error estimate "
-        f"{res.error_estimate[worst]:.2e} at twist_angle={tw[worst]:g}, nu={nv[worst]:g} "
-        f"(method {res.method[worst]}, n={res.n[worst]}); flagged converged=False",
-        ConvergenceWarning, stacklevel=3)
+    warnings.warn(_unconverged(where, bad.size, float(res.error_estimate[worst]),
+                               float(tw[worst]), float(nv[worst]), str(res.method[worst]),
+                               int(res.n[worst]), tol),
+                  ConvergenceWarning, stacklevel=3)
+
+
+def _unconverged(where: str, count: int, err: float, om: float, nv: float, method: str, n: int,
+                 tol: float) -> str:
+    """The text of the warning for `count` points that missed `tol`, the worst (largest error
+    estimate `err`) at (om, nv) by `method` at resolution `n`."""
+    return (f"{where}: tol={tol:g} not met at {count} point(s); worst error estimate {err:.2e} "
+            f"at twist_angle={om:g}, nu={nv:g} (method {method}, n={n}); flagged "
+            f"converged=False")
 
 
 def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: object,
-               full_output: object):
+               full_output: object, warn: bool = True):
     """The scalar fast path: p* (or its CriticalLoad) for one point given as Python or numpy floats
     on the collocation or the large-twist route, or None wherever the general path must answer
     (any other input, the increment route). A forced degree, or an estimate that misses tol (tol
@@ -169,7 +199,7 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
     path's for one point, without its array bookkeeping: collocation by the driver's degree loop
     for one point (:func:`spectral_rod.rod.collocation.driver.collocation_point`), the
     large-twist route :func:`_one_characteristic`; ``python -m pytest -m bench`` measures both
-    scalar loops."""
+    scalar loops. ``warn=False``: no warning (:func:`_few_points` warns once for its points)."""
     if not (isinstance(twist_angle, (float, int)) and isinstance(nu, (float, int))
             and isinstance(tol, float) and _lean_degree(n)
             and method in ("auto", "collocation", "characteristic")
@@ -190,8 +220,9 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
     point = collocation_point(om, nv, tol, n if isinstance(n, int) else None)
     p, err = bounds(point.p_star, point.error_estimate, nv, FLOATS)
     converged = err <= tol  # after the bounds, as the general path judges it
-    if not converged:
-        _warn_point(err, om, nv, "collocation", point.n, tol)
+    if warn and not converged:  # the warning points at the caller of critical_load
+        warnings.warn(_unconverged("critical_load", 1, err, om, nv, "collocation", point.n, tol),
+                      ConvergenceWarning, stacklevel=3)
     if not full_output:
         return p
     return CriticalLoad(p, "collocation", point.n, err, FAMILIES[point.family],
@@ -202,15 +233,6 @@ def _lean_degree(n: object) -> bool:
     """Whether the scalar path takes degree `n`: None, or a valid degree (an even int in
     [N_MIN, N_MAX]; the general path names a bad one)."""
     return n is None or (type(n) is int and N_MIN <= n <= N_MAX and n % 2 == 0)
-
-
-def _warn_point(err: float, om: float, nv: float, method: str, n: int, tol: float) -> None:
-    """:func:`warn_unconverged`'s warning for one point that missed `tol` (the same text),
-    from :func:`critical_load` (hence its stacklevel)."""
-    warnings.warn(
-        f"critical_load: tol={tol:g} not met at 1 point(s); worst error estimate {err:.2e} at "
-        f"twist_angle={om:g}, nu={nv:g} (method {method}, n={n}); flagged converged=False",
-        ConvergenceWarning, stacklevel=4)
 
 
 def _one_characteristic(om: float, nv: float, tol: float, full_output: bool):
@@ -232,35 +254,63 @@ def _one_characteristic(om: float, nv: float, tol: float, full_output: bool):
                         engine="characteristic")
 
 
-def _one_element(twist_angle: object, nu: object, n: object, tol: object, method: object,
-                 full_output: object):
-    """One point given as arrays of one element (e.g. the (1,) vectors that
-    ``scipy.optimize.least_squares`` and ``fsolve`` pass): :func:`_one_point`'s answer, shaped
-    and typed as the general path returns it (``tests/test_speed_paths.py`` compares the two),
-    or None wherever the general path must answer (the benchmark row "a loop of one-point
-    arrays" measures it)."""
-    if not (isinstance(twist_angle, np.ndarray) or isinstance(nu, np.ndarray)):
-        return None
-    point = []
+def _few_points(twist_angle: object, nu: object, n: object, tol: object, method: object,
+                full_output: object):
+    """Arrays of at most :data:`.tuning.SMALL_CALL` points (e.g. the (1,) vectors that
+    ``scipy.optimize.least_squares`` and ``fsolve`` pass, or a few points of a curve): each
+    point answered by :func:`_one_point` as its scalar call is, the results shaped and typed as
+    the general path returns them, one warning for the points that missed tol; or None wherever
+    the general path must answer (more points, or a point :func:`_one_point` does not take).
+    The general path's numpy calls cost more than a loop of scalar calls on a few points
+    (``python tests/bench/tuning_crossovers.py``, part 6; ``tests/test_speed_paths.py``
+    compares the two paths' outputs)."""
+    shapes = []
     for value in (twist_angle, nu):
         if isinstance(value, np.ndarray):
-            if value.size != 1 or value.dtype.kind not in "fiu":  # no bool, complex, object
+            if value.size > SMALL_CALL or value.dtype.kind not in "fiu":  # no bool, complex
                 return None
-            value = value.item()  # a Python float or int (np.longdouble stays, and fails)
-        point.append(value)
-    one = _one_point(point[0], point[1], n, tol, method, full_output)
-    if one is None:
+            shapes.append(value.shape)
+        elif not isinstance(value, (float, int)):
+            return None
+    if not shapes:
         return None
-    # the broadcast of two sizes of 1
-    shape = (1,) * max(np.ndim(cast(Any, twist_angle)), np.ndim(cast(Any, nu)))
+    if len(shapes) == 1 or shapes[0] == shapes[1]:
+        shape = shapes[0]
+    else:
+        try:
+            shape = np.broadcast_shapes(*shapes)
+        except ValueError:  # the general path names the arguments
+            return None
+    size = math.prod(shape)
+    if not 0 < size <= SMALL_CALL:
+        return None
+    # Python floats and ints (an np.longdouble stays one, and _one_point refuses it)
+    tws, nus = (cast(list[float], [v] * size if not isinstance(v, np.ndarray) else
+                     (v if v.shape == shape else np.broadcast_to(v, shape)).ravel().tolist())
+                for v in (twist_angle, nu))
+    points = []
+    for om, nv in zip(tws, nus, strict=True):
+        one = _one_point(om, nv, n, tol, method, True, warn=False)
+        if one is None:
+            return None
+        points.append(one)
+    missed = [i for i, one in enumerate(points) if not one.converged]
+    if missed:
+        i = max(missed, key=lambda j: points[j].error_estimate)
+        worst = points[i]
+        warnings.warn(_unconverged("critical_load", len(missed), worst.error_estimate,
+                                   abs(float(tws[i])), float(nus[i]), worst.method, worst.n,
+                                   cast(float, tol)),
+                      ConvergenceWarning, stacklevel=3)
     if not full_output:
-        return as_output(np.array([one]), shape)
-    fields = [as_output(np.array([value], dtype=dtype), shape) for value, dtype in (
-        (one.p_star, np.float64), (one.method, METHOD_DTYPE), (one.n, int),
-        (one.error_estimate, np.float64), (one.family, FAMILY_DTYPE), (one.converged, bool),
-        (one.engine, ENGINE_DTYPE))]
+        return as_output(np.array([one.p_star for one in points]), shape)
+    fields = [as_output(np.array([getattr(one, name) for one in points], dtype=dtype), shape)
+              for name, dtype in (("p_star", np.float64), ("method", METHOD_DTYPE),
+                                  ("n", int), ("error_estimate", np.float64),
+                                  ("family", FAMILY_DTYPE), ("converged", bool),
+                                  ("engine", ENGINE_DTYPE))]
     return CriticalLoad(fields[0], fields[1], fields[2], fields[3], fields[4],
-                        converged=fields[5], tol=one.tol, engine=fields[6])
+                        converged=fields[5], tol=cast(float, tol), engine=fields[6])
 
 
 def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None,
@@ -326,7 +376,7 @@ def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None
     """
     one = _one_point(twist_angle, nu, n, tol, method, full_output)
     if one is None:
-        one = _one_element(twist_angle, nu, n, tol, method, full_output)
+        one = _few_points(twist_angle, nu, n, tol, method, full_output)
     if one is not None:
         return one
     twist, nu_arr = check_twist(twist_angle), check_nu(nu)

@@ -1,5 +1,7 @@
-"""The crossovers behind four constants of ``spectral_rod/rod/collocation/tuning.py`` that no
-other script measures: DENSE_ENTRIES, LEAN_MAX_DEGREE, BLOCK_ENTRIES and POINT_SCHUR_DEGREE.
+"""The crossovers behind the speed constants that no other script measures: DENSE_ENTRIES,
+LEAN_MAX_DEGREE, BLOCK_ENTRIES, POINT_SCHUR_DEGREE and SMALL_CALL of
+``spectral_rod/rod/collocation/tuning.py``, and FEW_BRACKETS of
+``spectral_rod/rod/characteristic.py``.
 
     python tests/bench/tuning_crossovers.py
 
@@ -18,6 +20,14 @@ for and move each constant to where its ratio crosses 1.
 4. POINT_SCHUR_DEGREE: the one-point numpy path's inverse of K - SHIFT
    (``shifted._point_inverse``) through the Schur complement / whole, n = 16..64, the
    symmetric family at Omega(L) = 0.9 n, nu = 3; the threshold is the degree where it crosses 1.
+5. FEW_BRACKETS: the certified brackets of the characteristic route one point at a time in
+   Python floats / on arrays (``characteristic._family_bound_point`` / ``_family_bound_batch``,
+   nu - 1 log-uniform in [1e-9, 1e-3], Omega(L) in [0, 50]; ``_bracketed_point`` /
+   ``_bracketed_batch``, Omega(L) in [50, 1000], nu in [1, 100]), 1..128 points; the
+   threshold is the count where it crosses 1.
+6. SMALL_CALL: ``critical_load`` on an array of k points by the general path / a loop of its
+   scalar calls, on the collocation route (Omega(L) in [0, 10] and [20, 50]), nu - 1 near
+   zero and large twist; the threshold is the count where it crosses 1.
 """
 
 from __future__ import annotations
@@ -28,6 +38,8 @@ from collections.abc import Callable
 import numpy as np
 
 from spectral_rod._blas_threads import one_blas_thread
+from spectral_rod.rod import characteristic as C
+from spectral_rod.rod import critical
 from spectral_rod.rod.collocation import eigensolver as E
 from spectral_rod.rod.collocation import modal_kernel, quotient, shifted, tuning
 from spectral_rod.rod.collocation import stacked_inverse as S
@@ -151,6 +163,53 @@ def point_schur_degree() -> None:
     print("   " + "  ".join(row))
 
 
+def _route_points(route: str, count: int, rng: np.random.Generator):
+    """`count` random points of one route (part 5 and 6)."""
+    if route == "near-degenerate":
+        return rng.uniform(0.0, 50.0, count), 1.0 + 10.0 ** rng.uniform(-9.0, -3.0, count)
+    if route == "large twist":
+        return rng.uniform(50.0, 1000.0, count), rng.uniform(1.0, 100.0, count)
+    top = 10.0 if route == "Omega(L) < 10" else 50.0
+    return rng.uniform(top - 10.0 if top > 10.0 else 0.0, top, count), rng.uniform(1.1, 100.0,
+                                                                                    count)
+
+
+def few_brackets(rng: np.random.Generator) -> None:
+    print(f"5. certified brackets: one point at a time in floats / on arrays (FEW_BRACKETS = "
+          f"{C.FEW_BRACKETS})")
+    for name, batch, point, route in (
+            ("family bounds", C._family_bound_batch, C._family_bound_point, "near-degenerate"),
+            ("large twist", C._bracketed_batch, C._bracketed_point, "large twist")):
+        row = []
+        for count in (1, 4, 8, 16, 24, 32, 64, 128):
+            om, nv = _route_points(route, count, rng)
+            floats = list(zip(om.tolist(), nv.tolist(), strict=True))
+            ratio = best_ratio(lambda f=point, x=floats: [f(a, b) for a, b in x],
+                               lambda f=batch, om=om, nv=nv: f(om, nv))
+            row.append(f"{count}: {ratio:.2f}")
+        print(f"   {name}: " + "  ".join(row))
+
+
+def small_call(rng: np.random.Generator) -> None:
+    print(f"6. critical_load on k points: general path / loop of scalar calls (SMALL_CALL = "
+          f"{tuning.SMALL_CALL})")
+    small = critical._few_points
+    try:
+        critical._few_points = lambda *args: None  # the general path answers every array
+        for route in ("Omega(L) < 10", "Omega(L) in [40, 50]", "near-degenerate",
+                      "large twist"):
+            row = []
+            for count in (2, 4, 6, 8, 10, 12, 16, 24):
+                om, nv = _route_points(route, count, rng)
+                floats = list(zip(om.tolist(), nv.tolist(), strict=True))
+                ratio = best_ratio(lambda om=om, nv=nv: critical.critical_load(om, nv),
+                                   lambda x=floats: [critical.critical_load(a, b) for a, b in x])
+                row.append(f"{count}: {ratio:.2f}")
+            print(f"   {route}: " + "  ".join(row))
+    finally:
+        critical._few_points = small
+
+
 def main() -> None:
     rng = np.random.default_rng(7)
     with one_blas_thread():
@@ -158,6 +217,8 @@ def main() -> None:
         lean_max_degree(rng)
         block_entries(rng)
         point_schur_degree()
+        few_brackets(rng)
+    small_call(rng)  # critical_load limits the BLAS threads itself
 
 
 if __name__ == "__main__":

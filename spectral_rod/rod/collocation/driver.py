@@ -116,7 +116,11 @@ def solve_degrees(n: NDArray[np.int_]) -> NDArray[np.int_]:
     >>> solve_degrees(np.repeat([16, 28], [150, 1])).tolist() == [16] * 150 + [28]
     True
     """
-    degs, counts = np.unique(n, return_counts=True)
+    counts = np.bincount(n)  # degrees are ints in [N_MIN, N_MAX]: a count per degree
+    degs = np.flatnonzero(counts)
+    if degs.size <= 1:
+        return n
+    counts = counts[degs]
     target = degs.copy()
     start = 0  # the pool: degree groups start..i
     for i in range(degs.size):
@@ -127,7 +131,9 @@ def solve_degrees(n: NDArray[np.int_]) -> NDArray[np.int_]:
                 continue  # the pool joins the next group
         target[start:i + 1] = degs[i]
         start = i + 1
-    return target[np.searchsorted(degs, n)]
+    lookup = np.empty(degs[-1] + 1, dtype=target.dtype)
+    lookup[degs] = target
+    return lookup[n]
 
 
 class PointResult(NamedTuple):

@@ -35,7 +35,8 @@ from typing import NamedTuple
 __all__ = ["BLOCK_ENTRIES", "CALIBRATED_TOL", "CHUNK", "DENSE_ENTRIES", "FEW_POINTS", "FIRST_CHECK",
            "FIXED_COST", "KERNEL_MAX_SCHUR", "LEAN_FACTOR", "LEAN_MAX_DEGREE", "LONG_TWIST",
            "LOOSE_DEGREE", "LOOSE_FIRST_CHECK", "LOOSE_RTOL", "LOOSE_SHARE", "POINT_COST",
-           "POINT_SCHUR_DEGREE", "POWER_RTOL", "POWER_STEPS", "TIGHT_TOL", "TRUNCATION_SHARE",
+           "POINT_SCHUR_DEGREE", "POWER_RTOL", "POWER_STEPS", "SMALL_CALL", "TIGHT_TOL",
+           "TRUNCATION_SHARE",
            "SolverSettings",
            "few_points_limit", "first_check", "iteration_allowance", "iteration_rtol",
            "loose_quotient", "solver_settings", "truncation_share"]
@@ -198,6 +199,13 @@ BLOCK_ENTRIES = 1_000_000
 #: large call (the batched engine holds ~k^2 doubles per point and family, the large-twist scan
 #: ~20 grid columns of 257 doubles per point); ``tests/test_safety.py`` measures the peak.
 CHUNK = 1 << 12
+#: Array calls of :func:`spectral_rod.critical_load` with at most this many points are answered
+#: point by point by the scalar path (``critical._few_points``): the general path's numpy calls
+#: cost more than a loop of scalar calls on a few points (general / loop time at 2, 8 and 16
+#: points: 2.95, 1.49 and 0.61 at Omega(L) < 10; 1.96, 0.74 and 0.40 at Omega(L) in [40, 50];
+#: 2.33, 1.21 and 1.01 at nu - 1 <= 1e-3; 2.32, 1.23 and 1.02 at Omega(L) >= 50).
+#: ``python tests/bench/tuning_crossovers.py``, part 6.
+SMALL_CALL = 8
 
 
 def few_points_limit(n: int) -> int:
