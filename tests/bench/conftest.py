@@ -28,17 +28,17 @@ def pytest_terminal_summary(terminalreporter, exitstatus, config) -> None:
         return
     tr = terminalreporter
     tr.write_sep("=", "same-run ratios, yardstick / new (minimum over rounds)")
-    tr.write_line(f"{'pattern':<22}{'yardstick':<28}{'yardstick/pt':>14}{'new/pt':>12}"
+    tr.write_line(f"{'pattern':<30}{'yardstick':<28}{'yardstick/pt':>14}{'new/pt':>12}"
                   f"{'ratio':>8}{'floor':>7}{'interleaved':>13}")
     for name, e in rows:
-        tr.write_line(f"{name:<22}{e['yardstick_name']:<28}{_us(e['yardstick'][0]):>14}"
+        tr.write_line(f"{name:<30}{e['yardstick_name']:<28}{_us(e['yardstick'][0]):>14}"
                       f"{_us(e['new'][0]):>12}{e['ratio']:>8.1f}{e['floor']:>7.1f}"
                       f"{e['interleaved']:>13.1f}")
         for extra, seconds in e.get("extra", {}).items():  # earlier-route yardsticks
-            tr.write_line(f"{'':<22}{extra:<28}{_us(seconds):>14}{'':>12}"
+            tr.write_line(f"{'':<30}{extra:<28}{_us(seconds):>14}{'':>12}"
                           f"{seconds / e['new'][0]:>8.1f}")
         if "peak_mb" in e:
-            tr.write_line(f"{'':<22}peak memory of the call: {e['peak_mb']:.0f} MB")
+            tr.write_line(f"{'':<30}peak memory of the call: {e['peak_mb']:.0f} MB")
     if "tol trade" in reg:
         tt = reg["tol trade"]
         tr.write_line(f"tol trade, Figure 1 batch (interleaved minima): tol 1e-4 costs "

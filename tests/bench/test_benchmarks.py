@@ -53,6 +53,8 @@ FLOORS = {
     # against the baseline: the targets of these patterns (met: tests/bench/HISTORY.md)
     "large twist": 20.0, "near-degenerate": 20.0, "10^6 random points": 20.0,
     "large twist, scalar": 5.0, "near-degenerate, scalar": 5.0,
+    # arrays of a few points: the scalar calls' target (they take the scalar path)
+    "batches of 4": 4.5, "large twist, arrays of 4": 5.0, "near-degenerate, arrays of 4": 5.0,
     "scalar loop, twist 20-50": 1.7,
 }
 TOL = 1e-12
@@ -211,7 +213,7 @@ def _batches(tw, nv, size):
                            for i in range(0, tw.size, size)])
 
 
-@pytest.mark.parametrize("size", [100, 10])
+@pytest.mark.parametrize("size", [100, 10, 4])
 def test_batches_baseline(benchmark, fig1, bench_registry, size):
     benchmark.group = f"batches of {size}"
     tw, nv = fig1
@@ -220,7 +222,7 @@ def test_batches_baseline(benchmark, fig1, bench_registry, size):
                         for i in range(0, 600, size)], 600, rounds=3)
 
 
-@pytest.mark.parametrize("size", [100, 10])
+@pytest.mark.parametrize("size", [100, 10, 4])
 def test_batches(benchmark, fig1, reference, bench_registry, size):
     benchmark.group = f"batches of {size}"
     tw, nv = fig1
@@ -439,11 +441,12 @@ def test_large_twist_baseline(benchmark, large_twist, reference, bench_registry)
                                                                         float(nv[i])) - 1)
                for i in range(0, tw.size, 10)) <= 1e-12
     pre = lambda: [pre_change_characteristic(a, b) for a, b in zip(tw, nv, strict=True)]  # noqa: E731
-    for pattern in ("large twist", "large twist, scalar"):
+    for pattern in ("large twist", "large twist, scalar", "large twist, arrays of 4"):
         _extra_yardstick(bench_registry, pattern, "pre-change route", pre, tw.size)
     _yardstick(benchmark, bench_registry, "large twist", _baseline_on(tw, nv), tw.size)
-    bench_registry["large twist, scalar"].update(
-        {k: bench_registry["large twist"][k] for k in ("yardstick", "yardstick_call")})
+    for pattern in ("large twist, scalar", "large twist, arrays of 4"):
+        bench_registry[pattern].update(
+            {k: bench_registry["large twist"][k] for k in ("yardstick", "yardstick_call")})
     benchmark.extra_info.update(sample="first 50 of the 1,000 points, per-point time")
 
 
@@ -479,11 +482,13 @@ def test_near_degenerate_baseline(benchmark, near_degenerate, bench_registry):
         ref = float(characteristic_critical_load(tw[i], nv[i], dps=50).p_star - 1)
         assert abs(pre_change_increment(tw[i], nv[i])[0] / ref - 1) <= 1e-9
     pre = lambda: [pre_change_increment(a, b) for a, b in zip(tw, nv, strict=True)]  # noqa: E731
-    for pattern in ("near-degenerate", "near-degenerate, scalar"):
+    for pattern in ("near-degenerate", "near-degenerate, scalar",
+                    "near-degenerate, arrays of 4"):
         _extra_yardstick(bench_registry, pattern, "pre-change route", pre, tw.size)
     _yardstick(benchmark, bench_registry, "near-degenerate", _baseline_on(tw, nv), tw.size)
-    bench_registry["near-degenerate, scalar"].update(
-        {k: bench_registry["near-degenerate"][k] for k in ("yardstick", "yardstick_call")})
+    for pattern in ("near-degenerate, scalar", "near-degenerate, arrays of 4"):
+        bench_registry[pattern].update(
+            {k: bench_registry["near-degenerate"][k] for k in ("yardstick", "yardstick_call")})
     benchmark.extra_info.update(sample="first 20 of the 1,000 points, per-point time")
 
 
@@ -519,6 +524,36 @@ def test_near_degenerate_scalar_loop(benchmark, near_degenerate, bench_registry)
     _new(benchmark, bench_registry, "near-degenerate, scalar",
          lambda: [critical_load(a, b, tol=TOL) for a, b in zip(tw, nv, strict=True)], len(tw),
          {"max_rel_error_sampled": err}, "baseline")
+
+
+def _arrays_of_4(tw, nv):
+    return np.concatenate([critical_load(tw[i:i + 4], nv[i:i + 4], tol=TOL)
+                           for i in range(0, tw.size, 4)])
+
+
+@pytest.mark.benchmark(group="large twist")
+def test_large_twist_arrays_of_4(benchmark, large_twist, reference, bench_registry):
+    # arrays of 4 points over the yardstick's 50 points (the last of 2), as a caller that
+    # steps a few points at a time passes them
+    tw, nv = (v[:50] for v in large_twist)
+    err = _max_error(_arrays_of_4(tw, nv), tw, nv, reference, sample=10)
+    assert err <= 1e-13
+    _new(benchmark, bench_registry, "large twist, arrays of 4", lambda: _arrays_of_4(tw, nv),
+         tw.size, {"max_rel_error_sampled": err, "calls": 13}, "baseline")
+
+
+@pytest.mark.benchmark(group="near-degenerate")
+def test_near_degenerate_arrays_of_4(benchmark, near_degenerate, bench_registry):
+    from spectral_rod.rod.characteristic import characteristic_critical_load
+
+    tw, nv = (v[:20] for v in near_degenerate)  # the yardstick's 20 points
+    p = _arrays_of_4(tw, nv)
+    err = max(abs(p[i] / float(characteristic_critical_load(tw[i], nv[i], dps=50).p_star) - 1)
+              for i in range(0, tw.size, 5))
+    assert err <= 1e-13
+    _new(benchmark, bench_registry, "near-degenerate, arrays of 4",
+         lambda: _arrays_of_4(tw, nv), tw.size, {"max_rel_error_sampled": err, "calls": 5},
+         "baseline")
 
 
 # --- 10^6 random points in one call (the baseline timed on a sample of them) ---------------

@@ -47,7 +47,7 @@ def _clip(v: float, lo: float, hi: float) -> float:
 #: ``to_int`` an array of int).
 ARRAYS = SimpleNamespace(
     abs=np.abs, maximum=np.maximum, minimum=np.minimum, ceil=np.ceil, log10=np.log10,
-    cbrt=np.cbrt, where=np.where, clip=np.clip,
+    cbrt=np.cbrt, where=np.where, clip=lambda v, lo, hi: np.minimum(hi, np.maximum(lo, v)),
     asfloat=lambda v: np.asarray(v, dtype=float), to_int=lambda v: np.asarray(v).astype(int))
 
 #: Python's functions, for one point in Python floats.
