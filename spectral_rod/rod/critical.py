@@ -360,8 +360,9 @@ def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None
     listed by :func:`spectral_rod.rod.collocation.tuning.solver_settings`).
 
     One driver (:func:`spectral_rod.rod.collocation.driver.collocation_critical_load`) serves
-    every call shape; a scalar call, and a one-point array call (e.g. scipy.optimize's (1,)
-    vectors), take its one-point path and give identical results. A point in a larger call
+    every call shape; a scalar call, and each point of an array call of at most
+    :data:`~spectral_rod.rod.collocation.tuning.SMALL_CALL` = 8 points (e.g. scipy.optimize's
+    (1,) vectors), take its one-point path and give identical results. A point in a larger call
     differs from its scalar call by at most the larger of the two error estimates; where both
     use the same degree, by at most the round-off part eps (32 + 0.3 Omega^2) at the default tol
     (two computations round the same Rayleigh quotient differently), and at a looser tol by at

@@ -195,7 +195,7 @@ class _Arrays:
             return solve_points(int(deg[0]), tw, nu, rtol)
         lam, tails = np.empty((2, tw.size)), np.empty((2, tw.size))
         by_kernel = np.empty(tw.size, dtype=bool)
-        for d in np.unique(deg):
+        for d in np.flatnonzero(np.bincount(deg)):  # the call's degrees, ascending
             sel = np.flatnonzero(deg == d)
             lam[:, sel], tails[:, sel], by_kernel[sel] = solve_points(int(d), tw[sel], nu[sel],
                                                                       rtol)

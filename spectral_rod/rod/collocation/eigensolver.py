@@ -496,7 +496,7 @@ def _solve_lanes(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rt
     tol the pencil's quotient is summed in double-double, from the coefficients in extended
     precision (as :func:`pencil_rayleigh_quotient`, which sums in long double)."""
     loose, big = loose_quotient(rtol, n), _extended(twist, n, rtol)
-    if not big.any():  # the common case: one call, no index arrays
+    if not np.any(big):  # the common case: one call, no index arrays
         return _kernel_points(n, term_coefficients(twist, nu), rtol, loose)
     lam, tails = np.empty((twist.size, 2)), np.empty((twist.size, 2))
     status = np.empty((twist.size, 2), dtype=np.int32)
@@ -509,8 +509,10 @@ def _solve_lanes(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rt
 
 def _extended(twist, n: int, rtol: float):
     """Where the pencil's quotient is summed in extended precision: |Omega| > LONG_TWIST at a
-    tight tol (a bool, or a bool array for an array `twist`)."""
-    return (np.abs(twist) > LONG_TWIST) & (not loose_quotient(rtol, n))
+    tight tol (a bool, or a bool array for an array `twist`; False at a loose one)."""
+    if loose_quotient(rtol, n):
+        return False
+    return np.abs(twist) > LONG_TWIST
 
 
 def _kernel_points(n: int, coef: NDArray, rtol: float, loose: bool
@@ -518,7 +520,7 @@ def _kernel_points(n: int, coef: NDArray, rtol: float, loose: bool
     """:func:`.modal_kernel.modal_points` at points given by their INST1 coefficients (points,
     terms): in long double, the quotient is summed in double-double."""
     families, _arrays = kernel_families(n)  # _arrays: what the structs point to, kept alive
-    hi = coef.astype(float)
+    hi = coef.astype(float, copy=False)
     return modal_kernel.modal_points(
         families, hi, shift=SHIFT, rtol=rtol, first=first_check(rtol, False),
         max_steps=POWER_STEPS, backward_tol=BACKWARD_TOL, close_rel=CLOSE_REL, loose=loose,
