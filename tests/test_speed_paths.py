@@ -157,6 +157,16 @@ def test_small_array_warns_once_as_the_general_path(monkeypatch):
     assert messages[0] == messages[1]
 
 
+@pytest.mark.parametrize("size", [1, 3])
+def test_small_masked_arrays_are_refused_as_on_the_general_path(size):
+    # a masked entry must not be answered as if it were a number (the general path refuses it)
+    twist = np.ma.array(np.linspace(1.0, 3.0, size), mask=[True] + [False] * (size - 1))
+    with pytest.raises(TypeError, match="twist_angle: masked arrays"):
+        critical_load(twist, 1.5)
+    with pytest.raises(TypeError, match="nu: masked arrays"):
+        critical_load(2.0, np.ma.array([1.5] * size, mask=[True] * size))
+
+
 def test_arrays_above_small_call_take_the_general_path(monkeypatch):
     import spectral_rod.rod.critical as critical
 
@@ -420,6 +430,7 @@ def test_scalar_large_twist_path(monkeypatch, reference):
     the scalar path, gives the general path's answer bit for bit, meets the reference, and
     hands a tol it cannot meet to the general path, which warns and flags it."""
     import spectral_rod.rod.critical as critical
+    from spectral_rod.rod import characteristic
 
     cases = [(80.0, 1.5, "auto"), (999.0, 1.0 + 1e-9, "auto"), (3.0, 1.5, "characteristic"),
              (-250.0, 1e4, "auto")]
@@ -427,8 +438,9 @@ def test_scalar_large_twist_path(monkeypatch, reference):
         with monkeypatch.context() as m:  # the general path must not run
             m.setattr(critical, "solve_points", None)
             fast = critical_load(om, nu, method=method, full_output=True)
-        with monkeypatch.context() as m:
-            m.setattr(critical, "_one_point", lambda *a, **k: None)
+        with monkeypatch.context() as m:  # the general path, its brackets on arrays
+            m.setattr(critical, "_point", lambda *a, **k: None)
+            m.setattr(characteristic, "FEW_BRACKETS", 0)
             general = critical_load(np.array([om]), nu, method=method, full_output=True)
         assert fast.method == "characteristic" and fast.converged
         # the same algorithm in floats (libm's sin/cos) and in numpy: equal to an ulp or so,
@@ -442,16 +454,22 @@ def test_scalar_large_twist_path(monkeypatch, reference):
     assert not res.converged and res.error_estimate > 1e-14
 
 
-def test_few_brackets_in_floats_agree_with_the_array_refinement(reference):
-    """The refinement of a few brackets in Python floats (characteristic.FEW_POINTS) and of
-    many on numpy arrays find the same roots to within the route's error estimate, and both
-    meet the reference."""
+@pytest.mark.parametrize("near", [False, True])
+def test_few_brackets_in_floats_agree_with_the_array_refinement(monkeypatch, reference, near):
+    """The certified brackets of a few points found and refined in Python floats
+    (characteristic.FEW_BRACKETS, FEW_POINTS) and of many on numpy arrays give the same roots
+    to within the route's error estimate, and both meet the reference: at large twist, and
+    near nu = 1 (the family bounds)."""
+    from spectral_rod.rod import characteristic
     from spectral_rod.rod.characteristic import FEW_POINTS, double_error_estimate
 
     rng = np.random.default_rng(11)
-    tw = rng.uniform(50.0, 1000.0, 2 * FEW_POINTS + 1)
-    nv = np.exp(rng.uniform(0.0, np.log(1e3), tw.size))
-    p_many, fam_many = characteristic_double_batch(tw, nv)
+    tw = rng.uniform(0.0, 50.0, 9) if near else rng.uniform(50.0, 1000.0, 2 * FEW_POINTS + 1)
+    nv = (1.0 + 10.0 ** rng.uniform(-9.0, -3.0, tw.size) if near
+          else np.exp(rng.uniform(0.0, np.log(1e3), tw.size)))
+    with monkeypatch.context() as m:  # every point's brackets on arrays
+        m.setattr(characteristic, "FEW_BRACKETS", 0)
+        p_many, fam_many = characteristic_double_batch(tw, nv)
     for i in range(tw.size):
         p_one, fam_one = characteristic_double_batch(tw[i:i + 1], nv[i:i + 1])
         assert fam_one[0] == fam_many[i]
@@ -480,9 +498,14 @@ def test_scalar_bracketed_root_is_the_array_iteration(roots, lo, width):
     assert bracketed_root(poly, lo, hi) == float(many[0])
 
 
-def test_batched_characteristic_route_against_the_reference(reference):
-    tw = np.array([50.0, 120.0, 640.0, 1000.0])
-    nv = np.array([1.5, 1.0 + 1e-9, 30.0, 4.0])
+@pytest.mark.parametrize("few", [0, 24])
+def test_batched_characteristic_route_against_the_reference(monkeypatch, reference, few):
+    # the brackets on arrays (FEW_BRACKETS 0) and one point at a time in floats
+    from spectral_rod.rod import characteristic
+
+    monkeypatch.setattr(characteristic, "FEW_BRACKETS", few)
+    tw = np.array([50.0, 120.0, 640.0, 1000.0, 3.0, 45.0])
+    nv = np.array([1.5, 1.0 + 1e-9, 30.0, 4.0, 1.0 + 1e-5, 1.0005])
     p, fam = characteristic_double_batch(tw, nv)
     for t, v, pv in zip(tw, nv, p, strict=True):
         assert abs(pv / reference(float(t), float(v)) - 1) <= 1e-13

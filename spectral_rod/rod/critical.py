@@ -189,22 +189,55 @@ def _unconverged(where: str, count: int, err: float, om: float, nv: float, metho
             f"converged=False")
 
 
+class _Point(NamedTuple):
+    """One point's answer on the scalar path (the fields of :class:`CriticalLoad`, bounds
+    applied, ``converged`` judged after them)."""
+
+    p_star: float
+    method: str
+    n: int
+    error_estimate: float
+    family: str
+    converged: bool
+    engine: str
+
+
 def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: object,
-               full_output: object, warn: bool = True):
+               full_output: object):
     """The scalar fast path: p* (or its CriticalLoad) for one point given as Python or numpy floats
     on the collocation or the large-twist route, or None wherever the general path must answer
     (any other input, the increment route). A forced degree, or an estimate that misses tol (tol
     below the round-off floor), stays here: warned and flagged as the general path does (one
     call must not cost the array path's several times for it). The computation is the general
-    path's for one point, without its array bookkeeping: collocation by the driver's degree loop
+    path's for one point, without its array bookkeeping (:func:`_point`); ``python -m pytest -m
+    bench`` measures the scalar loops."""
+    if not isinstance(full_output, (bool, np.bool_)):
+        return None
+    point = _point(twist_angle, nu, n, tol, method)
+    if point is None:
+        return None
+    if not point.converged:  # the warning points at the caller of critical_load
+        om, nv = abs(float(cast(float, twist_angle))), float(cast(float, nu))
+        warnings.warn(_unconverged("critical_load", 1, point.error_estimate, om, nv,
+                                   point.method, point.n, cast(float, tol)),
+                      ConvergenceWarning, stacklevel=3)
+    if not full_output:
+        return point.p_star
+    return CriticalLoad(*point[:5], converged=point.converged, tol=cast(float, tol),
+                        engine=point.engine)
+
+
+def _point(twist_angle: object, nu: object, n: object, tol: object, method: object
+           ) -> _Point | None:
+    """One point given as Python floats or ints on the collocation or the large-twist route, or
+    None wherever the general path must answer (any other input, the increment route, the
+    large-twist route where its estimate misses tol): collocation by the driver's degree loop
     for one point (:func:`spectral_rod.rod.collocation.driver.collocation_point`), the
-    large-twist route :func:`_one_characteristic`; ``python -m pytest -m bench`` measures both
-    scalar loops. ``warn=False``: no warning (:func:`_few_points` warns once for its points)."""
+    large-twist route by :func:`_one_characteristic`."""
     if not (isinstance(twist_angle, (float, int)) and isinstance(nu, (float, int))
             and isinstance(tol, float) and _lean_degree(n)
-            and method in ("auto", "collocation", "characteristic")
-            and isinstance(full_output, (bool, np.bool_))) or isinstance(twist_angle, bool) \
-            or isinstance(nu, bool):
+            and method in ("auto", "collocation", "characteristic")) \
+            or isinstance(twist_angle, bool) or isinstance(nu, bool):
         return None
     try:
         om, nv = abs(float(twist_angle)), float(nu)
@@ -212,21 +245,16 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
         return None
     if not (om <= TWIST_MAX and 1.0 <= nv <= NU_MAX and TOL_RANGE[0] <= tol <= TOL_RANGE[1]):
         return None  # includes NaN: the general path names the bad argument
-    chosen = route_point(om, nv, n if isinstance(n, int) else None, method)
+    chosen = route_point(om, nv, n if isinstance(n, int) else None, cast(str, method))
     if chosen == "characteristic":
-        return _one_characteristic(om, nv, tol, bool(full_output))
+        return _one_characteristic(om, nv, tol)
     if chosen != "collocation":
         return None
     point = collocation_point(om, nv, tol, n if isinstance(n, int) else None)
     p, err = bounds(point.p_star, point.error_estimate, nv, FLOATS)
-    converged = err <= tol  # after the bounds, as the general path judges it
-    if warn and not converged:  # the warning points at the caller of critical_load
-        warnings.warn(_unconverged("critical_load", 1, err, om, nv, "collocation", point.n, tol),
-                      ConvergenceWarning, stacklevel=3)
-    if not full_output:
-        return p
-    return CriticalLoad(p, "collocation", point.n, err, FAMILIES[point.family],
-                        converged=converged, tol=tol, engine=point.engine)
+    # converged after the bounds, as the general path judges it
+    return _Point(p, "collocation", point.n, err, FAMILIES[point.family], err <= tol,
+                  point.engine)
 
 
 def _lean_degree(n: object) -> bool:
@@ -235,8 +263,8 @@ def _lean_degree(n: object) -> bool:
     return n is None or (type(n) is int and N_MIN <= n <= N_MAX and n % 2 == 0)
 
 
-def _one_characteristic(om: float, nv: float, tol: float, full_output: bool):
-    """:func:`_one_point` on the large-twist route: the characteristic equation in double
+def _one_characteristic(om: float, nv: float, tol: float) -> _Point | None:
+    """:func:`_point` on the large-twist route: the characteristic equation in double
     precision for one point (its refinement in Python floats; the benchmark row "a loop of
     scalar calls, Omega(L) in [50, 1000]" measures it), bounds and estimate as
     :func:`solve_points` and :func:`bounds` give them; None where the estimate misses tol
@@ -248,53 +276,31 @@ def _one_characteristic(om: float, nv: float, tol: float, full_output: bool):
         return None
     p, family = characteristic_double(om, nv)
     p, _ = bounds(p, err, nv, FLOATS)
-    if not full_output:
-        return p
-    return CriticalLoad(p, "characteristic", 0, err, family, converged=True, tol=tol,
-                        engine="characteristic")
+    return _Point(p, "characteristic", 0, err, family, True, "characteristic")
 
 
 def _few_points(twist_angle: object, nu: object, n: object, tol: object, method: object,
                 full_output: object):
     """Arrays of at most :data:`.tuning.SMALL_CALL` points (e.g. the (1,) vectors that
     ``scipy.optimize.least_squares`` and ``fsolve`` pass, or a few points of a curve): each
-    point answered by :func:`_one_point` as its scalar call is, the results shaped and typed as
-    the general path returns them, one warning for the points that missed tol; or None wherever
-    the general path must answer (more points, or a point :func:`_one_point` does not take).
-    The general path's numpy calls cost more than a loop of scalar calls on a few points
-    (``python tests/bench/tuning_crossovers.py``, part 6; ``tests/test_speed_paths.py``
-    compares the two paths' outputs)."""
-    shapes = []
-    for value in (twist_angle, nu):
-        if isinstance(value, np.ndarray):
-            if value.size > SMALL_CALL or value.dtype.kind not in "fiu":  # no bool, complex
-                return None
-            shapes.append(value.shape)
-        elif not isinstance(value, (float, int)):
-            return None
-    if not shapes:
+    point answered by :func:`_point` as its scalar call is, the results shaped and typed as the
+    general path returns them, one warning for the points that missed tol; or None wherever the
+    general path must answer (more points, or a point :func:`_point` does not take). The
+    general path's numpy calls cost more than a loop of scalar calls on a few points (``python
+    tests/bench/tuning_crossovers.py``, part 6; ``tests/test_speed_paths.py`` compares the two
+    paths' outputs)."""
+    shape = _small_shape(twist_angle, nu)
+    if shape is None or not isinstance(full_output, (bool, np.bool_)):
         return None
-    if len(shapes) == 1 or shapes[0] == shapes[1]:
-        shape = shapes[0]
-    else:
-        try:
-            shape = np.broadcast_shapes(*shapes)
-        except ValueError:  # the general path names the arguments
-            return None
     size = math.prod(shape)
-    if not 0 < size <= SMALL_CALL:
-        return None
-    # Python floats and ints (an np.longdouble stays one, and _one_point refuses it)
-    tws, nus = (cast(list[float], [v] * size if not isinstance(v, np.ndarray) else
-                     (v if v.shape == shape else np.broadcast_to(v, shape)).ravel().tolist())
-                for v in (twist_angle, nu))
+    tws, nus = (_point_values(v, shape, size) for v in (twist_angle, nu))
     points = []
     for om, nv in zip(tws, nus, strict=True):
-        one = _one_point(om, nv, n, tol, method, True, warn=False)
-        if one is None:
+        point = _point(om, nv, n, tol, method)
+        if point is None:
             return None
-        points.append(one)
-    missed = [i for i, one in enumerate(points) if not one.converged]
+        points.append(point)
+    missed = [i for i, point in enumerate(points) if not point.converged]
     if missed:
         i = max(missed, key=lambda j: points[j].error_estimate)
         worst = points[i]
@@ -303,14 +309,43 @@ def _few_points(twist_angle: object, nu: object, n: object, tol: object, method:
                                    cast(float, tol)),
                       ConvergenceWarning, stacklevel=3)
     if not full_output:
-        return as_output(np.array([one.p_star for one in points]), shape)
-    fields = [as_output(np.array([getattr(one, name) for one in points], dtype=dtype), shape)
-              for name, dtype in (("p_star", np.float64), ("method", METHOD_DTYPE),
-                                  ("n", int), ("error_estimate", np.float64),
-                                  ("family", FAMILY_DTYPE), ("converged", bool),
-                                  ("engine", ENGINE_DTYPE))]
+        return as_output(np.array([point.p_star for point in points]), shape)
+    dtypes: tuple[Any, ...] = (np.float64, METHOD_DTYPE, int, np.float64, FAMILY_DTYPE, bool,
+                               ENGINE_DTYPE)
+    fields = [as_output(np.array(values, dtype=dtype), shape)
+              for values, dtype in zip(zip(*points, strict=True), dtypes, strict=True)]
     return CriticalLoad(fields[0], fields[1], fields[2], fields[3], fields[4],
                         converged=fields[5], tol=cast(float, tol), engine=fields[6])
+
+
+def _point_values(value: object, shape: tuple[int, ...], size: int) -> list[Any]:
+    """`value` (a plain numpy array or a Python number) at the `size` points of the broadcast
+    `shape`, as Python numbers (an np.longdouble stays one, and :func:`_point` refuses it)."""
+    if type(value) is not np.ndarray:
+        return [value] * size
+    return (value if value.shape == shape else np.broadcast_to(value, shape)).ravel().tolist()
+
+
+def _small_shape(twist_angle: object, nu: object) -> tuple[int, ...] | None:
+    """The broadcast shape of a call :func:`_few_points` takes: plain numpy arrays of real
+    numbers (no bool or complex, no subclass such as a masked array) and Python floats or ints,
+    at least one array, at most :data:`.tuning.SMALL_CALL` points in all; else None."""
+    shapes = []
+    for value in (twist_angle, nu):
+        if type(value) is np.ndarray:
+            if value.dtype.kind not in "fiu":
+                return None
+            shapes.append(value.shape)
+        elif not isinstance(value, (float, int)):
+            return None
+    if not shapes:
+        return None
+    try:
+        shape = (shapes[0] if len(shapes) == 1 or shapes[0] == shapes[1]
+                 else np.broadcast_shapes(*shapes))
+    except ValueError:  # the general path names the arguments
+        return None
+    return shape if 0 < math.prod(shape) <= SMALL_CALL else None
 
 
 def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None,
@@ -375,9 +410,10 @@ def critical_load(twist_angle: ArrayLike, nu: ArrayLike, *, n: int | None = None
     >>> round(critical_load(6.283185307179586, 1.5), 9)
     1.195993681
     """
-    one = _one_point(twist_angle, nu, n, tol, method, full_output)
-    if one is None:
+    if isinstance(twist_angle, np.ndarray) or isinstance(nu, np.ndarray):
         one = _few_points(twist_angle, nu, n, tol, method, full_output)
+    else:
+        one = _one_point(twist_angle, nu, n, tol, method, full_output)
     if one is not None:
         return one
     twist, nu_arr = check_twist(twist_angle), check_nu(nu)
