@@ -140,8 +140,8 @@ FEW_POINTS = 4
 #: Up to this many points the certified brackets (the large-twist expansion's, the family
 #: bounds') are found and refined one point at a time in Python floats (:func:`_bracketed_point`,
 #: :func:`_family_bound_point`: the scalar path's functions) instead of on arrays, whose cost on
-#: a few points is numpy's per-call cost (loop / arrays time at 8, 16, 24 and 32 points: 0.27,
-#: 0.55, 0.75 and 0.95 for the family bounds, 0.42, 0.80, ~1.0 and 1.28 for the large-twist
+#: a few points is numpy's per-call cost (loop / arrays time at 8, 16, 24 and 32 points: 0.23,
+#: 0.53, 0.73 and 0.83 for the family bounds, 0.41, 0.70, 1.06 and 1.39 for the large-twist
 #: brackets; ``python tests/bench/tuning_crossovers.py``, part 5).
 FEW_BRACKETS = 24
 #: One pass of this many grid points reaches p = 2, above the large-twist limit 2 nu/(1 + nu)

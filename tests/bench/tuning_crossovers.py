@@ -26,8 +26,9 @@ for and move each constant to where its ratio crosses 1.
    ``_bracketed_batch``, Omega(L) in [50, 1000], nu in [1, 100]), 1..128 points; the
    threshold is the count where it crosses 1.
 6. SMALL_CALL: ``critical_load`` on an array of k points by the general path / a loop of its
-   scalar calls, on the collocation route (Omega(L) in [0, 10] and [20, 50]), nu - 1 near
-   zero and large twist; the threshold is the count where it crosses 1.
+   scalar calls, on the collocation route (Omega(L) in [0, 10] and [40, 50], nu in [1.1,
+   100]), near nu = 1 and at large twist (as in part 5); the threshold is the count where it
+   crosses 1.
 """
 
 from __future__ import annotations
@@ -169,9 +170,8 @@ def _route_points(route: str, count: int, rng: np.random.Generator):
         return rng.uniform(0.0, 50.0, count), 1.0 + 10.0 ** rng.uniform(-9.0, -3.0, count)
     if route == "large twist":
         return rng.uniform(50.0, 1000.0, count), rng.uniform(1.0, 100.0, count)
-    top = 10.0 if route == "Omega(L) < 10" else 50.0
-    return rng.uniform(top - 10.0 if top > 10.0 else 0.0, top, count), rng.uniform(1.1, 100.0,
-                                                                                    count)
+    low, high = {"Omega(L) < 10": (0.0, 10.0), "Omega(L) in [40, 50]": (40.0, 50.0)}[route]
+    return rng.uniform(low, high, count), rng.uniform(1.1, 100.0, count)
 
 
 def few_brackets(rng: np.random.Generator) -> None:
