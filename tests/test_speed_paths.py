@@ -97,7 +97,8 @@ def test_one_element_arrays_take_the_scalar_path_with_the_general_output(
 
 def _small_call_points(size: int, rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray]:
     """`size` points mixing the routes: collocation, large twist, nu - 1 near zero."""
-    tw = rng.choice([rng.uniform(-49.0, 49.0), rng.uniform(50.0, 900.0)], size)
+    tw = np.where(rng.random(size) < 0.5, rng.uniform(-49.0, 49.0, size),
+                  rng.uniform(50.0, 900.0, size))
     nv = np.where(rng.random(size) < 0.3, 1.0 + 10.0 ** rng.uniform(-9, -3, size),
                   rng.uniform(1.0, 100.0, size))
     return tw, nv
@@ -155,6 +156,11 @@ def test_small_array_warns_once_as_the_general_path(monkeypatch):
         messages.append(str(caught[0].message))
     assert "not met at 2 point(s)" in messages[0]
     assert messages[0] == messages[1]
+    with warnings.catch_warnings(record=True) as caught:  # a scalar call's warning too
+        warnings.simplefilter("always")
+        critical_load(45.0, 1.5, n=24)
+    assert [w.filename for w in caught] == [__file__]
+    assert "not met at 1 point(s)" in str(caught[0].message)
 
 
 @pytest.mark.parametrize("size", [1, 3])

@@ -142,6 +142,7 @@ def _results(name: str, tw: NDArray[np.float64], nv: NDArray[np.float64],
     out = _SOLVERS[name](tw, nv, n, tol)
     p, deg, err, fam = out[:4]
     engine = out[4] if len(out) > 4 else methods
+    # p* and the estimates as new arrays: apply_bounds writes into them
     return PointResults(np.array(p, dtype=float), methods, np.asarray(deg, dtype=int),
                         np.array(err, dtype=float), np.asarray(fam, dtype=FAMILY_DTYPE),
                         np.asarray(engine, dtype=ENGINE_DTYPE))
@@ -216,11 +217,7 @@ def _one_point(twist_angle: object, nu: object, n: object, tol: object, method: 
     point = _point(twist_angle, nu, n, tol, method)
     if point is None:
         return None
-    if not point.converged:  # the warning points at the caller of critical_load
-        om, nv = abs(float(cast(float, twist_angle))), float(cast(float, nu))
-        warnings.warn(_unconverged("critical_load", 1, point.error_estimate, om, nv,
-                                   point.method, point.n, cast(float, tol)),
-                      ConvergenceWarning, stacklevel=3)
+    _warn_points([point], [twist_angle], [nu], tol)
     if not full_output:
         return point.p_star
     return CriticalLoad(*point[:5], converged=point.converged, tol=cast(float, tol),
@@ -300,14 +297,7 @@ def _few_points(twist_angle: object, nu: object, n: object, tol: object, method:
         if point is None:
             return None
         points.append(point)
-    missed = [i for i, point in enumerate(points) if not point.converged]
-    if missed:
-        i = max(missed, key=lambda j: points[j].error_estimate)
-        worst = points[i]
-        warnings.warn(_unconverged("critical_load", len(missed), worst.error_estimate,
-                                   abs(float(tws[i])), float(nus[i]), worst.method, worst.n,
-                                   cast(float, tol)),
-                      ConvergenceWarning, stacklevel=3)
+    _warn_points(points, tws, nus, tol)
     if not full_output:
         return as_output(np.array([point.p_star for point in points]), shape)
     dtypes: tuple[Any, ...] = (np.float64, METHOD_DTYPE, int, np.float64, FAMILY_DTYPE, bool,
@@ -316,6 +306,21 @@ def _few_points(twist_angle: object, nu: object, n: object, tol: object, method:
               for values, dtype in zip(zip(*points, strict=True), dtypes, strict=True)]
     return CriticalLoad(fields[0], fields[1], fields[2], fields[3], fields[4],
                         converged=fields[5], tol=cast(float, tol), engine=fields[6])
+
+
+def _warn_points(points: list[_Point], tws: list[Any], nus: list[Any], tol: object) -> None:
+    """:func:`warn_unconverged` for the scalar path's points (twist and nu as given): one
+    warning naming the worst point, if any missed `tol`, pointing at the caller of
+    :func:`critical_load` (through :func:`_one_point` or :func:`_few_points`)."""
+    missed = [i for i, point in enumerate(points) if not point.converged]
+    if not missed:
+        return
+    i = max(missed, key=lambda j: points[j].error_estimate)
+    worst = points[i]
+    warnings.warn(_unconverged("critical_load", len(missed), worst.error_estimate,
+                               abs(float(tws[i])), float(nus[i]), worst.method, worst.n,
+                               cast(float, tol)),
+                  ConvergenceWarning, stacklevel=4)
 
 
 def _point_values(value: object, shape: tuple[int, ...], size: int) -> list[Any]:
