@@ -322,7 +322,9 @@ def test_degree_groups_are_pooled_where_the_cost_model_says_it_is_cheaper():
     assert solve_degrees(n).tolist() == [20] * n.size  # two small groups join a large one
     n = np.repeat([16, 28], [150, 1])  # one stray point does not lift 150 points by 12
     assert solve_degrees(n).tolist() == n.tolist()
-    n = np.array([16, 18, 18, 20])  # the lean solver's: no fixed cost to save
+    n = np.array([16, 18, 18, 20])  # the lean solver's groups: one call's cost to save
+    assert solve_degrees(n).tolist() == [20] * n.size
+    n = np.array([16, 16, 16, 60])  # ... but not 3 points lifted from 16 to 60
     assert solve_degrees(n).tolist() == n.tolist()
     n = np.repeat([60, 64, 66, 70], 50)  # not across nor above LEAN_MAX_DEGREE = 64
     assert solve_degrees(n)[100:].tolist() == n[100:].tolist()
@@ -362,6 +364,22 @@ def test_a_pooled_call_meets_tol_and_agrees_with_scalar_calls(reference):
         assert abs(p / r.p_star - 1) <= max(e, r.error_estimate)  # critical_load's docstring
     for i in (0, 150, 299):
         assert abs(res.p_star[i] / reference(float(tw[i]), 1.3) - 1) <= res.error_estimate[i]
+
+
+def test_a_small_call_over_several_degrees_is_one_engine_call(monkeypatch, reference):
+    # 9 points over 5 a priori degrees: one engine call (tuning.CALL_COST), not 5 of a few lanes
+    from spectral_rod.rod.collocation import driver
+    from spectral_rod.rod.collocation.resolution import initial_degree
+
+    tw, nv = np.linspace(2.0, 18.0, 9), np.linspace(1.2, 30.0, 9)
+    assert np.unique(initial_degree(tw, 1e-12)).size >= 4
+    calls = []
+    solve = driver.solve_points
+    monkeypatch.setattr(driver, "solve_points", lambda n, *a: calls.append(n) or solve(n, *a))
+    res = critical_load(tw, nv, full_output=True)
+    assert len(calls) == 1 and res.converged.all()
+    for a, b, p, e in zip(tw, nv, res.p_star, res.error_estimate, strict=True):
+        assert abs(p / reference(float(a), float(b)) - 1) <= e
 
 
 def test_an_unresolved_degree_is_flagged():

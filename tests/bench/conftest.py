@@ -50,7 +50,9 @@ def pytest_terminal_summary(terminalreporter, exitstatus, config) -> None:
         got = ", ".join(f"n={n}: {f * 1e3:.2f} ms + {c * 1e6:.1f} us (n/22)^2"
                         for n, (f, c) in pm["measured"].items())
         tr.write_line(f"pooling cost model {pm['model'][0] * 1e3:.2f} ms + "
-                      f"{pm['model'][1] * 1e6:.1f} us (n/22)^2; measured {got}")
+                      f"{pm['model'][1] * 1e6:.1f} us (n/22)^2; measured {got}; one more "
+                      f"degree group {pm['call'][0] * 1e6:.1f} us (CALL_COST "
+                      f"{pm['call'][1] * 1e6:.0f} us)")
     if "import" in reg:
         imp = reg["import"]
         tr.write_line(f"import spectral_rod: {imp['import_s'] * 1e3:.1f} ms; first call "

@@ -741,7 +741,7 @@ def test_pooling_cost_model(benchmark, bench_registry):
     # collocation.FIXED_COST and POINT_COST: a batched solve of 30 and of 300 points of one
     # degree gives the fixed cost and the cost a point; the model is used through their ratio
     from spectral_rod._blas_threads import one_blas_thread
-    from spectral_rod.rod.collocation.driver import FIXED_COST, POINT_COST
+    from spectral_rod.rod.collocation.driver import CALL_COST, FIXED_COST, POINT_COST
     from spectral_rod.rod.collocation.eigensolver import solve_points
 
     rng = np.random.default_rng(2)
@@ -765,12 +765,35 @@ def test_pooling_cost_model(benchmark, bench_registry):
                 per_round.append((t30 - 30 * slope, slope / (n / 22.0) ** 2))
         measured[n] = tuple(float(v) for v in np.median(per_round, axis=0))
     ratios = [fixed / point for fixed, point in measured.values()]
-    bench_registry["pooling"] = {"measured": measured, "model": (FIXED_COST, POINT_COST)}
+    call = _group_cost()
+    bench_registry["pooling"] = {"measured": measured, "model": (FIXED_COST, POINT_COST),
+                                 "call": (call, CALL_COST)}
     benchmark.extra_info.update({f"n{n}_fixed_s": f for n, (f, _) in measured.items()})
     benchmark.extra_info.update({f"n{n}_point_s": p for n, (_, p) in measured.items()})
+    benchmark.extra_info.update(group_of_one_point_s=call)
     benchmark.pedantic(lambda: None, rounds=1, iterations=1)
     # the decisions depend on FIXED_COST / POINT_COST: within a factor 3 of the measured one
     # (the model's 44; with the kernel's modal_points on 32 lanes, measured 17, 57-59 and
     # 121-125 at n = 16, 22, 36 in three runs of 2026-12-07: a solve of 30 points is one group
     # of 32 lanes, so the measured "fixed" part grows with n)
     assert all(FIXED_COST / POINT_COST / 3 <= r <= 3 * FIXED_COST / POINT_COST for r in ratios)
+    # and on CALL_COST / POINT_COST where small groups meet: CALL_COST within a factor 3 of the
+    # measured cost of one more group
+    assert CALL_COST / 3 <= call <= 3 * CALL_COST, call
+
+
+def _group_cost() -> float:
+    """tuning.CALL_COST: what one more degree group costs the degree loop's engine calls
+    (``driver._Arrays.solve``), a group of one point at n = 12 beside one at n = 14 less the
+    n = 14 point alone (median of 12 interleaved rounds; ~2 us of it the kernel's
+    arithmetic)."""
+    from spectral_rod.rod.collocation.driver import _Arrays
+
+    tw, nv, rtol = np.array([3.0, 5.0]), np.array([1.5, 2.0]), 1e-14
+    two = lambda: _Arrays.solve(tw, nv, np.array([12, 14]), rtol)  # noqa: E731
+    one = lambda: _Arrays.solve(tw[1:], nv[1:], np.array([14]), rtol)  # noqa: E731
+    diffs = []
+    for _ in range(12):
+        t_two, t_one = _interleaved_min([two, one], rounds=1, repeats=20)
+        diffs.append(t_two - t_one)
+    return float(np.median(diffs))

@@ -45,6 +45,7 @@ from spectral_rod.rod.collocation.resolution import (
     shortfall,
 )
 from spectral_rod.rod.collocation.tuning import (
+    CALL_COST,
     FEW_POINTS,
     FIXED_COST,
     LEAN_FACTOR,
@@ -57,6 +58,7 @@ from spectral_rod.rod.collocation.tuning import (
 from spectral_rod.rod.families import CLOSE_REL, TIE_REL, check_family
 
 __all__ = [
+    "CALL_COST",
     "CLOSE_REL",
     "FEW_POINTS",
     "FIXED_COST",
@@ -99,7 +101,7 @@ def solve_cost(points: int, degree: int) -> float:
     """Modelled seconds to solve `points` points of one degree (:data:`.tuning.FIXED_COST`)."""
     per_point = POINT_COST * (degree / 22.0) ** 2
     if points <= few_points_limit(degree):
-        return LEAN_FACTOR * points * per_point
+        return CALL_COST + LEAN_FACTOR * points * per_point
     return FIXED_COST + points * per_point
 
 

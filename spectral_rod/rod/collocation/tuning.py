@@ -32,11 +32,11 @@ from __future__ import annotations
 
 from typing import NamedTuple
 
-__all__ = ["BLOCK_ENTRIES", "CALIBRATED_TOL", "CHUNK", "DENSE_ENTRIES", "FEW_POINTS", "FIRST_CHECK",
-           "FIXED_COST", "KERNEL_MAX_SCHUR", "LEAN_FACTOR", "LEAN_MAX_DEGREE", "LONG_TWIST",
-           "LOOSE_DEGREE", "LOOSE_FIRST_CHECK", "LOOSE_RTOL", "LOOSE_SHARE", "POINT_COST",
-           "POINT_SCHUR_DEGREE", "POWER_RTOL", "POWER_STEPS", "SMALL_CALL", "TIGHT_TOL",
-           "TRUNCATION_SHARE",
+__all__ = ["BLOCK_ENTRIES", "CALIBRATED_TOL", "CALL_COST", "CHUNK", "DENSE_ENTRIES", "FEW_POINTS",
+           "FIRST_CHECK", "FIXED_COST", "KERNEL_MAX_SCHUR", "LEAN_FACTOR", "LEAN_MAX_DEGREE",
+           "LONG_TWIST", "LOOSE_DEGREE", "LOOSE_FIRST_CHECK", "LOOSE_RTOL", "LOOSE_SHARE",
+           "POINT_COST", "POINT_SCHUR_DEGREE", "POWER_RTOL", "POWER_STEPS", "SMALL_CALL",
+           "TIGHT_TOL", "TRUNCATION_SHARE",
            "SolverSettings",
            "few_points_limit", "first_check", "iteration_allowance", "iteration_rtol",
            "loose_quotient", "solver_settings", "truncation_share"]
@@ -177,14 +177,21 @@ DENSE_ENTRIES = 16_000
 POINT_SCHUR_DEGREE = 42
 #: The cost model of degree pooling (:func:`.collocation.solve_degrees`): a batched solve of
 #: both families costs FIXED_COST seconds whatever its size plus POINT_COST (n/22)^2 a point;
-#: one lane (:func:`few_points_limit`) has no fixed cost and costs LEAN_FACTOR times as much a
-#: point. Only the ratios decide. ``python -m pytest -m bench -k pooling_cost_model`` measures
-#: the first two (with the kernel, random points: 30, 80 and 160 us and 1.4, 1.4 and 1.3 us
-#: at n = 16, 22 and 36; a solve of 30 points is one group of 32 lanes, so the "fixed" part
-#: grows with n); LEAN_FACTOR from the kernel's one lane against its full groups on Figure 1's
-#: points (5.4, 6.1, 6.0, 6.0 and 6.0 at n = 16, 22, 30, 40 and 56,
+#: one lane (:func:`few_points_limit`) costs CALL_COST whatever its size and LEAN_FACTOR times
+#: as much a point. Only the ratios decide. ``python -m pytest -m bench -k pooling_cost_model``
+#: measures FIXED_COST and POINT_COST (with the kernel, random points: 30, 80 and 160 us and
+#: 1.4, 1.4 and 1.3 us at n = 16, 22 and 36; a solve of 30 points is one group of 32 lanes, so
+#: the "fixed" part grows with n); LEAN_FACTOR from the kernel's one lane against its full
+#: groups on Figure 1's points (5.4, 6.1, 6.0, 6.0 and 6.0 at n = 16, 22, 30, 40 and 56,
 #: ``tests/bench/kernel_range.py``, part 2).
 FIXED_COST, POINT_COST, LEAN_FACTOR = 60e-6, 1.35e-6, 6.0
+#: The numpy and Python of one engine call, its points aside (the coefficients, the kernel's
+#: call, the group's index arrays; part of FIXED_COST where measured): what pooling a small
+#: group saves. The same bench test times one more group, of one point at n = 12, as the
+#: degree loop solves it beside another: 34 us, ~2.4 us of it the point's arithmetic. Without
+#: this term each degree group of a small call is solved on its own: 9 Figure 1 points at tol
+#: 1e-12 in 5 groups, 1.8x a loop of scalar calls on the same points.
+CALL_COST = 30e-6
 #: :func:`.stacked_inverse.stacked_inverse` (the numpy engine's Schur inverses) uses the block
 #: recursion for stacks of at least this many matrix entries (count k^2), LAPACK below: the
 #: recursion's cost is mostly numpy calls per stack, LAPACK's a call per matrix. On the
@@ -202,8 +209,9 @@ CHUNK = 1 << 12
 #: Array calls of :func:`spectral_rod.critical_load` with at most this many points are answered
 #: point by point by the scalar path (``critical._few_points``): the general path's numpy calls
 #: cost more than a loop of scalar calls on a few points (general / loop time at 2, 8 and 16
-#: points: 2.95, 1.49 and 0.61 at Omega(L) < 10; 1.96, 0.74 and 0.40 at Omega(L) in [40, 50];
-#: 2.33, 1.21 and 1.01 at nu - 1 <= 1e-3; 2.32, 1.23 and 1.02 at Omega(L) >= 50).
+#: points: 2.23, 0.93 and 0.50 at Omega(L) < 10; 1.51, 0.74 and 0.45 at Omega(L) in [40, 50];
+#: 2.11, 1.15 and 0.97 at nu - 1 <= 1e-3; 2.27, 1.18 and 0.97 at Omega(L) >= 50: the
+#: collocation routes cross at ~7 points, the characteristic ones at ~14).
 #: ``python tests/bench/tuning_crossovers.py``, part 6.
 SMALL_CALL = 8
 
