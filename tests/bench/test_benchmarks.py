@@ -654,7 +654,8 @@ def test_import_and_cold_call(benchmark, bench_registry):
 @pytest.mark.benchmark(group="tol trade")
 def test_tol_trade(benchmark, fig1, reference, bench_registry):
     """Issue 37 item 3: the Figure 1 batch at tol 1e-4 costs at most TOL_TRADE_MAX of tol 1e-12,
-    its error within ~1e3 of tol (sampled; the issue asks ~100x).
+    its error within ~1e3 of tol (sampled; the issue asks ~100x, which ``hunt_tol.py`` measures
+    over random points: 0.18 tol at 1e-4).
 
     The allocator's state moves this ratio, so the page faults of a call are recorded with it.
     The batched engine's largest temporaries, the (points, k, k) stacks of Schur complements,
@@ -672,7 +673,9 @@ def test_tol_trade(benchmark, fig1, reference, bench_registry):
     tw, nv = fig1
     res = critical_load(tw, nv, tol=1e-4, full_output=True)
     err = _max_error(res.p_star, tw, nv, reference)
-    assert res.converged.all() and 1e-7 <= err <= 1e-4  # 1.0e-7 measured (target ~1e-6)
+    # 1.0e-7 measured: the lower bound, 3e3 below tol and 1e6 above tol 1e-12's errors, says
+    # that the degree fell with tol (a bound at the measured value would fail on round-off)
+    assert res.converged.all() and 3e-8 <= err <= 1e-4
     t12, t4, t2 = _interleaved_min([lambda: critical_load(tw, nv, tol=1e-12),
                                     lambda: critical_load(tw, nv, tol=1e-4),
                                     lambda: critical_load(tw, nv, tol=1e-2)])
