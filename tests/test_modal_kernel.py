@@ -240,3 +240,16 @@ def test_double_double_terms_agree_with_longdouble_and_mpmath(family, monkeypatc
             # the code's coefficients in longdouble carry ~1e-19 Omega^2: the result rounds
             # to double
             assert abs(float(got[i] / exact) - 1) <= 4 * np.finfo(float).eps
+
+
+def test_array_addresses_for_the_kernel():
+    # modal_kernel._ptr reads a writable array's address through its buffer: the address numpy
+    # reports, for writable, read-only, empty and int32 arrays alike; None stays a null pointer
+    a = np.arange(6.0)
+    ro = np.arange(4.0)
+    ro.flags.writeable = False
+    for x in (a, a[2:], ro, np.empty(0), np.zeros((3, 2), dtype=np.int32)):
+        assert modal_kernel._ptr(x) == x.ctypes.data
+    assert modal_kernel._ptr(None) is None
+    with pytest.raises(ValueError, match="C-contiguous"):
+        modal_kernel._ptr(a[::2])

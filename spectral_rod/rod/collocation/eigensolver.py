@@ -347,7 +347,7 @@ def solve_points(n: int, twist: NDArray[np.float64], nu: NDArray[np.float64], rt
     if kernel_degree(n):
         lam1, tails1, status = _solve_lanes(n, twist, nu, rtol)
         lam[:], tails[:] = lam1.T, tails1.T
-        by_kernel = _accepted(status)
+        by_kernel = _accepted(status[:, 0], status[:, 1])
         rest = np.flatnonzero(~by_kernel)
         if not rest.size:
             return PointsSolution(lam, tails, by_kernel)
@@ -393,7 +393,7 @@ def solve_point(n: int, twist: float, nu: float, rtol: float
         lam1, tails1, status = _kernel_points(
             n, np.array([[t.coefficient(om, nv) for t in INST1]], dtype=dtype), rtol,
             loose_quotient(rtol, n))
-        if _accepted(status)[0]:
+        if _accepted(*status[0].tolist()):
             return lam1[0].tolist(), tails1[0].tolist(), True
         # rejected by the one-lane kernel: the batched engine and the reference decide (not
         # solve_points, which would repeat the same one-lane call)
@@ -528,7 +528,8 @@ def _kernel_points(n: int, coef: NDArray, rtol: float, loose: bool
         coef_lo=None if coef.dtype == np.float64 else (coef - hi).astype(float))
 
 
-def _accepted(status: NDArray[np.int32]) -> NDArray[np.bool_]:
-    """Both families accepted: the symmetric converged, the antisymmetric converged or above."""
-    return (status[:, 0] == modal_kernel.CONVERGED) & (
-        (status[:, 1] == modal_kernel.CONVERGED) | (status[:, 1] == modal_kernel.ABOVE))
+def _accepted(symmetric: Any, antisymmetric: Any) -> Any:
+    """Both families accepted, from their status codes (arrays of points, or one point's ints):
+    the symmetric converged, the antisymmetric converged or above."""
+    return (symmetric == modal_kernel.CONVERGED) & (
+        (antisymmetric == modal_kernel.CONVERGED) | (antisymmetric == modal_kernel.ABOVE))

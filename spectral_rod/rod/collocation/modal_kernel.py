@@ -255,11 +255,15 @@ def _call(name: str, *args: Any) -> None:
 
 
 def _ptr(a: Any) -> int | None:
-    """The address of a C-contiguous array (None for a null pointer)."""
+    """The address of a C-contiguous array (None for a null pointer). A writable, non-empty
+    array's address is read through ``ctypes.c_char.from_buffer`` (~0.2 us; ``a.ctypes.data``
+    builds a helper object, ~0.8 us, a few percent of a scalar call per pointer)."""
     if a is None:
         return None
     if not a.flags.c_contiguous:
         raise ValueError("the kernel needs C-contiguous arrays")
+    if a.flags.writeable and a.nbytes:
+        return ctypes.addressof(ctypes.c_char.from_buffer(a))
     return a.ctypes.data
 
 
