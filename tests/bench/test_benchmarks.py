@@ -788,7 +788,7 @@ def test_pooling_cost_model(benchmark, bench_registry):
 def _group_cost() -> float:
     """tuning.CALL_COST: what one more degree group costs the degree loop's engine calls
     (``driver._Arrays.solve``), a group of one point at n = 12 beside one at n = 14 less the
-    n = 14 point alone (median of 12 interleaved rounds; ~2 us of it the kernel's
+    n = 14 point alone (median of 12 interleaved rounds; ~2.4 us of it the kernel's
     arithmetic)."""
     from spectral_rod.rod.collocation.driver import _Arrays
 
