@@ -189,9 +189,8 @@ FIXED_COST, POINT_COST, LEAN_FACTOR = 60e-6, 1.35e-6, 6.0
 #: call, the group's index arrays; part of FIXED_COST where measured): what pooling a small
 #: group saves. The same bench test times one more group, of one point at n = 12, as the
 #: degree loop solves it beside another: 31.5-34.2 us in three runs, ~2.4 us of it the point's
-#: arithmetic. Without
-#: this term each degree group of a small call is solved on its own: 9 Figure 1 points at tol
-#: 1e-12 in 5 groups, 1.8x a loop of scalar calls on the same points.
+#: arithmetic. Without this term each degree group of a small call is solved on its own: 9
+#: Figure 1 points at tol 1e-12 in 5 groups, 1.8x a loop of scalar calls on the same points.
 CALL_COST = 30e-6
 #: :func:`.stacked_inverse.stacked_inverse` (the numpy engine's Schur inverses) uses the block
 #: recursion for stacks of at least this many matrix entries (count k^2), LAPACK below: the
