@@ -28,7 +28,8 @@ for and move each constant to where its ratio crosses 1.
 6. SMALL_CALL: ``critical_load`` on an array of k points by the general path / a loop of its
    scalar calls, on the collocation route (Omega(L) in [0, 10] and [40, 50], nu in [1.1,
    100]), near nu = 1 and at large twist (as in part 5); the threshold is the count where it
-   crosses 1.
+   crosses 1. The collocation routes once more with degree pooling's ``CALL_COST`` set to 0 (the
+   groups of a few points then solved one engine call each): what that constant buys.
 """
 
 from __future__ import annotations
@@ -41,8 +42,8 @@ import numpy as np
 from spectral_rod._blas_threads import one_blas_thread
 from spectral_rod.rod import characteristic as C
 from spectral_rod.rod import critical
+from spectral_rod.rod.collocation import driver, modal_kernel, quotient, shifted, tuning
 from spectral_rod.rod.collocation import eigensolver as E
-from spectral_rod.rod.collocation import modal_kernel, quotient, shifted, tuning
 from spectral_rod.rod.collocation import stacked_inverse as S
 
 ROUNDS = 15
@@ -192,12 +193,14 @@ def few_brackets(rng: np.random.Generator) -> None:
 
 def small_call(rng: np.random.Generator) -> None:
     print(f"6. critical_load on k points: general path / loop of scalar calls (SMALL_CALL = "
-          f"{tuning.SMALL_CALL})")
-    small = critical._few_points
+          f"{tuning.SMALL_CALL}; the collocation routes also with pooling's CALL_COST = 0)")
+    small, call_cost = critical._few_points, driver.CALL_COST
     try:
         critical._few_points = lambda *args: None  # the general path answers every array
-        for route in ("Omega(L) < 10", "Omega(L) in [40, 50]", "near-degenerate",
-                      "large twist"):
+        for route, cost in (("Omega(L) < 10", call_cost), ("Omega(L) < 10", 0.0),
+                            ("Omega(L) in [40, 50]", call_cost), ("Omega(L) in [40, 50]", 0.0),
+                            ("near-degenerate", call_cost), ("large twist", call_cost)):
+            driver.CALL_COST = cost
             row = []
             for count in (2, 4, 6, 8, 10, 12, 16, 24):
                 om, nv = _route_points(route, count, rng)
@@ -205,9 +208,10 @@ def small_call(rng: np.random.Generator) -> None:
                 ratio = best_ratio(lambda om=om, nv=nv: critical.critical_load(om, nv),
                                    lambda x=floats: [critical.critical_load(a, b) for a, b in x])
                 row.append(f"{count}: {ratio:.2f}")
-            print(f"   {route}: " + "  ".join(row))
+            label = route if cost == call_cost else f"{route}, CALL_COST = 0"
+            print(f"   {label}: " + "  ".join(row))
     finally:
-        critical._few_points = small
+        critical._few_points, driver.CALL_COST = small, call_cost
 
 
 def main() -> None:

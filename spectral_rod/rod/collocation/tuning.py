@@ -188,9 +188,11 @@ FIXED_COST, POINT_COST, LEAN_FACTOR = 60e-6, 1.35e-6, 6.0
 #: The numpy and Python of one engine call, its points aside (the coefficients, the kernel's
 #: call, the group's index arrays; part of FIXED_COST where measured): what pooling a small
 #: group saves. The same bench test times one more group, of one point at n = 12, as the
-#: degree loop solves it beside another: 31.5-34.2 us in three runs, ~2.4 us of it the point's
-#: arithmetic. Without this term each degree group of a small call is solved on its own: 9
-#: Figure 1 points at tol 1e-12 in 5 groups, 1.8x a loop of scalar calls on the same points.
+#: degree loop solves it beside another: 31.5-34.2 us in three runs (the model's lean cost of
+#: the point, LEAN_FACTOR POINT_COST (12/22)^2 = 2.4 us, included). Without this term each
+#: degree group of a small call is solved on its own: an array of 10 points at Omega(L) < 10
+#: then costs 1.43 of a loop of scalar calls, 0.81 with it (``python
+#: tests/bench/tuning_crossovers.py``, part 6).
 CALL_COST = 30e-6
 #: :func:`.stacked_inverse.stacked_inverse` (the numpy engine's Schur inverses) uses the block
 #: recursion for stacks of at least this many matrix entries (count k^2), LAPACK below: the
@@ -209,9 +211,9 @@ CHUNK = 1 << 12
 #: Array calls of :func:`spectral_rod.critical_load` with at most this many points are answered
 #: point by point by the scalar path (``critical._few_points``): the general path's numpy calls
 #: cost more than a loop of scalar calls on a few points (general / loop time at 2, 8 and 16
-#: points: 2.23, 0.93 and 0.50 at Omega(L) < 10; 1.51, 0.74 and 0.45 at Omega(L) in [40, 50];
-#: 2.11, 1.15 and 0.97 at nu - 1 <= 1e-3; 2.27, 1.18 and 0.97 at Omega(L) >= 50: the
-#: collocation routes cross at ~7 points, the characteristic ones at ~14).
+#: points: 2.45, 1.08 and 0.57 at Omega(L) < 10; 1.72, 0.76 and 0.39 at Omega(L) in [40, 50];
+#: 2.28, 1.14 and 0.97 at nu - 1 <= 1e-3; 2.27, 1.17 and 0.96 at Omega(L) >= 50: the
+#: collocation routes cross at 6-9 points, the characteristic ones at ~14).
 #: ``python tests/bench/tuning_crossovers.py``, part 6.
 SMALL_CALL = 8
 
