@@ -640,10 +640,11 @@ INLINE void lanes_product(const int L, int k, const double *mat, int transposed,
 }
 
 /* One family at `count` <= L points (lanes past count repeat the last point; their results are
-   not used): the lowest eigenpair by iterate_lanes, then the pencil's vectors, the tail and,
-   unless control->loose, the pencil's two-sided Rayleigh quotient: in double, or where coef_lo
-   (the coefficients' low parts) is given in double-double (quotient_dd). coef, coef_lo
-   (terms, L); ceiling (L,) or NULL; lam, tail, status (L,) out. */
+   not used): the lowest eigenpair by iterate_lanes, then, unless no lane converged (e.g. every
+   antisymmetric lane shown above its ceiling: the tail is inf there), the pencil's vectors, the
+   tail and, unless control->loose, the pencil's two-sided Rayleigh quotient: in double, or
+   where coef_lo (the coefficients' low parts) is given in double-double (quotient_dd). coef,
+   coef_lo (terms, L); ceiling (L,) or NULL; lam, tail, status (L,) out. */
 INLINE void family_lanes(const int L, int count, const Family *f, int terms,
                          const double *coef, const double *coef_lo, const double *ceiling,
                          const ModalControl *ctl, double *work, double *lam, double *tail,
@@ -681,6 +682,12 @@ INLINE void family_lanes(const int L, int count, const Family *f, int terms,
   iterate_lanes(L, count, ke, ks, re, al, bl, ds, e1 ? f->g12 : f->g21, e1 ? f->g21 : f->g12,
                 f->start + off_e, f->start + off_s, ceiling, ctl, rest, AT(z, off_e),
                 AT(z, off_s), AT(wl, off_e), AT(wl, off_s), lam, status);
+  int any_converged = 0;  /* the vectors serve converged lanes only (the others' tail: inf) */
+  for (int w = 0; w < count; w++) {
+    tail[w] = INFINITY;
+    any_converged |= status[w] == CONVERGED;
+  }
+  if (!any_converged) return;
   /* x = (U1 z1, U2 z2), y = (left1^T w1, left2^T w2) */
   lanes_product(L, k1, f->u1, 0, z, x);
   lanes_product(L, k2, f->u2, 0, AT(z, k1), AT(x, k1));
@@ -697,7 +704,6 @@ INLINE void family_lanes(const int L, int count, const Family *f, int terms,
   }
   for (int w = 0; w < count; w++) {
     const double scale = nan_max(last[w], other[w]);
-    tail[w] = INFINITY;
     if (status[w] != CONVERGED) continue;
     tail[w] = scale > 0.0 ? last[w] / scale : INFINITY;
     if (!isfinite(last[w]) || !isfinite(other[w])) status[w] = NOT_CONVERGED;
