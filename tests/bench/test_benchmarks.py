@@ -689,8 +689,8 @@ def test_tol_trade(benchmark, fig1, reference, bench_registry):
     # issue 37 item 3: the degree falls with tol as far as the error model certifies
     # (resolution.error_estimate's quadratic term, tuning.truncation_share), and the batch at
     # tol 1e-4 costs at most TOL_TRADE_MAX of tol 1e-12 (n = 12-16 at tol 1e-4 against 20-28:
-    # the part of a call that does not depend on the degree, ~0.33 ms of numpy and Python
-    # around the kernel and its per-point setup, bounds the ratio; measured 0.42 on 2026-12-07)
+    # the part of a call that does not depend on the degree, the numpy and Python around the
+    # kernel, bounds the ratio; ``python tests/bench/tol_trade_budget.py`` splits it)
     benchmark.extra_info.update(target_1e4=TOL_TRADE_MAX, meets_target=t4 / t12 <= TOL_TRADE_MAX,
                                 n_1e4=sorted(set(res.n.tolist())))
     assert t4 / t12 <= TOL_TRADE_MAX, (t4 / t12, t2 / t12)
