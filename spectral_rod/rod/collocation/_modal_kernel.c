@@ -70,8 +70,9 @@ static void release(double *p) { free(p); }
 
 /* S[r][c] = delta_rc d_s[r] - a b sum_j g_se[r][j] r_e[j] g_es[j][c], then S = L U in place
    (unit L below the diagonal, 1/U_cc on it); a copy of S in s0 for the check. */
-INLINE void factorise(const int L, int ke, int ks, const double *re, const double *ab, const double *ds,
-                      const double *g_es, const double *g_se, double *s, double *s0) {
+INLINE void factorise(const int L, int ke, int ks, const double *re, const double *ab,
+                      const double *ds, const double *g_es, const double *g_se, double *s,
+                      double *s0) {
   for (int r = 0; r < ks; r++) {
     for (int c = 0; c < ks; c++) {
       double *src = AT(s, r * ks + c);
@@ -151,8 +152,8 @@ INLINE double nan_max(double a, double b) { return (b > a || b != b) ? b : a; }
 
 /* Whether the factors pass the probe test of stacked_inverse.py, per lane:
    |S0 x - v| <= tol max|diag S0| |x| (max norms), x = S^{-1} v; nan or inf fails. */
-INLINE void probe_check(const int L, int ks, const double *s, const double *s0, double tol, double *t,
-                        int *ok) {
+INLINE void probe_check(const int L, int ks, const double *s, const double *s0, double tol,
+                        double *t, int *ok) {
   double res[LANES], xmax[LANES], dmax[LANES];
   for (int c = 0; c < ks; c++) {
     const double v = (1.0 + (ks > 1 ? (double)c / (ks - 1) : 0.0)) * (c % 2 ? -1.0 : 1.0);
@@ -183,8 +184,8 @@ INLINE void probe_check(const int L, int ks, const double *s, const double *s0, 
 /* x = (K - SHIFT)^{-1} p (transposed: (K - SHIFT)^{-T}), in the modal blocks e and s:
    u = p_e r_e; x_s = S^{-1} (p_s - b G_se u); x_e = u - a r_e G_es x_s (a and b, G_es and
    G_se exchanged, S^{-T}, for the transpose) */
-INLINE void shifted_solve(const int L, int ke, int ks, const double *s, const double *re, const double *a,
-                          const double *b, const double *g_es, const double *g_se,
+INLINE void shifted_solve(const int L, int ke, int ks, const double *s, const double *re,
+                          const double *a, const double *b, const double *g_es, const double *g_se,
                           int transposed, const double *pe, const double *ps, double *xe,
                           double *xs) {
   for (int j = 0; j < ke; j++) {
