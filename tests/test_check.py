@@ -222,18 +222,20 @@ def test_every_written_data_file_and_column_is_declared():
 def test_every_reading_of_the_ring_load_is_checked_alike():
     # ring_table.csv has one column per reading of the load for each quantity: the four readings
     # are rows of one kind, so each quantity's rule must be the same for all of them (with the
-    # reading's own columns named in it). A load left to the catch-all "exact" fails the check
-    # on a machine whose eigensolver rounds differently.
+    # reading's own columns named in it), and a critical load is never compared "exact" (it
+    # moves in its last bits with the machine's eigensolver).
     from reproduce.ring import CHECK
     from spectral_rod import RING_LOADS
 
+    if not (COMMITTED / "ring_table.csv").exists():
+        pytest.skip("no committed paper_figures/ in this checkout")
     spec = CHECK["ring_table.csv"]
-    columns = pd.read_csv(COMMITTED / "ring_table.csv", nrows=1).columns if (
-        COMMITTED / "ring_table.csv").exists() else []
-    quantities = {c.rsplit(f"_{load}", 1)[0] for c in columns for load in RING_LOADS
-                  if c.endswith(f"_{load}")} or {"q", "rel_change"}
+    columns = pd.read_csv(COMMITTED / "ring_table.csv", nrows=1).columns
+    quantities = {c.removesuffix(f"_{load}") for c in columns for load in RING_LOADS
+                  if c.endswith(f"_{load}")}
+    assert "q" in quantities
     for quantity in quantities:
         rules = {load: repr(rule_for(spec, f"{quantity}_{load}")[0]).replace(load, "LOAD")
                  for load in RING_LOADS}
         assert len(set(rules.values())) == 1, (quantity, rules)
-    assert rule_for(spec, "q_centre")[0] != "exact"
+    assert all(rule_for(spec, f"q_{load}")[0] != "exact" for load in RING_LOADS)
